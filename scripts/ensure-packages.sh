@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Install the Debian packages Wobble needs, but only those that are missing: a machine that has
+# them all is left untouched and nothing is downloaded. Sourced by run.sh and test.sh.
+set -euo pipefail
+
+wobble_packages=(
+  cmake ninja-build g++ pkg-config      # toolchain
+  libeigen3-dev                         # simulation core
+  libcli11-dev nlohmann-json3-dev       # command line
+  libgtest-dev                          # tests
+)
+
+ensure_packages() {
+  local missing=()
+  for package in "${wobble_packages[@]}"; do
+    if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed'; then
+      missing+=("$package")
+    fi
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+
+  echo "wobble: installing missing Debian packages: ${missing[*]}" >&2
+  local sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null 2>&1; then
+      echo "wobble: missing packages (${missing[*]}) and no sudo; run as root or install them" >&2
+      exit 1
+    fi
+    sudo=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -q
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null
+}
+
+# Configure and build into build/ (Release). Extra arguments go to cmake's configure step.
+build_wobble() {
+  local root
+  root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+  cmake -S "$root" -B "$root/build" -G Ninja "$@" >/dev/null
+  cmake --build "$root/build" --parallel "$(nproc)"
+}

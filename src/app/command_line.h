@@ -1,0 +1,34 @@
+#ifndef WOBBLE_APP_COMMAND_LINE_H
+#define WOBBLE_APP_COMMAND_LINE_H
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+namespace wobble {
+
+// What the user asked for on the command line, already checked for range and sanity.
+struct CommandLine {
+  std::string scene = "cloth";
+  bool headless = false;
+  std::optional<long> frames;  // steps to run; headless runs default to default_headless_frames
+  std::string export_obj;      // empty: no export
+  std::optional<double> k;
+  std::optional<double> dt;
+  std::optional<int> iterations;
+  bool stats = false;
+
+  static constexpr long default_headless_frames = 120;
+  static constexpr long max_frames = 10'000'000;
+  static constexpr double max_k = 1e8;  // well below the pin weight w = 1e10, so pins still hold
+  static constexpr double max_dt = 1.0;
+};
+
+// Parse argv. Returns nothing when the request was fully answered here (--help, --version,
+// --list-scenes), after writing the answer to `out`. Throws InputError with a one-line message
+// for an unknown option, a malformed value, or a value out of range.
+std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,29 @@
+// wobble: the command-line entry point. Every error is caught here, once, and becomes one line
+// on stderr and an exit code: 2 for bad input or usage, 1 for a failure at run time.
+#include <exception>
+#include <iostream>
+
+#include "command_line.h"
+#include "io/atomic_file.h"
+#include "run_headless.h"
+#include "sim/input_error.h"
+
+int main(int argc, char** argv) {
+  try {
+    const std::optional<wobble::CommandLine> command =
+        wobble::parse_command_line(argc, argv, std::cout);
+    if (!command) return 0;
+    if (!command->headless) {
+      std::cerr << "wobble: this build has no interactive viewer yet; add --headless to simulate "
+                   "without a window\n";
+      return 2;
+    }
+    return wobble::run_headless(*command, std::cout);
+  } catch (const wobble::InputError& error) {
+    std::cerr << "wobble: " << error.what() << "\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "wobble: error: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,84 @@
+#include "run_headless.h"
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/atomic_file.h"
+#include "io/write_obj.h"
+#include "sim/builtin_scenes.h"
+#include "sim/simulation.h"
+
+namespace wobble {
+
+namespace {
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const std::size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + middle, values.end());
+  if (values.size() % 2 == 1) return values[middle];
+  const double upper = values[middle];
+  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
+}
+
+}  // namespace
+
+int run_headless(const CommandLine& command, std::ostream& out) {
+  if (!command.export_obj.empty()) check_output_path(command.export_obj);
+
+  Scene scene = make_builtin_scene(command.scene);
+  SimulationParams params = scene.params;
+  if (command.k) params.k = *command.k;
+  if (command.dt) params.dt = *command.dt;
+  if (command.iterations) params.iterations = *command.iterations;
+  Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
+
+  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
+  std::vector<double> step_ms, local_ms, global_ms;
+  if (command.stats) {
+    step_ms.reserve(frames);
+    local_ms.reserve(frames);
+    global_ms.reserve(frames);
+  }
+  for (long frame = 0; frame < frames; ++frame) {
+    simulation.step();
+    if (command.stats) {
+      const StepTiming& timing = simulation.last_step_timing();
+      step_ms.push_back(timing.total_ms);
+      local_ms.push_back(timing.local_ms);
+      global_ms.push_back(timing.global_ms);
+    }
+  }
+  if (!simulation.positions().allFinite()) {
+    throw std::runtime_error("the simulation produced non-finite positions; try a smaller --dt");
+  }
+
+  if (!command.export_obj.empty()) {
+    write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
+  }
+  if (command.stats) {
+    const nlohmann::json stats = {
+        {"scene", scene.name},
+        {"vertices", scene.network.V.rows()},
+        {"springs", scene.network.E.rows()},
+        {"pinned", simulation.pin_count()},
+        {"iterations", params.iterations},
+        {"frames", frames},
+        {"k", params.k},
+        {"dt", params.dt},
+        {"precompute_ms", simulation.precompute_ms()},
+        {"step_ms_median", median(step_ms)},
+        {"step_ms_min", *std::min_element(step_ms.begin(), step_ms.end())},
+        {"step_ms_max", *std::max_element(step_ms.begin(), step_ms.end())},
+        {"local_ms_median", median(local_ms)},
+        {"global_ms_median", median(global_ms)},
+    };
+    out << stats.dump() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace wobble

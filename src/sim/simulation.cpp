@@ -1,0 +1,319 @@
+#include "simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "input_error.h"
+
+namespace wobble {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void validate_params(const SimulationParams& params) {
+  if (!(params.k > 0.0) || !std::isfinite(params.k)) {
+    throw InputError("k must be a positive finite stiffness, got " + std::to_string(params.k));
+  }
+  if (!(params.dt > 0.0) || !std::isfinite(params.dt)) {
+    throw InputError("dt must be a positive finite time step, got " + std::to_string(params.dt));
+  }
+  if (params.iterations < 1 || params.iterations > Simulation::max_iterations) {
+    throw InputError("iterations must be between 1 and " +
+                     std::to_string(Simulation::max_iterations) + ", got " +
+                     std::to_string(params.iterations));
+  }
+  if (!params.gravity.allFinite()) throw InputError("gravity must be finite");
+}
+
+}  // namespace
+
+Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
+                       const SimulationParams& params, Eigen::MatrixXd initial_velocity)
+    : network_(std::move(network)),
+      params_(params),
+      initial_velocity_(std::move(initial_velocity)) {
+  const auto start = Clock::now();
+  validate_spring_network(network_);
+  validate_params(params_);
+  const Eigen::Index n = network_.V.rows();
+  if (initial_velocity_.size() != 0 &&
+      (initial_velocity_.rows() != n || initial_velocity_.cols() != 3 ||
+       !initial_velocity_.allFinite())) {
+    throw InputError("initial velocity must be a finite " + std::to_string(n) + " by 3 matrix");
+  }
+  for (int i : pins) {
+    if (i < 0 || i >= n) {
+      throw InputError("pinned vertex " + std::to_string(i) + " is out of range 0 to " +
+                       std::to_string(n - 1));
+    }
+  }
+  initial_pins_ = pins;
+  std::sort(initial_pins_.begin(), initial_pins_.end());
+  initial_pins_.erase(std::unique(initial_pins_.begin(), initial_pins_.end()), initial_pins_.end());
+
+  const Eigen::MatrixXi& E = network_.E;
+  r_.resize(E.rows());
+  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+    r_(e) = (network_.V.row(E(e, 0)) - network_.V.row(E(e, 1))).norm();
+  }
+
+  // AᵀA has +1 at (i,i) and (j,j) and -1 at (i,j) and (j,i) for every spring. An explicit zero
+  // on every diagonal keeps vertices without springs in the pattern, so that masses and pins
+  // only ever change values: one symbolic analysis serves every later factorization.
+  std::vector<Eigen::Triplet<double>> ijv;
+  ijv.reserve(4 * E.rows() + n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    ijv.emplace_back(i, i, 0.0);
+  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+    const int i = E(e, 0), j = E(e, 1);
+    ijv.emplace_back(i, i, 1.0);
+    ijv.emplace_back(j, j, 1.0);
+    ijv.emplace_back(i, j, -1.0);
+    ijv.emplace_back(j, i, -1.0);
+  }
+  laplacian_.resize(n, n);
+  laplacian_.setFromTriplets(ijv.begin(), ijv.end());
+  laplacian_.makeCompressed();
+  Q_ = laplacian_;
+  diagonal_slot_.resize(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int* rows = Q_.innerIndexPtr();
+    for (Eigen::Index s = Q_.outerIndexPtr()[i]; s < Q_.outerIndexPtr()[i + 1]; ++s) {
+      if (rows[s] == i) diagonal_slot_[i] = s;
+    }
+  }
+
+  previous_.resize(n, 3);
+  current_.resize(n, 3);
+  next_.resize(n, 3);
+  y_.resize(n, 3);
+  rhs_.resize(n, 3);
+  targets_ = network_.V;
+  pinned_.assign(n, 0);
+  for (int i : initial_pins_)
+    pinned_[i] = 1;
+  pin_count_ = static_cast<int>(initial_pins_.size());
+  update_external_forces();
+
+  solver_.analyzePattern(Q_);
+  ++symbolic_analyses_;
+  refactorize();
+  reset();
+  precompute_ms_ = milliseconds_since(start);
+}
+
+void Simulation::reset() {
+  current_ = network_.V;
+  previous_ = network_.V;
+  if (initial_velocity_.size() != 0) previous_ -= params_.dt * initial_velocity_;
+  targets_ = network_.V;
+  steps_taken_ = 0;
+
+  std::vector<char> initial(pinned_.size(), 0);
+  for (int i : initial_pins_)
+    initial[i] = 1;
+  if (initial != pinned_) {
+    pinned_ = std::move(initial);
+    pin_count_ = static_cast<int>(initial_pins_.size());
+    refactorize();
+  }
+}
+
+void Simulation::step() {
+  const auto step_start = Clock::now();
+  const Eigen::MatrixXi& E = network_.E;
+  const double k = params_.k;
+  const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
+
+  // y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
+  y_.noalias() = network_.m.asDiagonal() * (2.0 * current_ - previous_);
+  y_ *= inverse_dt2;
+  y_ += fext_;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
+    if (pinned_[i]) y_.row(i) += pin_weight * targets_.row(i);
+  }
+
+  next_ = current_;
+  double local_ms = 0.0, global_ms = 0.0;
+  for (int iteration = 0; iteration < params_.iterations; ++iteration) {
+    const auto local_start = Clock::now();
+    // Local step fused with the product k Aᵀd: spring e = [i j] adds k d_e to row i and
+    // subtracts it from row j, so neither A nor d is ever formed.
+    rhs_ = y_;
+    for (Eigen::Index e = 0; e < E.rows(); ++e) {
+      const int i = E(e, 0), j = E(e, 1);
+      Eigen::RowVector3d d = next_.row(i) - next_.row(j);
+      const double length = d.norm();
+      if (length > 0.0) {
+        d = (d / length) * r_(e);
+      } else {
+        // Coincident vertices have no direction: fall back on the rest direction, which pushes
+        // them apart along the line they started on (r_e times the unit rest vector).
+        d = network_.V.row(i) - network_.V.row(j);
+      }
+      rhs_.row(i) += k * d;
+      rhs_.row(j) -= k * d;
+    }
+    const auto global_start = Clock::now();
+    local_ms += std::chrono::duration<double, std::milli>(global_start - local_start).count();
+
+    next_ = solver_.solve(rhs_);
+    global_ms += milliseconds_since(global_start);
+    if (observer_) observer_(iteration, next_);
+  }
+
+  previous_.swap(current_);
+  current_.swap(next_);
+  ++steps_taken_;
+  timing_.local_ms = local_ms;
+  timing_.global_ms = global_ms;
+  timing_.total_ms = milliseconds_since(step_start);
+}
+
+void Simulation::set_k(double k) {
+  SimulationParams changed = params_;
+  changed.k = k;
+  validate_params(changed);
+  params_.k = k;
+  refactorize();
+}
+
+void Simulation::set_dt(double dt) {
+  SimulationParams changed = params_;
+  changed.dt = dt;
+  validate_params(changed);
+  // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
+  previous_ = current_ - (current_ - previous_) * (dt / params_.dt);
+  params_.dt = dt;
+  refactorize();
+}
+
+void Simulation::set_iterations(int iterations) {
+  SimulationParams changed = params_;
+  changed.iterations = iterations;
+  validate_params(changed);
+  params_.iterations = iterations;
+}
+
+void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
+  SimulationParams changed = params_;
+  changed.gravity = gravity;
+  validate_params(changed);
+  params_.gravity = gravity;
+  params_.gravity_model = model;
+  update_external_forces();
+}
+
+void Simulation::pin(int i) {
+  check_vertex(i, "pin");
+  if (pinned_[i]) return;
+  pinned_[i] = 1;
+  ++pin_count_;
+  targets_.row(i) = current_.row(i);
+  refactorize();
+}
+
+void Simulation::unpin(int i) {
+  check_vertex(i, "unpin");
+  if (!pinned_[i]) return;
+  pinned_[i] = 0;
+  --pin_count_;
+  refactorize();
+}
+
+void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
+  check_vertex(i, "set_pin_target");
+  if (!pinned_[i]) {
+    throw std::invalid_argument("set_pin_target: vertex " + std::to_string(i) + " is not pinned");
+  }
+  if (!target.allFinite()) throw std::invalid_argument("set_pin_target: target is not finite");
+  targets_.row(i) = target.transpose();
+}
+
+bool Simulation::is_pinned(int i) const {
+  check_vertex(i, "is_pinned");
+  return pinned_[i] != 0;
+}
+
+std::vector<int> Simulation::pinned_vertices() const {
+  std::vector<int> result;
+  result.reserve(pin_count_);
+  for (std::size_t i = 0; i < pinned_.size(); ++i) {
+    if (pinned_[i]) result.push_back(static_cast<int>(i));
+  }
+  return result;
+}
+
+Eigen::Vector3d Simulation::pin_target(int i) const {
+  check_vertex(i, "pin_target");
+  return targets_.row(i).transpose();
+}
+
+void Simulation::set_iteration_observer(std::function<void(int, const Eigen::MatrixXd&)> observer) {
+  observer_ = std::move(observer);
+}
+
+double Simulation::step_energy(const Eigen::MatrixXd& p) const {
+  const Eigen::MatrixXi& E = network_.E;
+  double springs = 0.0;
+  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+    const double stretch = (p.row(E(e, 0)) - p.row(E(e, 1))).norm() - r_(e);
+    springs += stretch * stretch;
+  }
+  const Eigen::MatrixXd acceleration = p - 2.0 * current_ + previous_;
+  const double inertia = (network_.m.array() * acceleration.rowwise().squaredNorm().array()).sum() /
+                         (2.0 * params_.dt * params_.dt);
+  double pins = 0.0;
+  for (std::size_t i = 0; i < pinned_.size(); ++i) {
+    if (pinned_[i]) pins += (p.row(i) - targets_.row(i)).squaredNorm();
+  }
+  return 0.5 * params_.k * springs + inertia - (p.array() * fext_.array()).sum() +
+         0.5 * pin_weight * pins;
+}
+
+Eigen::MatrixXd Simulation::velocities() const {
+  return (current_ - previous_) / params_.dt;
+}
+
+void Simulation::check_vertex(int i, const char* what) const {
+  if (i < 0 || i >= static_cast<int>(pinned_.size())) {
+    throw std::out_of_range(std::string(what) + ": vertex " + std::to_string(i) +
+                            " is out of range 0 to " + std::to_string(pinned_.size() - 1));
+  }
+}
+
+void Simulation::update_external_forces() {
+  const Eigen::RowVector3d g = params_.gravity.transpose();
+  if (params_.gravity_model == GravityModel::acceleration) {
+    fext_ = network_.m * g;
+  } else {
+    fext_ = g.replicate(network_.V.rows(), 1);
+  }
+}
+
+void Simulation::refactorize() {
+  // Q = k AᵀA + M/Δt² + w CᵀC, written into the fixed pattern.
+  const double* laplacian = laplacian_.valuePtr();
+  double* q = Q_.valuePtr();
+  for (Eigen::Index s = 0; s < Q_.nonZeros(); ++s)
+    q[s] = params_.k * laplacian[s];
+  const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
+  for (std::size_t i = 0; i < diagonal_slot_.size(); ++i) {
+    q[diagonal_slot_[i]] += network_.m(i) * inverse_dt2 + (pinned_[i] ? pin_weight : 0.0);
+  }
+  solver_.factorize(Q_);
+  ++numeric_factorizations_;
+  if (solver_.info() != Eigen::Success) {
+    throw std::runtime_error("the Cholesky factorization of Q failed");
+  }
+}
+
+}  // namespace wobble

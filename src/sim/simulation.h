@@ -1,0 +1,149 @@
+#ifndef WOBBLE_SIM_SIMULATION_H
+#define WOBBLE_SIM_SIMULATION_H
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+#include <functional>
+#include <vector>
+
+#include "spring_network.h"
+
+namespace wobble {
+
+// How gravity becomes the external force f_ext on vertex i.
+enum class GravityModel {
+  acceleration,      // f_i = m_i g: physical weight (Wobble's built-in scenes)
+  force_per_vertex,  // f_i = g whatever the mass (what the course's reference program applies)
+};
+
+struct SimulationParams {
+  double k = 1000.0;       // spring stiffness (N/m), > 0
+  double dt = 1.0 / 60.0;  // time step (s), > 0
+  int iterations = 50;     // local-global iterations per step, 1 to Simulation::max_iterations
+  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s² (or N, see gravity_model)
+  GravityModel gravity_model = GravityModel::acceleration;
+};
+
+// Wall-clock time of the last step, split between the local step (springs) and the global step
+// (the prefactored solve).
+struct StepTiming {
+  double local_ms = 0.0;
+  double global_ms = 0.0;
+  double total_ms = 0.0;
+};
+
+// A mass-spring network advanced by the fast local-global method of Liu et al. 2013, with pins
+// whose targets can move. This is what the viewer and the command line drive, one step() a frame.
+//
+// Each step minimizes, over p (#V by 3),
+//   ½k Σ(‖pᵢ−pⱼ‖−rᵢⱼ)² + (1/2Δt²)‖p − 2pᵗ + pᵗ⁻ᐞᵗ‖²_M − pᵀf_ext + (w/2)‖Cp − C p_target‖²
+// with `iterations` local-global iterations starting from pᵗ:
+//   local:  d_e = r_e (p_i − p_j)/‖p_i − p_j‖
+//   global: Q p = k Aᵀd + y,  Q = k AᵀA + M/Δt² + w CᵀC,
+//           y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10.
+// With every pin target at its rest position this is exactly fast_mass_springs_step_sparse.
+//
+// Cost of each change:
+//   set_pin_target           right-hand side only: no factorization
+//   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
+//   unpin, reset               (Q's sparsity pattern never changes: its diagonal is always stored)
+//   set_iterations, gravity  nothing precomputed
+class Simulation {
+ public:
+  static constexpr double pin_weight = 1e10;  // w
+  static constexpr int max_iterations = 10000;
+
+  // Throws InputError when the network, a pin index or a parameter is invalid.
+  //   pins              indices of initially pinned vertices; targets start at rest positions
+  //   initial_velocity  #V by 3 (m/s), or empty for rest
+  Simulation(SpringNetwork network, const std::vector<int>& pins, const SimulationParams& params,
+             Eigen::MatrixXd initial_velocity = Eigen::MatrixXd());
+
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  // Advance one time step of params().dt seconds.
+  void step();
+  // Back to the initial state: rest positions, initial velocity, initial pins at rest targets.
+  // Parameters (k, dt, iterations, gravity) keep their current values.
+  void reset();
+
+  void set_k(double k);
+  // Keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.
+  void set_dt(double dt);
+  void set_iterations(int iterations);
+  void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
+
+  // Pin vertex i where it is now (target = current position). No-op if already pinned.
+  void pin(int i);
+  // Release vertex i. No-op if it is not pinned.
+  void unpin(int i);
+  // Move the target of pinned vertex i (m). Throws std::invalid_argument if i is not pinned.
+  void set_pin_target(int i, const Eigen::Vector3d& target);
+
+  bool is_pinned(int i) const;
+  // Pinned vertex indices in increasing order.
+  std::vector<int> pinned_vertices() const;
+  int pin_count() const { return pin_count_; }
+  Eigen::Vector3d pin_target(int i) const;
+
+  // Called after every global solve of every step with the iteration number (0-based) and the
+  // current iterate p (#V by 3). Meant for teaching and tests: it slows stepping down.
+  void set_iteration_observer(std::function<void(int, const Eigen::MatrixXd&)> observer);
+  // The energy that the step now about to be taken minimizes, evaluated at p (#V by 3), in J.
+  double step_energy(const Eigen::MatrixXd& p) const;
+
+  const SpringNetwork& rest() const { return network_; }
+  const Eigen::VectorXd& rest_lengths() const { return r_; }
+  const SimulationParams& params() const { return params_; }
+  // #V by 3 positions at the current and at the previous time step (m).
+  const Eigen::MatrixXd& positions() const { return current_; }
+  const Eigen::MatrixXd& previous_positions() const { return previous_; }
+  // #V by 3 velocities (current − previous)/Δt (m/s).
+  Eigen::MatrixXd velocities() const;
+  // #V by 3 external forces f_ext (N).
+  const Eigen::MatrixXd& external_forces() const { return fext_; }
+  long steps_taken() const { return steps_taken_; }
+
+  const StepTiming& last_step_timing() const { return timing_; }
+  // Time spent in the constructor: rest lengths, Q's pattern, analysis and first factorization.
+  double precompute_ms() const { return precompute_ms_; }
+  // How often Q was analysed symbolically (once, in the constructor) and factorized numerically.
+  int symbolic_analyses() const { return symbolic_analyses_; }
+  int numeric_factorizations() const { return numeric_factorizations_; }
+
+ private:
+  void check_vertex(int i, const char* what) const;
+  void update_external_forces();
+  // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
+  void refactorize();
+
+  SpringNetwork network_;
+  SimulationParams params_;
+  Eigen::MatrixXd initial_velocity_;
+  std::vector<int> initial_pins_;
+  Eigen::VectorXd r_;
+
+  std::vector<char> pinned_;
+  int pin_count_ = 0;
+  Eigen::MatrixXd targets_;  // #V by 3; meaningful at pinned rows only
+
+  Eigen::MatrixXd previous_, current_, next_;  // pᵗ⁻ᐞᵗ, pᵗ and the iterate, #V by 3
+  Eigen::MatrixXd fext_, y_, rhs_;             // #V by 3 buffers kept to avoid allocation
+
+  Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored
+  Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_
+  std::vector<Eigen::Index> diagonal_slot_;  // index of Q(i,i) in Q_.valuePtr()
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver_;
+
+  std::function<void(int, const Eigen::MatrixXd&)> observer_;
+  StepTiming timing_;
+  double precompute_ms_ = 0.0;
+  int symbolic_analyses_ = 0;
+  int numeric_factorizations_ = 0;
+  long steps_taken_ = 0;
+};
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,24 @@
+#ifndef WOBBLE_SIM_SPRING_NETWORK_H
+#define WOBBLE_SIM_SPRING_NETWORK_H
+
+#include <Eigen/Core>
+
+namespace wobble {
+
+// The rest shape of a deformable object: point masses joined by springs, plus the triangles
+// that are drawn (springs and render faces are independent: a cloth has bend springs that are
+// no triangle's edge, a jelly draws only its boundary).
+struct SpringNetwork {
+  Eigen::MatrixXd V;  // #V by 3 rest positions (m)
+  Eigen::MatrixXi E;  // #E by 2 springs, indices into rows of V
+  Eigen::MatrixXi F;  // #F by 3 render triangles, counter-clockwise seen from outside; may be empty
+  Eigen::VectorXd m;  // #V masses (kg)
+};
+
+// Throws InputError unless the network is well formed: V is #V by 3 and finite, every index in
+// E and F is in range, no spring joins a vertex to itself, and every mass is positive and finite.
+void validate_spring_network(const SpringNetwork& network);
+
+}  // namespace wobble
+
+#endif

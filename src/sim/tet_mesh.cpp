@@ -1,0 +1,83 @@
+#include "tet_mesh.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace wobble {
+
+namespace {
+
+double signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
+  const Eigen::RowVector3d a = V.row(T(t, 0));
+  const Eigen::RowVector3d ab = V.row(T(t, 1)) - a;
+  const Eigen::RowVector3d ac = V.row(T(t, 2)) - a;
+  const Eigen::RowVector3d ad = V.row(T(t, 3)) - a;
+  return ab.dot(ac.cross(ad)) / 6.0;
+}
+
+}  // namespace
+
+Eigen::MatrixXi tet_mesh_edges(const Eigen::MatrixXi& T) {
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(6 * T.rows());
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) {
+        edges.emplace_back(std::min(T(t, a), T(t, b)), std::max(T(t, a), T(t, b)));
+      }
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Eigen::MatrixXi E(edges.size(), 2);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    E(e, 0) = edges[e].first;
+    E(e, 1) = edges[e].second;
+  }
+  return E;
+}
+
+Eigen::MatrixXi tet_mesh_boundary_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
+  // For a positively oriented tetrahedron (a, b, c, d) these four faces have outward normals.
+  static constexpr int kFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  // Key: the sorted corners; value: the oriented face and how many tetrahedra share it.
+  std::map<std::array<int, 3>, std::pair<std::array<int, 3>, int>> faces;
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    std::array<int, 4> corners = {T(t, 0), T(t, 1), T(t, 2), T(t, 3)};
+    if (signed_volume(V, T, t) < 0.0) std::swap(corners[2], corners[3]);
+    for (const auto& face : kFaces) {
+      const std::array<int, 3> oriented = {corners[face[0]], corners[face[1]], corners[face[2]]};
+      std::array<int, 3> key = oriented;
+      std::sort(key.begin(), key.end());
+      auto [it, inserted] = faces.try_emplace(key, oriented, 0);
+      ++it->second.second;
+    }
+  }
+  std::vector<std::array<int, 3>> boundary;
+  for (const auto& [key, value] : faces) {
+    if (value.second == 1) boundary.push_back(value.first);
+  }
+  Eigen::MatrixXi F(boundary.size(), 3);
+  for (std::size_t f = 0; f < boundary.size(); ++f) {
+    F.row(f) << boundary[f][0], boundary[f][1], boundary[f][2];
+  }
+  return F;
+}
+
+Eigen::VectorXd tet_mesh_lumped_masses(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T,
+                                       double density) {
+  Eigen::VectorXd m = Eigen::VectorXd::Zero(V.rows());
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    const double quarter = density * std::abs(signed_volume(V, T, t)) / 4.0;
+    for (int c = 0; c < 4; ++c)
+      m(T(t, c)) += quarter;
+  }
+  return m;
+}
+
+}  // namespace wobble

@@ -1,0 +1,39 @@
+#ifndef WOBBLE_SIM_TET_MESH_H
+#define WOBBLE_SIM_TET_MESH_H
+
+#include <Eigen/Core>
+
+namespace wobble {
+
+// Every distinct edge of a tetrahedral mesh, each once, with the smaller index first, sorted.
+//
+// Inputs:
+//   T  #T by 4 list of tetrahedra, indices into rows of a vertex list
+// Outputs:
+//   #E by 2 list of edges
+Eigen::MatrixXi tet_mesh_edges(const Eigen::MatrixXi& T);
+
+// The boundary of a tetrahedral mesh: the triangles that belong to exactly one tetrahedron,
+// oriented counter-clockwise seen from outside (normal pointing away from the tetrahedron).
+//
+// Inputs:
+//   V  #V by 3 list of vertex positions (used to orient each tetrahedron)
+//   T  #T by 4 list of tetrahedra
+// Outputs:
+//   #F by 3 list of boundary triangles
+Eigen::MatrixXi tet_mesh_boundary_faces(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T);
+
+// Lumped masses: each tetrahedron gives a quarter of its mass (density × volume) to each corner.
+//
+// Inputs:
+//   V        #V by 3 list of vertex positions (m)
+//   T        #T by 4 list of tetrahedra
+//   density  kg/m³
+// Outputs:
+//   #V list of masses (kg)
+Eigen::VectorXd tet_mesh_lumped_masses(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T,
+                                       double density);
+
+}  // namespace wobble
+
+#endif

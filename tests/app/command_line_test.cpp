@@ -1,0 +1,161 @@
+// The wobble executable as users and scripts run it: exit codes, messages, files, statistics.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "../io/temporary_folder.h"
+
+namespace {
+
+using wobble::testing::TemporaryFolder;
+
+struct Result {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+std::string read(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Run wobble with `arguments` (already shell-quoted where needed), capturing both streams.
+Result run_wobble(const std::string& arguments) {
+  TemporaryFolder capture;
+  const std::string command = std::string("'") + WOBBLE_EXECUTABLE + "' " + arguments + " >'" +
+                              capture.file("out") + "' 2>'" + capture.file("err") + "' </dev/null";
+  const int status = std::system(command.c_str());
+  Result result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read(capture.file("out"));
+  result.err = read(capture.file("err"));
+  return result;
+}
+
+std::string last_line(const std::string& text) {
+  std::string trimmed = text;
+  while (!trimmed.empty() && trimmed.back() == '\n')
+    trimmed.pop_back();
+  const std::size_t newline = trimmed.rfind('\n');
+  return newline == std::string::npos ? trimmed : trimmed.substr(newline + 1);
+}
+
+int count_lines(const std::string& text) {
+  int lines = 0;
+  for (char c : text)
+    lines += c == '\n';
+  return lines;
+}
+
+TEST(CommandLine, HelpListsTheOptionsAndSucceeds) {
+  const Result result = run_wobble("--help");
+  EXPECT_EQ(result.exit_code, 0);
+  for (const char* option : {"--headless", "--frames", "--export-obj", "--k", "--dt",
+                             "--iterations", "--stats", "--version"}) {
+    EXPECT_NE(result.out.find(option), std::string::npos) << option;
+  }
+  EXPECT_EQ(result.err, "");
+}
+
+TEST(CommandLine, VersionPrintsOneLine) {
+  const Result result = run_wobble("--version");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_EQ(result.out.rfind("wobble ", 0), 0u) << result.out;
+  EXPECT_EQ(count_lines(result.out), 1);
+}
+
+TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
+  const char* cases[][2] = {
+      {"--bogus --headless", "--bogus"},
+      {"--headless --frames 0", "--frames"},
+      {"--headless --frames -3", "--frames"},
+      {"--headless --frames many", "--frames"},
+      {"--headless --k -5", "--k"},
+      {"--headless --k nan", "--k"},
+      {"--headless --k 1e12", "limit"},
+      {"--headless --dt 0", "--dt"},
+      {"--headless --iterations 20000", "10000"},
+      {"curtain --headless", "curtain"},
+  };
+  for (const auto& [arguments, expected] : cases) {
+    SCOPED_TRACE(arguments);
+    const Result result = run_wobble(arguments);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(count_lines(result.err), 1) << result.err;
+    EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+    EXPECT_EQ(result.out, "");
+  }
+}
+
+TEST(CommandLine, ExportObjWritesTheSaggingCloth) {
+  TemporaryFolder folder;
+  const std::string path = folder.file("cloth.obj");
+  const Result result = run_wobble("cloth --headless --frames 60 --export-obj '" + path + "'");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::istringstream lines(read(path));
+  std::string line;
+  int vertices = 0, faces = 0;
+  double lowest = 1e9, highest = -1e9;
+  while (std::getline(lines, line)) {
+    if (line.rfind("v ", 0) == 0) {
+      ++vertices;
+      double x, y, z;
+      std::istringstream(line.substr(2)) >> x >> y >> z;
+      lowest = std::min(lowest, y);
+      highest = std::max(highest, y);
+    } else if (line.rfind("f ", 0) == 0) {
+      ++faces;
+    }
+  }
+  EXPECT_EQ(vertices, 1600);
+  EXPECT_EQ(faces, 2 * 39 * 39);
+  // It started flat at y = 1.2 and hangs from its pins there; after 1 s it has swung far down.
+  EXPECT_NEAR(highest, 1.2, 1e-6);
+  EXPECT_LT(lowest, 0.6);
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"cloth.obj"});
+}
+
+TEST(CommandLine, ExportToAMissingFolderFailsBeforeSimulatingAndWritesNothing) {
+  TemporaryFolder folder;
+  const Result result =
+      run_wobble("cloth --headless --frames 100000 --export-obj '" + folder.file("no/x.obj") + "'");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("does not exist"), std::string::npos) << result.err;
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(CommandLine, StatsIsOneJsonObjectOnTheLastLine) {
+  const Result result = run_wobble("jelly --headless --frames 5 --iterations 7 --k 900 --stats");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json stats = nlohmann::json::parse(last_line(result.out));
+  EXPECT_EQ(stats.at("vertices"), 729);
+  EXPECT_EQ(stats.at("pinned"), 81);
+  EXPECT_EQ(stats.at("iterations"), 7);
+  EXPECT_EQ(stats.at("frames"), 5);
+  EXPECT_EQ(stats.at("k"), 900.0);
+  EXPECT_GT(stats.at("springs").get<int>(), 729);
+  for (const char* key : {"precompute_ms", "step_ms_median", "step_ms_min", "step_ms_max",
+                          "local_ms_median", "global_ms_median"}) {
+    ASSERT_TRUE(stats.contains(key)) << key;
+    EXPECT_GT(stats.at(key).get<double>(), 0.0) << key;
+  }
+  EXPECT_LE(stats.at("step_ms_min").get<double>(), stats.at("step_ms_median").get<double>());
+  EXPECT_LE(stats.at("step_ms_median").get<double>(), stats.at("step_ms_max").get<double>());
+}
+
+TEST(CommandLine, HeadlessRunsAreDeterministic) {
+  TemporaryFolder folder;
+  const std::string a = folder.file("a.obj"), b = folder.file("b.obj");
+  ASSERT_EQ(run_wobble("jelly --headless --frames 20 --export-obj '" + a + "'").exit_code, 0);
+  ASSERT_EQ(run_wobble("jelly --headless --frames 20 --export-obj '" + b + "'").exit_code, 0);
+  EXPECT_EQ(read(a), read(b));
+  EXPECT_NE(read(a).find("\nf "), std::string::npos);
+}
+
+}  // namespace

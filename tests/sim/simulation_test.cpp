@@ -1,0 +1,212 @@
+// The Simulation object's contract: same positions as the seed, and the promised cost of each
+// change (which ones re-factorize, which never re-analyse).
+#include "sim/simulation.h"
+
+#include <gtest/gtest.h>
+
+#include "sim/fast_mass_springs_precomputation_sparse.h"
+#include "sim/fast_mass_springs_step_sparse.h"
+#include "sim/input_error.h"
+#include "test_meshes.h"
+
+namespace {
+
+using wobble::InputError;
+using wobble::Simulation;
+using wobble::SimulationParams;
+using wobble::testing::all_test_meshes;
+
+SimulationParams test_params() {
+  SimulationParams params;
+  params.k = 200.0;
+  params.dt = 1.0 / 60.0;
+  params.iterations = 50;
+  return params;
+}
+
+TEST(Simulation, WithTargetsAtRestMatchesTheSeedSparseStep) {
+  for (const auto& mesh : all_test_meshes()) {
+    SCOPED_TRACE(mesh.name);
+    const auto& net = mesh.network;
+    const SimulationParams params = test_params();
+    Simulation simulation(net, mesh.pins, params);
+
+    const Eigen::VectorXi b = wobble::testing::pin_vector(mesh.pins);
+    Eigen::VectorXd r;
+    Eigen::SparseMatrix<double> M, A, C;
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
+    ASSERT_TRUE(fast_mass_springs_precomputation_sparse(net.V, net.E, params.k, net.m, b, params.dt,
+                                                        r, M, A, C, llt));
+    const Eigen::MatrixXd fext = wobble::testing::gravity_forces(net.m);
+    Eigen::MatrixXd prev = net.V, cur = net.V, next;
+    for (int step = 0; step < 60; ++step) {
+      fast_mass_springs_step_sparse(net.V, net.E, params.k, b, params.dt, fext, r, M, A, C, llt,
+                                    prev, cur, next);
+      simulation.step();
+      // Same system, same ordering, sums in a different order: rounding only.
+      ASSERT_LE((simulation.positions() - next).cwiseAbs().maxCoeff(), 1e-9) << "step " << step;
+      prev = cur;
+      cur = next;
+    }
+    EXPECT_EQ(simulation.steps_taken(), 60);
+  }
+}
+
+TEST(Simulation, ExternalForcesFollowTheGravityModel) {
+  const auto mesh = wobble::testing::grid_mesh();
+  Simulation simulation(mesh.network, mesh.pins, test_params());
+  EXPECT_LE((simulation.external_forces() - wobble::testing::gravity_forces(mesh.network.m))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-15);
+  simulation.set_gravity(Eigen::Vector3d(0, -9.8, 0), wobble::GravityModel::force_per_vertex);
+  for (Eigen::Index i = 0; i < mesh.network.V.rows(); ++i) {
+    EXPECT_EQ(simulation.external_forces().row(i), Eigen::RowVector3d(0, -9.8, 0));
+  }
+}
+
+TEST(Simulation, TargetMovesNeverFactorizeWhilePinsAndParametersDo) {
+  const auto mesh = wobble::testing::grid_mesh();
+  Simulation simulation(mesh.network, mesh.pins, test_params());
+  EXPECT_EQ(simulation.symbolic_analyses(), 1);
+  EXPECT_EQ(simulation.numeric_factorizations(), 1);
+
+  simulation.set_pin_target(mesh.pins[0], Eigen::Vector3d(0.1, 0.2, 0.3));
+  simulation.step();
+  simulation.set_iterations(10);
+  simulation.set_gravity(Eigen::Vector3d(0, -1, 0), wobble::GravityModel::acceleration);
+  simulation.step();
+  EXPECT_EQ(simulation.numeric_factorizations(), 1) << "target moves and steps must not factorize";
+
+  simulation.pin(14);
+  EXPECT_EQ(simulation.numeric_factorizations(), 2);
+  simulation.pin(14);  // already pinned: nothing to do
+  EXPECT_EQ(simulation.numeric_factorizations(), 2);
+  simulation.unpin(14);
+  EXPECT_EQ(simulation.numeric_factorizations(), 3);
+  simulation.set_k(500.0);
+  EXPECT_EQ(simulation.numeric_factorizations(), 4);
+  simulation.set_dt(1.0 / 120.0);
+  EXPECT_EQ(simulation.numeric_factorizations(), 5);
+  EXPECT_EQ(simulation.symbolic_analyses(), 1) << "the pattern never changes";
+}
+
+TEST(Simulation, RefactorizedSystemMatchesAFreshOne) {
+  // A simulation whose k, dt and pins were changed must step exactly like one built that way.
+  const auto mesh = wobble::testing::grid_mesh();
+  SimulationParams params = test_params();
+  Simulation changed(mesh.network, {0}, params);
+  changed.set_k(700.0);
+  changed.set_dt(1.0 / 90.0);
+  changed.pin(5);
+  params.k = 700.0;
+  params.dt = 1.0 / 90.0;
+  Simulation fresh(mesh.network, {0, 5}, params);
+  for (int step = 0; step < 20; ++step) {
+    changed.step();
+    fresh.step();
+  }
+  EXPECT_LE((changed.positions() - fresh.positions()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Simulation, PinHoldsAVertexWhereItIsAndUnpinReleasesIt) {
+  const auto mesh = wobble::testing::grid_mesh();
+  Simulation simulation(mesh.network, mesh.pins, test_params());
+  for (int step = 0; step < 10; ++step)
+    simulation.step();
+  const int vertex = 33;  // bottom row, falling
+  const Eigen::RowVector3d held = simulation.positions().row(vertex);
+  simulation.pin(vertex);
+  EXPECT_TRUE(simulation.is_pinned(vertex));
+  EXPECT_EQ(simulation.pin_count(), 3);
+  EXPECT_EQ(simulation.pin_target(vertex), held.transpose());
+  for (int step = 0; step < 20; ++step)
+    simulation.step();
+  EXPECT_LE((simulation.positions().row(vertex) - held).norm(), 1e-6);
+
+  simulation.unpin(vertex);
+  EXPECT_FALSE(simulation.is_pinned(vertex));
+  for (int step = 0; step < 20; ++step)
+    simulation.step();
+  EXPECT_GT((simulation.positions().row(vertex) - held).norm(), 1e-3) << "released: it moves";
+  EXPECT_EQ(simulation.pinned_vertices(), mesh.pins);
+}
+
+TEST(Simulation, ResetRestoresRestStateAndInitialPins) {
+  const auto mesh = wobble::testing::grid_mesh();
+  Simulation simulation(mesh.network, mesh.pins, test_params());
+  for (int step = 0; step < 10; ++step)
+    simulation.step();
+  simulation.pin(20);
+  simulation.unpin(mesh.pins[0]);
+  simulation.set_pin_target(mesh.pins[1], Eigen::Vector3d(1, 1, 1));
+  simulation.reset();
+  EXPECT_EQ(simulation.positions(), mesh.network.V);
+  EXPECT_EQ(simulation.previous_positions(), mesh.network.V);
+  EXPECT_EQ(simulation.pinned_vertices(), mesh.pins);
+  EXPECT_EQ(simulation.pin_target(mesh.pins[1]), mesh.network.V.row(mesh.pins[1]).transpose());
+  EXPECT_EQ(simulation.steps_taken(), 0);
+  EXPECT_EQ(simulation.symbolic_analyses(), 1);
+
+  // After a reset it steps exactly like a new simulation.
+  Simulation fresh(mesh.network, mesh.pins, test_params());
+  simulation.step();
+  fresh.step();
+  EXPECT_LE((simulation.positions() - fresh.positions()).cwiseAbs().maxCoeff(), 1e-14);
+}
+
+TEST(Simulation, InitialVelocityIsRestoredByReset) {
+  const auto mesh = wobble::testing::chain_mesh(2);
+  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(3, 3);
+  velocity.col(2).setConstant(0.5);
+  Simulation simulation(mesh.network, {}, test_params(), velocity);
+  EXPECT_LE((simulation.velocities() - velocity).cwiseAbs().maxCoeff(), 1e-12);
+  simulation.step();
+  simulation.reset();
+  EXPECT_LE((simulation.velocities() - velocity).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Simulation, RefusesBadInputWithTypedErrors) {
+  const auto mesh = wobble::testing::chain_mesh(3);
+  SimulationParams params = test_params();
+  EXPECT_THROW(Simulation(mesh.network, {7}, params), InputError);
+  EXPECT_THROW(Simulation(mesh.network, {-1}, params), InputError);
+  params.k = -1.0;
+  EXPECT_THROW(Simulation(mesh.network, {}, params), InputError);
+  params = test_params();
+  params.dt = 0.0;
+  EXPECT_THROW(Simulation(mesh.network, {}, params), InputError);
+  params = test_params();
+  params.iterations = 0;
+  EXPECT_THROW(Simulation(mesh.network, {}, params), InputError);
+  params.iterations = Simulation::max_iterations + 1;
+  EXPECT_THROW(Simulation(mesh.network, {}, params), InputError);
+  EXPECT_THROW(Simulation(mesh.network, {}, test_params(), Eigen::MatrixXd::Zero(2, 3)),
+               InputError);
+
+  Simulation simulation(mesh.network, {0}, test_params());
+  EXPECT_THROW(simulation.set_k(std::numeric_limits<double>::quiet_NaN()), InputError);
+  EXPECT_THROW(simulation.set_dt(-0.01), InputError);
+  EXPECT_THROW(simulation.set_iterations(0), InputError);
+  EXPECT_THROW(simulation.pin(4), std::out_of_range);
+  EXPECT_THROW(simulation.set_pin_target(2, Eigen::Vector3d::Zero()), std::invalid_argument);
+  // A refused change leaves the simulation as it was.
+  EXPECT_EQ(simulation.params().k, 200.0);
+  EXPECT_EQ(simulation.params().dt, 1.0 / 60.0);
+  EXPECT_EQ(simulation.numeric_factorizations(), 1);
+}
+
+TEST(Simulation, CollapsedSpringGivesNoNaN) {
+  // Drag both ends of a spring onto the same point: the local step has no direction to use.
+  const auto mesh = wobble::testing::chain_mesh(2);
+  Simulation simulation(mesh.network, {0, 1}, test_params());
+  simulation.set_pin_target(0, Eigen::Vector3d(0.05, 0, 0));
+  simulation.set_pin_target(1, Eigen::Vector3d(0.05, 0, 0));
+  for (int step = 0; step < 5; ++step) {
+    simulation.step();
+    ASSERT_TRUE(simulation.positions().allFinite()) << "step " << step;
+  }
+  EXPECT_LE((simulation.positions().row(0) - simulation.positions().row(1)).norm(), 1e-6);
+}
+
+}  // namespace
