@@ -60,7 +60,7 @@ int run_headless(const CommandLine& command, std::ostream& out) {
     write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
   }
   if (command.stats) {
-    const nlohmann::json stats = {
+    const nlohmann::ordered_json stats = {
         {"scene", scene.name},
         {"vertices", scene.network.V.rows()},
         {"springs", scene.network.E.rows()},

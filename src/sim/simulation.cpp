@@ -127,6 +127,17 @@ void Simulation::reset() {
   }
 }
 
+void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous) {
+  const Eigen::Index n = network_.V.rows();
+  for (const Eigen::MatrixXd* positions : {&current, &previous}) {
+    if (positions->rows() != n || positions->cols() != 3 || !positions->allFinite()) {
+      throw InputError("state positions must be a finite " + std::to_string(n) + " by 3 matrix");
+    }
+  }
+  current_ = current;
+  previous_ = previous;
+}
+
 void Simulation::step() {
   const auto step_start = Clock::now();
   const Eigen::MatrixXi& E = network_.E;

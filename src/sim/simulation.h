@@ -67,6 +67,10 @@ class Simulation {
   // Back to the initial state: rest positions, initial velocity, initial pins at rest targets.
   // Parameters (k, dt, iterations, gravity) keep their current values.
   void reset();
+  // Replace the state: positions at the current and previous time steps, each #V by 3 (m).
+  // Pins, targets and parameters are unchanged. Throws InputError for a wrong shape or a
+  // non-finite value, leaving the state as it was.
+  void set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous);
 
   void set_k(double k);
   // Keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.

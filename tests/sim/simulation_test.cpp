@@ -196,8 +196,38 @@ TEST(Simulation, RefusesBadInputWithTypedErrors) {
   EXPECT_EQ(simulation.numeric_factorizations(), 1);
 }
 
-TEST(Simulation, CollapsedSpringGivesNoNaN) {
-  // Drag both ends of a spring onto the same point: the local step has no direction to use.
+TEST(Simulation, SetStateReplacesPositionsAndRefusesBadShapes) {
+  const auto mesh = wobble::testing::chain_mesh(2);
+  Simulation simulation(mesh.network, {}, test_params());
+  Eigen::MatrixXd moved = mesh.network.V;
+  moved.col(1).setConstant(0.5);
+  simulation.set_state(moved, mesh.network.V);
+  EXPECT_EQ(simulation.positions(), moved);
+  EXPECT_NEAR(simulation.velocities()(0, 1), 0.5 / test_params().dt, 1e-9);
+  EXPECT_THROW(simulation.set_state(Eigen::MatrixXd::Zero(2, 3), moved), InputError);
+  moved(1, 1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(simulation.set_state(moved, moved), InputError);
+  EXPECT_EQ(simulation.positions().col(1), Eigen::VectorXd::Constant(3, 0.5)) << "unchanged";
+}
+
+TEST(Simulation, CollapsedSpringPushesApartAlongItsRestDirection) {
+  // Both ends of a spring exactly on one point: the local step has no direction to use.
+  const auto mesh = wobble::testing::chain_mesh(1);
+  SimulationParams params = test_params();
+  params.gravity.setZero();
+  Simulation simulation(mesh.network, {}, params);
+  const Eigen::MatrixXd collapsed = Eigen::MatrixXd::Constant(2, 3, 0.05);
+  simulation.set_state(collapsed, collapsed);
+  simulation.step();
+  const Eigen::MatrixXd& p = simulation.positions();
+  ASSERT_TRUE(p.allFinite());
+  // The rest vector V_0 − V_1 points along −x: the ends separate along x and nowhere else.
+  EXPECT_LT(p(0, 0), p(1, 0) - 1e-3);
+  EXPECT_NEAR(p(0, 1), p(1, 1), 1e-12);
+  EXPECT_NEAR(p(0, 2), p(1, 2), 1e-12);
+}
+
+TEST(Simulation, PinsDraggedOntoOnePointStayFinite) {
   const auto mesh = wobble::testing::chain_mesh(2);
   Simulation simulation(mesh.network, {0, 1}, test_params());
   simulation.set_pin_target(0, Eigen::Vector3d(0.05, 0, 0));
