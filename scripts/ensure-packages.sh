@@ -3,16 +3,23 @@
 # them all is left untouched and nothing is downloaded. Sourced by run.sh and test.sh.
 set -euo pipefail
 
-wobble_packages=(
+# What building and running wobble needs.
+run_packages=(
   cmake ninja-build g++ pkg-config      # toolchain
   libeigen3-dev                         # simulation core
   libcli11-dev nlohmann-json3-dev       # command line
-  libgtest-dev                          # tests
+)
+# What the test suite needs on top.
+test_packages=(
+  libgtest-dev
 )
 
+# ensure_packages run|test
 ensure_packages() {
+  local wanted=("${run_packages[@]}")
+  [ "${1:-run}" = test ] && wanted+=("${test_packages[@]}")
   local missing=()
-  for package in "${wobble_packages[@]}"; do
+  for package in "${wanted[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed'; then
       missing+=("$package")
     fi

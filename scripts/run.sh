@@ -4,8 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
-ensure_packages
-build_wobble
+ensure_packages run
+build_wobble -DWOBBLE_BUILD_TESTS=OFF
 if [ $# -eq 0 ]; then
   # The interactive viewer is not built yet: simulate the cloth for 2 s and write the result.
   set -- cloth --headless --frames 120 --stats --export-obj build/cloth.obj

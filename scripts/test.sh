@@ -3,6 +3,6 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
-ensure_packages
+ensure_packages test
 build_wobble -DWOBBLE_BUILD_TESTS=ON
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"
