@@ -28,6 +28,16 @@ struct SparseSeed {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
 };
 
+// Precompute both forms for one test mesh with the constants above; false if either fails.
+bool precompute_both(const wobble::testing::TestMesh& mesh, DenseSeed& dense, SparseSeed& sparse) {
+  const auto& net = mesh.network;
+  const Eigen::VectorXi b = pin_vector(mesh.pins);
+  return fast_mass_springs_precomputation_dense(net.V, net.E, k, net.m, b, dt, dense.r, dense.M,
+                                                dense.A, dense.C, dense.llt) &&
+         fast_mass_springs_precomputation_sparse(net.V, net.E, k, net.m, b, dt, sparse.r, sparse.M,
+                                                 sparse.A, sparse.C, sparse.llt);
+}
+
 TEST(FastMassSpringsPrecomputation, SparseEqualsDense) {
   for (const auto& mesh : all_test_meshes()) {
     SCOPED_TRACE(mesh.name);
@@ -35,10 +45,7 @@ TEST(FastMassSpringsPrecomputation, SparseEqualsDense) {
     const Eigen::VectorXi b = pin_vector(mesh.pins);
     DenseSeed dense;
     SparseSeed sparse;
-    ASSERT_TRUE(fast_mass_springs_precomputation_dense(net.V, net.E, k, net.m, b, dt, dense.r,
-                                                       dense.M, dense.A, dense.C, dense.llt));
-    ASSERT_TRUE(fast_mass_springs_precomputation_sparse(net.V, net.E, k, net.m, b, dt, sparse.r,
-                                                        sparse.M, sparse.A, sparse.C, sparse.llt));
+    ASSERT_TRUE(precompute_both(mesh, dense, sparse));
     // Both build r, M, A and C from the same exact operations, so they agree to the bit; 1e-9
     // is the bound and leaves room for a different summation order.
     EXPECT_LE((sparse.r - dense.r).cwiseAbs().maxCoeff(), 1e-9);
@@ -88,10 +95,7 @@ TEST(FastMassSpringsStep, SparseEqualsDenseFor100Steps) {
     const Eigen::MatrixXd fext = gravity_forces(net.m);
     DenseSeed dense;
     SparseSeed sparse;
-    ASSERT_TRUE(fast_mass_springs_precomputation_dense(net.V, net.E, k, net.m, b, dt, dense.r,
-                                                       dense.M, dense.A, dense.C, dense.llt));
-    ASSERT_TRUE(fast_mass_springs_precomputation_sparse(net.V, net.E, k, net.m, b, dt, sparse.r,
-                                                        sparse.M, sparse.A, sparse.C, sparse.llt));
+    ASSERT_TRUE(precompute_both(mesh, dense, sparse));
     Eigen::MatrixXd dense_prev = net.V, dense_cur = net.V, dense_next;
     Eigen::MatrixXd sparse_prev = net.V, sparse_cur = net.V, sparse_next;
     double largest_motion = 0.0;
