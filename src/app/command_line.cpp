@@ -1,7 +1,9 @@
 #include "command_line.h"
 
 #include <CLI/CLI.hpp>
+#include <charconv>
 #include <cmath>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -32,22 +34,36 @@ std::string number_text(double value) {
   return text.str();
 }
 
-void check_positive(const char* option, double value, double limit) {
-  if (!std::isfinite(value) || !(value > 0.0)) {
-    throw InputError(std::string(option) + ": expected a positive finite number, got " +
-                     number_text(value));
-  }
-  if (value > limit) {
-    throw InputError(std::string(option) + ": " + number_text(value) + " is above the limit of " +
-                     number_text(limit));
-  }
+// The whole of `text` as a number of type T, or nothing if any of it is not part of one.
+template <typename T>
+std::optional<T> parse_number(const std::string& text) {
+  T value{};
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
+  return value;
 }
 
-void check_count(const char* option, long value, long limit) {
-  if (value < 1 || value > limit) {
-    throw InputError(std::string(option) + ": expected a whole number from 1 to " +
-                     std::to_string(limit) + ", got " + std::to_string(value));
+double positive_number(const char* option, const std::string& text, double limit) {
+  const std::optional<double> value = parse_number<double>(text);
+  if (!value || !std::isfinite(*value) || !(*value > 0.0)) {
+    throw InputError(std::string(option) + ": expected a positive finite number, got '" + text +
+                     "'");
   }
+  if (*value > limit) {
+    throw InputError(std::string(option) + ": " + text + " is above the limit of " +
+                     number_text(limit));
+  }
+  return *value;
+}
+
+long whole_number(const char* option, const std::string& text, long limit) {
+  const std::optional<long> value = parse_number<long>(text);
+  if (!value || *value < 1 || *value > limit) {
+    throw InputError(std::string(option) + ": expected a whole number from 1 to " +
+                     std::to_string(limit) + ", got '" + text + "'");
+  }
+  return *value;
 }
 
 }  // namespace
@@ -61,13 +77,16 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("scene", command.scene, "Built-in scene to load (see --list-scenes)")
       ->capture_default_str();
   app.add_flag("--headless", command.headless, "Run without a window");
-  app.add_option("--frames", command.frames,
+  // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
+  // what was typed.
+  std::optional<std::string> frames, export_obj, k, dt, iterations;
+  app.add_option("--frames", frames,
                  "Run this many steps and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
-  app.add_option("--export-obj", command.export_obj, "Write the final positions as OBJ");
-  app.add_option("--k", command.k, "Spring stiffness in N/m (scene default otherwise)");
-  app.add_option("--dt", command.dt, "Time step in seconds (scene default otherwise)");
-  app.add_option("--iterations", command.iterations, "Local-global iterations per step");
+  app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
+  app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
+  app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
+  app.add_option("--iterations", iterations, "Local-global iterations per step");
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
   app.add_flag("--version", version, "Print the version and exit");
@@ -92,12 +111,17 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     return std::nullopt;
   }
 
-  if (command.frames) check_count("--frames", *command.frames, CommandLine::max_frames);
-  if (command.iterations) {
-    check_count("--iterations", *command.iterations, Simulation::max_iterations);
+  if (frames) command.frames = whole_number("--frames", *frames, CommandLine::max_frames);
+  if (iterations) {
+    command.iterations =
+        static_cast<int>(whole_number("--iterations", *iterations, Simulation::max_iterations));
   }
-  if (command.k) check_positive("--k", *command.k, CommandLine::max_k);
-  if (command.dt) check_positive("--dt", *command.dt, CommandLine::max_dt);
+  if (k) command.k = positive_number("--k", *k, CommandLine::max_k);
+  if (dt) command.dt = positive_number("--dt", *dt, CommandLine::max_dt);
+  if (export_obj) {
+    if (export_obj->empty()) throw InputError("--export-obj: expected a file path, got ''");
+    command.export_obj = *export_obj;
+  }
   return command;
 }
 
