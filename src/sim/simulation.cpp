@@ -33,6 +33,13 @@ void validate_params(const SimulationParams& params) {
   if (!params.gravity.allFinite()) throw InputError("gravity must be finite");
 }
 
+// Throws InputError unless `positions` is a finite n by 3 matrix; `what` names it.
+void check_vertex_matrix(const Eigen::MatrixXd& positions, Eigen::Index n, const char* what) {
+  if (positions.rows() != n || positions.cols() != 3 || !positions.allFinite()) {
+    throw InputError(std::string(what) + " must be a finite " + std::to_string(n) + " by 3 matrix");
+  }
+}
+
 }  // namespace
 
 Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
@@ -44,11 +51,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   validate_spring_network(network_);
   validate_params(params_);
   const Eigen::Index n = network_.V.rows();
-  if (initial_velocity_.size() != 0 &&
-      (initial_velocity_.rows() != n || initial_velocity_.cols() != 3 ||
-       !initial_velocity_.allFinite())) {
-    throw InputError("initial velocity must be a finite " + std::to_string(n) + " by 3 matrix");
-  }
+  if (initial_velocity_.size() != 0) check_vertex_matrix(initial_velocity_, n, "initial velocity");
   for (int i : pins) {
     if (i < 0 || i >= n) {
       throw InputError("pinned vertex " + std::to_string(i) + " is out of range 0 to " +
@@ -128,12 +131,8 @@ void Simulation::reset() {
 }
 
 void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous) {
-  const Eigen::Index n = network_.V.rows();
-  for (const Eigen::MatrixXd* positions : {&current, &previous}) {
-    if (positions->rows() != n || positions->cols() != 3 || !positions->allFinite()) {
-      throw InputError("state positions must be a finite " + std::to_string(n) + " by 3 matrix");
-    }
-  }
+  check_vertex_matrix(current, network_.V.rows(), "current positions");
+  check_vertex_matrix(previous, network_.V.rows(), "previous positions");
   current_ = current;
   previous_ = previous;
 }

@@ -47,7 +47,8 @@ struct StepTiming {
 //   set_pin_target           right-hand side only: no factorization
 //   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
 //   unpin, reset               (Q's sparsity pattern never changes: its diagonal is always stored)
-//   set_iterations, gravity  nothing precomputed
+//   set_iterations, gravity, nothing precomputed
+//   set_state
 class Simulation {
  public:
   static constexpr double pin_weight = 1e10;  // w
