@@ -66,6 +66,20 @@ long whole_number(const char* option, const std::string& text, long limit) {
   return *value;
 }
 
+double number_between(const char* option, const std::string& text, double low, double high) {
+  const std::optional<double> value = parse_number<double>(text);
+  if (!value || !(*value >= low && *value <= high)) {
+    throw InputError(std::string(option) + ": expected a number from " + number_text(low) +
+                     " to " + number_text(high) + ", got '" + text + "'");
+  }
+  return *value;
+}
+
+std::string path_value(const char* option, const std::string& text, const char* what) {
+  if (text.empty()) throw InputError(std::string(option) + ": expected a " + what + ", got ''");
+  return text;
+}
+
 }  // namespace
 
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
@@ -76,18 +90,30 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   bool version = false, list_scenes = false;
   app.add_option("scene", command.scene, "Built-in scene to load (see --list-scenes)")
       ->capture_default_str();
-  app.add_flag("--headless", command.headless, "Run without a window");
+  app.add_flag("--headless", command.headless,
+               "No window: simulate, and render through EGL if an image is asked for");
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
-  std::optional<std::string> frames, export_obj, k, dt, iterations;
+  std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
+      record, yaw, pitch;
   app.add_option("--frames", frames,
-                 "Run this many steps and exit (headless default: " +
+                 "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
+  app.add_option("--width", width, "Window or image width in pixels (default 1280)");
+  app.add_option("--height", height, "Window or image height in pixels (default 720)");
+  app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");
+  app.add_option("--record", record, "Write every frame as DIR/frame_00001.png, ...");
+  app.add_flag("--ui", command.ui, "Headless images show the control panel too");
+  app.add_flag("--wireframe", command.wireframe, "Start with the wireframe shown");
+  app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
+  app.add_flag("--points", command.points, "Start with every vertex shown as a point");
+  app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
+  app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
   app.add_flag("--version", version, "Print the version and exit");
 
@@ -118,9 +144,18 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (k) command.k = positive_number("--k", *k, CommandLine::max_k);
   if (dt) command.dt = positive_number("--dt", *dt, CommandLine::max_dt);
-  if (export_obj) {
-    if (export_obj->empty()) throw InputError("--export-obj: expected a file path, got ''");
-    command.export_obj = *export_obj;
+  if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
+  if (width) command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
+  if (height) {
+    command.height =
+        static_cast<int>(whole_number("--height", *height, CommandLine::max_image_side));
+  }
+  if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
+  if (record) command.record = path_value("--record", *record, "folder path");
+  if (yaw) command.camera_yaw = number_between("--camera-yaw", *yaw, -360.0, 360.0);
+  if (pitch) {
+    command.camera_pitch = number_between("--camera-pitch", *pitch, -CommandLine::max_camera_pitch,
+                                          CommandLine::max_camera_pitch);
   }
   return command;
 }

@@ -18,10 +18,22 @@ struct CommandLine {
   std::optional<int> iterations;
   bool stats = false;
 
+  // Images (both modes) and what they show.
+  int width = 1280, height = 720;  // window or offscreen image size, pixels
+  std::string screenshot;          // PNG of the frame after the last step; empty: none
+  std::string record;              // folder for one PNG per frame; empty: none
+  bool ui = false;                 // headless: draw the ImGui panel too
+  bool wireframe = false, springs = false, points = false;
+  std::optional<double> camera_yaw, camera_pitch;  // degrees
+
+  bool writes_images() const { return !screenshot.empty() || !record.empty(); }
+
   static constexpr long default_headless_frames = 120;
   static constexpr long max_frames = 10'000'000;
   static constexpr double max_k = 1e8;  // well below the pin weight w = 1e10, so pins still hold
   static constexpr double max_dt = 1.0;
+  static constexpr long max_image_side = 16384;
+  static constexpr double max_camera_pitch = 89.0;
 };
 
 // Parse argv. Returns nothing when the request was fully answered here (--help, --version,

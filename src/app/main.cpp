@@ -6,6 +6,7 @@
 #include "command_line.h"
 #include "io/atomic_file.h"
 #include "run_headless.h"
+#include "run_window.h"
 #include "sim/input_error.h"
 
 int main(int argc, char** argv) {
@@ -13,12 +14,8 @@ int main(int argc, char** argv) {
     const std::optional<wobble::CommandLine> command =
         wobble::parse_command_line(argc, argv, std::cout);
     if (!command) return 0;
-    if (!command->headless) {
-      std::cerr << "wobble: this build has no interactive viewer yet; add --headless to simulate "
-                   "without a window\n";
-      return 2;
-    }
-    return wobble::run_headless(*command, std::cout);
+    if (command->headless) return wobble::run_headless(*command, std::cout, std::cerr);
+    return wobble::run_window(*command, std::cerr);
   } catch (const wobble::InputError& error) {
     std::cerr << "wobble: " << error.what() << "\n";
     return 2;

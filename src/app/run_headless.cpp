@@ -7,7 +7,10 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "image_outputs.h"
 #include "io/write_obj.h"
+#include "render_offscreen.h"
+#include "viewer.h"
 #include "sim/builtin_scenes.h"
 #include "sim/simulation.h"
 
@@ -24,9 +27,69 @@ double median(std::vector<double> values) {
   return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
 }
 
+nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& scene,
+                                 long frames, const std::vector<double>& step_ms,
+                                 const std::vector<double>& local_ms,
+                                 const std::vector<double>& global_ms) {
+  const SimulationParams& params = simulation.params();
+  return {
+      {"scene", scene.name},
+      {"vertices", scene.network.V.rows()},
+      {"springs", scene.network.E.rows()},
+      {"pinned", simulation.pin_count()},
+      {"iterations", params.iterations},
+      {"frames", frames},
+      {"k", params.k},
+      {"dt", params.dt},
+      {"precompute_ms", simulation.precompute_ms()},
+      {"step_ms_median", median(step_ms)},
+      {"step_ms_min", step_ms.empty() ? 0.0 : *std::min_element(step_ms.begin(), step_ms.end())},
+      {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
+      {"local_ms_median", median(local_ms)},
+      {"global_ms_median", median(global_ms)},
+  };
+}
+
+// --headless with --screenshot or --record: the viewer's frame loop in an EGL context.
+int render_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
+  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
+  ImageOutputs outputs(command.screenshot, command.record, frames, progress);
+  if (!command.export_obj.empty()) check_output_path(command.export_obj);
+  Viewer viewer(make_builtin_scene(command.scene), viewer_settings(command),
+                builtin_scene_names());
+
+  OffscreenOptions options;
+  options.width = command.width;
+  options.height = command.height;
+  options.frames = frames;
+  options.ui = command.ui;
+  OffscreenReport report;
+  render_offscreen(viewer, options, &outputs, &report);
+
+  const Simulation& simulation = viewer.simulation();
+  if (!simulation.positions().allFinite()) {
+    throw std::runtime_error("the simulation produced non-finite positions; try a smaller --dt");
+  }
+  if (!command.export_obj.empty()) {
+    write_obj(command.export_obj, simulation.positions(), viewer.scene().network.F,
+              viewer.scene().network.E);
+  }
+  if (command.stats) {
+    nlohmann::ordered_json stats = statistics(simulation, viewer.scene(), frames, report.step_ms,
+                                              report.local_ms, report.global_ms);
+    stats["render_ms_median"] = median(report.render_ms);
+    stats["width"] = command.width;
+    stats["height"] = command.height;
+    stats["context"] = report.context;
+    out << stats.dump() << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
-int run_headless(const CommandLine& command, std::ostream& out) {
+int run_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
+  if (command.writes_images()) return render_headless(command, out, progress);
   if (!command.export_obj.empty()) check_output_path(command.export_obj);
 
   Scene scene = make_builtin_scene(command.scene);
@@ -60,23 +123,7 @@ int run_headless(const CommandLine& command, std::ostream& out) {
     write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
   }
   if (command.stats) {
-    const nlohmann::ordered_json stats = {
-        {"scene", scene.name},
-        {"vertices", scene.network.V.rows()},
-        {"springs", scene.network.E.rows()},
-        {"pinned", simulation.pin_count()},
-        {"iterations", params.iterations},
-        {"frames", frames},
-        {"k", params.k},
-        {"dt", params.dt},
-        {"precompute_ms", simulation.precompute_ms()},
-        {"step_ms_median", median(step_ms)},
-        {"step_ms_min", *std::min_element(step_ms.begin(), step_ms.end())},
-        {"step_ms_max", *std::max_element(step_ms.begin(), step_ms.end())},
-        {"local_ms_median", median(local_ms)},
-        {"global_ms_median", median(global_ms)},
-    };
-    out << stats.dump() << "\n";
+    out << statistics(simulation, scene, frames, step_ms, local_ms, global_ms).dump() << "\n";
   }
   return 0;
 }

@@ -1,0 +1,28 @@
+#version 330 core
+// Two-sided lighting: a back face turns its normal around and takes its own colour, so cloth seen
+// from behind is lit like the front and still tells the two sides apart.
+in vec3 world_position;
+in vec3 world_normal;
+
+uniform vec3 eye;
+uniform vec3 front_color;
+uniform vec3 back_color;
+
+out vec4 color;
+
+void main() {
+  vec3 n = normalize(world_normal);
+  vec3 base = front_color;
+  if (!gl_FrontFacing) {
+    n = -n;
+    base = back_color;
+  }
+  vec3 to_eye = normalize(eye - world_position);
+  // A key light just above the viewer keeps the lit side facing the camera while orbiting.
+  vec3 light = normalize(to_eye + vec3(0.0, 0.8, 0.0));
+  float diffuse = max(dot(n, light), 0.0);
+  float specular = pow(max(dot(n, normalize(light + to_eye)), 0.0), 48.0);
+  // Sky above, ground bounce below.
+  vec3 ambient = mix(vec3(0.22, 0.20, 0.18), vec3(0.36, 0.40, 0.46), 0.5 + 0.5 * n.y);
+  color = vec4(base * (ambient + 0.75 * diffuse) + vec3(0.18 * specular), 1.0);
+}

@@ -1,0 +1,38 @@
+#ifndef WOBBLE_APP_IMAGE_OUTPUTS_H
+#define WOBBLE_APP_IMAGE_OUTPUTS_H
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "io/png_image.h"
+
+namespace wobble {
+
+// --screenshot FILE.png and --record DIR, the same in both modes.
+class ImageOutputs {
+ public:
+  // Checks the paths before any work is done (InputError): the screenshot must end in .png and
+  // its folder must be writable; the record folder is created if its parent exists.
+  // `total_frames` (if known) lets long recordings report progress on `progress`.
+  ImageOutputs(std::string screenshot, std::string record_folder,
+               std::optional<long> total_frames, std::ostream& progress);
+
+  bool any() const { return !screenshot_.empty() || !record_folder_.empty(); }
+  // Whether a frame (the last one, or not) needs its pixels read back.
+  bool wants(bool last) const { return !record_folder_.empty() || (last && !screenshot_.empty()); }
+  // Write frame `frame`: into the record folder, and as the screenshot if it is the last.
+  void write(long frame, bool last, const RgbaImage& image);
+
+  // The record folder's file for a frame: DIR/frame_00001.png.
+  static std::string frame_file(const std::string& folder, long frame);
+
+ private:
+  std::string screenshot_, record_folder_;
+  std::optional<long> total_frames_;
+  std::ostream& progress_;
+};
+
+}  // namespace wobble
+
+#endif

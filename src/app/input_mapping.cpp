@@ -1,0 +1,59 @@
+#include "input_mapping.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>  // key and button codes only: nothing here calls GLFW
+
+namespace wobble {
+
+ViewerCommand command_for_key(int key) {
+  switch (key) {
+    case GLFW_KEY_SPACE: return ViewerCommand::toggle_pause;
+    case GLFW_KEY_S: return ViewerCommand::step_once;
+    case GLFW_KEY_R: return ViewerCommand::reset;
+    case GLFW_KEY_W: return ViewerCommand::toggle_wireframe;
+    case GLFW_KEY_P: return ViewerCommand::toggle_points;
+    case GLFW_KEY_L: return ViewerCommand::toggle_springs;
+    case GLFW_KEY_H: return ViewerCommand::toggle_help;
+    case GLFW_KEY_F: return ViewerCommand::frame_mesh;
+    case GLFW_KEY_ESCAPE: return ViewerCommand::quit;
+    default: return ViewerCommand::none;
+  }
+}
+
+MouseGesture gesture_for_press(int button, bool control, bool shift, bool over_ui, bool over_pin,
+                               bool over_vertex) {
+  if (over_ui) return MouseGesture::none;
+  if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
+    return MouseGesture::pan;
+  }
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return MouseGesture::none;
+  if (control) return over_vertex ? MouseGesture::toggle_pin : MouseGesture::none;
+  // Shift+drag pans, for touchpads without a middle or right button.
+  if (shift) return MouseGesture::pan;
+  if (over_pin) return MouseGesture::grab_pin;
+  if (over_vertex) return MouseGesture::grab_free_vertex;
+  return MouseGesture::orbit;
+}
+
+const std::vector<Binding>& viewer_bindings() {
+  static const std::vector<Binding> bindings = {
+      {"Space", "pause / play"},
+      {"S", "step once"},
+      {"R", "reset the scene"},
+      {"W", "wireframe on / off"},
+      {"P", "vertices as points on / off"},
+      {"L", "springs as lines on / off"},
+      {"F", "frame the mesh"},
+      {"H", "this help on / off"},
+      {"Esc", "quit"},
+      {"Left-drag a pin", "move the pin; the shape follows"},
+      {"Left-drag a vertex", "hold it while dragging; let go to throw"},
+      {"Ctrl+click a vertex", "pin / unpin it"},
+      {"Left-drag elsewhere", "orbit the camera"},
+      {"Right/middle or Shift+left-drag", "pan"},
+      {"Wheel", "zoom"},
+  };
+  return bindings;
+}
+
+}  // namespace wobble

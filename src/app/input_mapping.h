@@ -1,0 +1,50 @@
+#ifndef WOBBLE_APP_INPUT_MAPPING_H
+#define WOBBLE_APP_INPUT_MAPPING_H
+
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+// What a key does in the viewer.
+enum class ViewerCommand {
+  none,
+  toggle_pause,
+  step_once,
+  reset,
+  toggle_wireframe,
+  toggle_points,
+  toggle_springs,
+  toggle_help,
+  frame_mesh,
+  quit,
+};
+
+// The command for a GLFW key code (GLFW_KEY_*); none for keys without one.
+ViewerCommand command_for_key(int key);
+
+// What pressing a mouse button starts, given what is under the cursor.
+enum class MouseGesture {
+  none,              // ImGui has the mouse, or the button does nothing
+  grab_pin,          // drag a pinned vertex's target
+  grab_free_vertex,  // pin a free vertex for the length of the drag, then let it go
+  toggle_pin,        // Ctrl+click: pin or unpin the vertex under the cursor
+  orbit,             // turn the camera about its target
+  pan,               // slide the camera and its target
+};
+
+// `button` is a GLFW mouse button. `over_ui` is ImGui's io.WantCaptureMouse; `over_pin` and
+// `over_vertex` say whether a pinned (or any) vertex is within the picking radius.
+MouseGesture gesture_for_press(int button, bool control, bool shift, bool over_ui, bool over_pin,
+                               bool over_vertex);
+
+// Every key and mouse action, for the help overlay and the README: {input, what it does}.
+struct Binding {
+  std::string input;
+  std::string action;
+};
+const std::vector<Binding>& viewer_bindings();
+
+}  // namespace wobble
+
+#endif

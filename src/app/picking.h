@@ -1,0 +1,41 @@
+#ifndef WOBBLE_APP_PICKING_H
+#define WOBBLE_APP_PICKING_H
+
+#include <Eigen/Core>
+#include <optional>
+
+namespace wobble {
+
+// Picking and dragging in screen space, without GL: no depth buffer is read, so a drag costs one
+// pass over the vertices per frame. Window coordinates are pixels from the top-left corner;
+// `viewport` is the window's (width, height) in those units.
+
+// Where `point` lands in the window: (x, y, normalized depth in [-1, 1]). Nothing for a point
+// behind the eye.
+std::optional<Eigen::Vector3f> project_to_window(const Eigen::Matrix4f& view_projection,
+                                                 const Eigen::Vector3f& point,
+                                                 const Eigen::Vector2f& viewport);
+
+// The vertex within `radius` pixels of `cursor` that is nearest the camera, or -1.
+//   positions  #V by 3, row-major
+//   eligible   #V flags (non-zero: may be picked), or null for every vertex
+int pick_vertex(const Eigen::Matrix4f& view_projection, const float* positions, int vertex_count,
+                const unsigned char* eligible, const Eigen::Vector2f& cursor,
+                const Eigen::Vector2f& viewport, float radius);
+
+// The ray from the eye through the cursor, in world space; direction has unit length.
+struct Ray {
+  Eigen::Vector3f origin;
+  Eigen::Vector3f direction;
+};
+Ray cursor_ray(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
+               const Eigen::Vector2f& cursor, const Eigen::Vector2f& viewport);
+
+// Where `ray` meets the plane through `point` with normal `normal`; nothing if it runs parallel
+// to the plane or meets it behind its origin.
+std::optional<Eigen::Vector3f> intersect_plane(const Ray& ray, const Eigen::Vector3f& point,
+                                               const Eigen::Vector3f& normal);
+
+}  // namespace wobble
+
+#endif

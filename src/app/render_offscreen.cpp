@@ -1,0 +1,98 @@
+#include "render_offscreen.h"
+
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <chrono>
+
+#include "platform/egl_context.h"
+#include "render/offscreen_target.h"
+
+namespace wobble {
+
+namespace {
+
+// An ImGui context driven by hand: no platform backend, a fixed display size and a fixed frame
+// time, so the panel is laid out the same way on every run.
+class HeadlessUi {
+ public:
+  HeadlessUi(int width, int height) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~HeadlessUi() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+  }
+  HeadlessUi(const HeadlessUi&) = delete;
+  HeadlessUi& operator=(const HeadlessUi&) = delete;
+};
+
+// Frees the viewer's GL objects before the context goes, however the loop ends.
+struct RendererAttachment {
+  explicit RendererAttachment(Viewer& viewer) : viewer(viewer) { viewer.attach_renderer(); }
+  ~RendererAttachment() { viewer.detach_renderer(); }
+  Viewer& viewer;
+};
+
+}  // namespace
+
+RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options,
+                           ImageOutputs* outputs, OffscreenReport* report) {
+  EglContext context;
+  OffscreenTarget target(options.width, options.height);
+  RendererAttachment attachment(viewer);
+  std::unique_ptr<HeadlessUi> ui;
+  if (options.ui) ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  if (report) report->context = context.description();
+
+  const Eigen::Vector2f size(static_cast<float>(options.width),
+                             static_cast<float>(options.height));
+  PanelStats timings;
+  timings.show_timings = false;  // the wall clock stays out of the pixels
+  RgbaImage image;
+  image.width = options.width;
+  image.height = options.height;
+  for (long frame = 1; frame <= options.frames; ++frame) {
+    const bool last = frame == options.frames;
+    if (ui) {
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui::NewFrame();
+      viewer.build_ui(timings, 1.0f);
+    }
+    viewer.advance();
+    if (report) {
+      const StepTiming& step = viewer.simulation().last_step_timing();
+      report->step_ms.push_back(step.total_ms);
+      report->local_ms.push_back(step.local_ms);
+      report->global_ms.push_back(step.global_ms);
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    target.bind();
+    viewer.render(options.width, options.height, size, 1.0f);
+    if (ui) {
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
+    const bool read = last || (outputs != nullptr && outputs->wants(last));
+    if (read) {
+      target.read_rgba(image.pixels);
+    } else {
+      target.finish();
+    }
+    if (report) {
+      report->render_ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count());
+    }
+    if (outputs != nullptr && outputs->wants(last)) outputs->write(frame, last, image);
+  }
+  return image;
+}
+
+}  // namespace wobble

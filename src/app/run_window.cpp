@@ -1,0 +1,105 @@
+#include "run_window.h"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include <memory>
+
+#include "image_outputs.h"
+#include "platform/glfw_window.h"
+#include "render/offscreen_target.h"
+#include "viewer.h"
+
+namespace wobble {
+
+namespace {
+
+// ImGui with its GLFW and OpenGL 3 backends, scaled for high-DPI screens.
+class WindowUi {
+ public:
+  WindowUi(GlfwWindow& window, float scale) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini left in whatever folder wobble was started from
+    io.FontGlobalScale = scale;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);  // chains to the window's callbacks
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~WindowUi() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  WindowUi(const WindowUi&) = delete;
+  WindowUi& operator=(const WindowUi&) = delete;
+};
+
+}  // namespace
+
+int run_window(const CommandLine& command, std::ostream& progress) {
+  // Everything that can be refused is checked before a window appears.
+  ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
+  Scene scene = make_builtin_scene(command.scene);
+
+  GlfwWindow window(command.width, command.height, "Wobble: " + scene.name);
+  const float ui_scale = window.content_scale();
+  WindowUi ui(window, ui_scale);
+  Viewer viewer(std::move(scene), viewer_settings(command), builtin_scene_names());
+  viewer.attach_renderer();
+
+  RgbaImage image;
+  long frame = 0;
+  while (!window.should_close() && !viewer.quit_requested()) {
+    // 1. poll
+    const std::vector<InputEvent> events = window.poll_events();
+    int window_width = 0, window_height = 0, width = 0, height = 0;
+    window.window_size(window_width, window_height);
+    window.framebuffer_size(width, height);
+    const Eigen::Vector2f window_size(static_cast<float>(window_width),
+                                      static_cast<float>(window_height));
+    // 2. new frame
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window_size);
+    // 3. UI
+    PanelStats timings;
+    timings.fps = io.Framerate;
+    viewer.build_ui(timings, ui_scale);
+    // 4. step: one fixed dt per frame
+    viewer.advance();
+    // 5. render
+    ImGui::Render();
+    if (width > 0 && height > 0) {  // a minimized window has no pixels
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      viewer.render(width, height, window_size, window_width > 0 ? width / window_size.x() : 1);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
+    ++frame;
+    const bool last = command.frames && frame >= *command.frames;
+    // Without --frames the last frame is known only once the window closes, so a screenshot
+    // keeps the latest one.
+    const bool keep = outputs.wants(last) || (!command.frames && !command.screenshot.empty());
+    if (keep && width > 0 && height > 0) {
+      glReadBuffer(GL_BACK);
+      image.width = width;
+      image.height = height;
+      read_framebuffer_rgba(width, height, image.pixels);
+      if (outputs.wants(last)) outputs.write(frame, last, image);
+    }
+    // 6. swap
+    window.swap_buffers();
+    if (last) break;
+  }
+  if (!command.frames && !command.screenshot.empty() && !image.pixels.empty()) {
+    outputs.write(frame, /*last=*/true, image);
+  }
+  viewer.detach_renderer();
+  return 0;
+}
+
+}  // namespace wobble

@@ -1,0 +1,236 @@
+#include "viewer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "render/vertex_normals.h"
+
+namespace wobble {
+
+namespace {
+
+constexpr float degrees = 3.14159265358979f / 180.0f;
+// The view a scene opens with: from the front right, a little above.
+constexpr float default_yaw = 30.0f * degrees;
+constexpr float default_pitch = 20.0f * degrees;
+
+// Cloth is orange in front and blue behind; a solid shows only its outside.
+SurfaceColors colors_for(const Scene& scene) {
+  SurfaceColors colors;
+  if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.42f, 0.80f, 0.30f);
+  return colors;
+}
+
+void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Vector3f& upper) {
+  lower = upper = Eigen::Vector3f::Zero();
+  for (int i = 0; i < count; ++i) {
+    const Eigen::Map<const Eigen::Vector3f> p(positions + 3 * i);
+    lower = i == 0 ? Eigen::Vector3f(p) : Eigen::Vector3f(lower.cwiseMin(p));
+    upper = i == 0 ? Eigen::Vector3f(p) : Eigen::Vector3f(upper.cwiseMax(p));
+  }
+}
+
+}  // namespace
+
+ViewerSettings viewer_settings(const CommandLine& command) {
+  ViewerSettings settings;
+  settings.k = command.k;
+  settings.dt = command.dt;
+  settings.iterations = command.iterations;
+  settings.layers.wireframe = command.wireframe;
+  settings.layers.springs = command.springs;
+  settings.layers.points = command.points;
+  if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
+  if (command.camera_pitch) {
+    settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
+  }
+  return settings;
+}
+
+Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_names)
+    : scene_names_(std::move(scene_names)) {
+  if (settings.k) scene.params.k = *settings.k;
+  if (settings.dt) scene.params.dt = *settings.dt;
+  if (settings.iterations) scene.params.iterations = *settings.iterations;
+  panel_.surface = settings.layers.surface;
+  panel_.wireframe = settings.layers.wireframe;
+  panel_.springs = settings.layers.springs;
+  panel_.points = settings.layers.points;
+  panel_.ground = settings.layers.ground;
+  camera_.yaw = settings.camera_yaw_degrees.value_or(default_yaw / degrees) * degrees;
+  camera_.pitch = std::clamp(settings.camera_pitch_degrees.value_or(default_pitch / degrees) *
+                                 degrees,
+                             -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+  load(std::move(scene));
+}
+
+Viewer::~Viewer() = default;
+
+void Viewer::load(Scene scene) {
+  drag_.cancel();
+  mode_ = Mode::idle;
+  scene_ = std::move(scene);
+  simulation_ = std::make_unique<Simulation>(scene_.network, scene_.pins, scene_.params,
+                                             scene_.initial_velocity);
+  const auto found = std::find(scene_names_.begin(), scene_names_.end(), scene_.name);
+  if (found == scene_names_.end()) scene_names_.push_back(scene_.name);
+  panel_.scene = static_cast<int>(
+      std::find(scene_names_.begin(), scene_names_.end(), scene_.name) - scene_names_.begin());
+  panel_.k = static_cast<float>(scene_.params.k);
+  panel_.dt = static_cast<float>(scene_.params.dt);
+  panel_.iterations = scene_.params.iterations;
+  panel_.gravity = static_cast<float>(-scene_.params.gravity.y());
+
+  const SpringNetwork& network = scene_.network;
+  triangles_.resize(3 * network.F.rows());
+  for (Eigen::Index f = 0; f < network.F.rows(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      triangles_[3 * f + k] = static_cast<unsigned>(network.F(f, k));
+  }
+  springs_.resize(2 * network.E.rows());
+  for (Eigen::Index e = 0; e < network.E.rows(); ++e) {
+    for (int k = 0; k < 2; ++k)
+      springs_[2 * e + k] = static_cast<unsigned>(network.E(e, k));
+  }
+  const int n = static_cast<int>(network.V.rows());
+  positions_.resize(3 * n);
+  normals_.resize(3 * n);
+  marks_.resize(n);
+  pinned_flags_.resize(n);
+  update_vertex_arrays();
+  frame_on_next_render_ = true;
+  if (renderer_) attach_renderer();
+}
+
+void Viewer::attach_renderer() {
+  if (!renderer_) renderer_ = std::make_unique<Renderer>();
+  MeshTopology topology;
+  topology.vertex_count = static_cast<int>(scene_.network.V.rows());
+  topology.triangles = triangles_.data();
+  topology.triangle_count = static_cast<int>(triangles_.size() / 3);
+  topology.springs = springs_.data();
+  topology.spring_count = static_cast<int>(springs_.size() / 2);
+  renderer_->set_topology(topology);
+  renderer_->set_colors(colors_for(scene_));
+
+  // The ground sits under the scene (or at y = 0, whichever is lower), with lines at a round
+  // fraction of the scene's size.
+  Eigen::Vector3f lower, upper;
+  bounds(positions_.data(), topology.vertex_count, lower, upper);
+  const float size = std::max((upper - lower).maxCoeff(), 1e-3f);
+  GroundGrid ground;
+  ground.height = std::min(0.0f, lower.y());
+  ground.center_x = 0.5f * (lower.x() + upper.x());
+  ground.center_z = 0.5f * (lower.z() + upper.z());
+  ground.spacing = 0.25f * std::pow(10.0f, std::round(std::log10(size)));
+  ground.half_extent = 8.0f * ground.spacing * std::max(1.0f, std::ceil(size / (4 * ground.spacing)));
+  renderer_->set_ground(ground);
+}
+
+void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
+  PanelStats stats = this->stats();
+  stats.show_timings = timings.show_timings;
+  stats.fps = timings.fps;
+  const StepTiming& step = simulation_->last_step_timing();
+  stats.step_ms = static_cast<float>(step.total_ms);
+  stats.local_ms = static_cast<float>(step.local_ms);
+  stats.global_ms = static_cast<float>(step.global_ms);
+
+  const PanelRequests requests = draw_control_panel(panel_, stats, scene_names_, ui_scale);
+  std::vector<std::pair<std::string, std::string>> help;
+  for (const Binding& binding : viewer_bindings())
+    help.emplace_back(binding.input, binding.action);
+  draw_help_overlay(help, panel_.show_help);
+
+  if (requests.scene_changed) {
+    load(make_builtin_scene(scene_names_[panel_.scene]));
+    return;
+  }
+  apply_panel_settings();
+  if (requests.step_once) apply(ViewerCommand::step_once);
+  if (requests.reset) apply(ViewerCommand::reset);
+  if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
+}
+
+void Viewer::apply_panel_settings() {
+  // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
+  const SimulationParams& params = simulation_->params();
+  if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
+  if (static_cast<float>(params.dt) != panel_.dt) simulation_->set_dt(panel_.dt);
+  if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
+  if (static_cast<float>(-params.gravity.y()) != panel_.gravity) {
+    simulation_->set_gravity(Eigen::Vector3d(0.0, -panel_.gravity, 0.0), params.gravity_model);
+  }
+}
+
+void Viewer::advance() {
+  if (!panel_.paused || step_requested_) simulation_->step();
+  step_requested_ = false;
+}
+
+PanelStats Viewer::stats() const {
+  PanelStats stats;
+  stats.vertices = static_cast<int>(scene_.network.V.rows());
+  stats.springs = static_cast<int>(scene_.network.E.rows());
+  stats.pins = simulation_->pin_count();
+  stats.steps = simulation_->steps_taken();
+  stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
+  return stats;
+}
+
+void Viewer::update_vertex_arrays() {
+  const Eigen::MatrixXd& p = simulation_->positions();
+  const int n = static_cast<int>(p.rows());
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * i + k] = static_cast<float>(p(i, k));
+    pinned_flags_[i] = simulation_->is_pinned(i) ? 1 : 0;
+  }
+  compute_vertex_normals(positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), normals_.data());
+}
+
+void Viewer::render(int framebuffer_width, int framebuffer_height,
+                    const Eigen::Vector2f& window_size, float pixel_ratio) {
+  window_size_ = window_size;
+  update_vertex_arrays();
+  const int n = static_cast<int>(positions_.size() / 3);
+  const float aspect = static_cast<float>(framebuffer_width) / std::max(framebuffer_height, 1);
+  if (frame_on_next_render_) {
+    Eigen::Vector3f lower, upper;
+    bounds(positions_.data(), n, lower, upper);
+    // A fresh scene is framed with the ground below it, where hanging cloth will fall.
+    if (simulation_->steps_taken() == 0) lower.y() = std::min(lower.y(), 0.0f);
+    frame_box(camera_, lower, upper, aspect);
+    frame_on_next_render_ = false;
+  }
+  view_ = view_matrix(camera_);
+  projection_ = projection_matrix(camera_, aspect);
+
+  // The pin under the cursor and the vertex being held are highlighted.
+  hovered_pin_ = (mode_ == Mode::idle && !drag_.active() && !cursor_over_ui_)
+                     ? pick(cursor_, /*pinned_only=*/true)
+                     : -1;
+  for (int i = 0; i < n; ++i)
+    marks_[i] = pinned_flags_[i];
+  if (hovered_pin_ >= 0) marks_[hovered_pin_] = 2;
+  if (drag_.active()) marks_[drag_.vertex()] = 2;
+
+  if (!renderer_) return;
+  MeshFrame frame;
+  frame.positions = positions_.data();
+  frame.normals = normals_.data();
+  frame.marks = marks_.data();
+  renderer_->update(frame);
+  ViewLayers layers;
+  layers.surface = panel_.surface;
+  layers.wireframe = panel_.wireframe;
+  layers.springs = panel_.springs;
+  layers.points = panel_.points;
+  layers.ground = panel_.ground;
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers, framebuffer_width,
+                  framebuffer_height, pixel_ratio);
+}
+
+}  // namespace wobble

@@ -1,0 +1,104 @@
+#ifndef WOBBLE_APP_VIEWER_H
+#define WOBBLE_APP_VIEWER_H
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "platform/input_event.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "command_line.h"
+#include "sim/builtin_scenes.h"
+#include "sim/simulation.h"
+#include "ui/control_panel.h"
+#include "input_mapping.h"
+#include "vertex_drag.h"
+
+namespace wobble {
+
+// How the viewer starts: overrides of the scene's parameters, and what to show.
+struct ViewerSettings {
+  std::optional<double> k, dt;
+  std::optional<int> iterations;
+  ViewLayers layers;
+  std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
+};
+
+// The start-up settings a command line asks for.
+ViewerSettings viewer_settings(const CommandLine& command);
+
+// Everything the window and the headless mode share: the scene and its simulation, the camera,
+// the mouse and keys, the ImGui panel, and the renderer. Only the GL context and the frame loop
+// around it differ between the two modes. One frame is, in this order:
+//   handle_events → build_ui → advance → render
+class Viewer {
+ public:
+  // `scene_names` are what the scene picker offers; `scene` is already built. No GL needed yet.
+  Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_names);
+  ~Viewer();
+
+  // Create the renderer. Needs the GL context current until detach_renderer or destruction.
+  void attach_renderer();
+  // Free the renderer's GL objects while their context is still current.
+  void detach_renderer() { renderer_.reset(); }
+
+  // Mouse and keys since the last frame. `ui_wants_mouse`/`ui_wants_keyboard` are ImGui's
+  // io.WantCaptureMouse/WantCaptureKeyboard: what the panel takes, the 3-D view ignores.
+  void handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
+                     bool ui_wants_keyboard, const Eigen::Vector2f& window_size);
+  // The panel and the help overlay (ImGui, between NewFrame and Render). Applies what changed.
+  void build_ui(const PanelStats& timings, float ui_scale);
+  // One time step, unless paused.
+  void advance();
+  // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
+  // `pixel_ratio` is framebuffer pixels per window unit.
+  void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
+              float pixel_ratio);
+
+  bool quit_requested() const { return quit_; }
+  const Simulation& simulation() const { return *simulation_; }
+  const Scene& scene() const { return scene_; }
+  const OrbitCamera& camera() const { return camera_; }
+  // Panel figures that do not come from the wall clock.
+  PanelStats stats() const;
+
+ private:
+  void load(Scene scene);
+  void apply(ViewerCommand command);
+  void apply_panel_settings();
+  void update_vertex_arrays();
+  int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
+  Ray ray_at(const Eigen::Vector2f& cursor) const;
+
+  Scene scene_;
+  std::unique_ptr<Simulation> simulation_;
+  std::vector<std::string> scene_names_;
+  PanelSettings panel_;
+  OrbitCamera camera_;
+  bool frame_on_next_render_ = true;
+  bool quit_ = false;
+  bool step_requested_ = false;
+
+  // Mouse state.
+  enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
+  VertexDrag drag_;
+  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);
+  Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
+  bool cursor_over_ui_ = false;
+  int hovered_pin_ = -1;
+
+  // What the renderer draws, as plain arrays refreshed every frame.
+  std::vector<unsigned> triangles_, springs_;
+  std::vector<float> positions_, normals_;
+  std::vector<unsigned char> marks_, pinned_flags_;
+  Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
+  Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
+  std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace wobble
+
+#endif

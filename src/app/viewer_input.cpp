@@ -1,0 +1,97 @@
+// The viewer's mouse and keys: what each event does to the camera, the pins and the playback.
+#include "viewer.h"
+
+namespace wobble {
+
+namespace {
+
+// How close, in window units, the cursor must come to a vertex to pick it.
+constexpr float pick_radius = 8.0f;
+
+}  // namespace
+
+int Viewer::pick(const Eigen::Vector2f& cursor, bool pinned_only) const {
+  return pick_vertex(projection_ * view_, positions_.data(),
+                     static_cast<int>(positions_.size() / 3),
+                     pinned_only ? pinned_flags_.data() : nullptr, cursor, window_size_,
+                     pick_radius);
+}
+
+Ray Viewer::ray_at(const Eigen::Vector2f& cursor) const {
+  return cursor_ray(view_, projection_, cursor, window_size_);
+}
+
+void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
+                           bool ui_wants_keyboard, const Eigen::Vector2f& window_size) {
+  window_size_ = window_size;
+  cursor_over_ui_ = ui_wants_mouse;
+  for (const InputEvent& event : events) {
+    const Eigen::Vector2f at(static_cast<float>(event.x), static_cast<float>(event.y));
+    switch (event.type) {
+      case InputEvent::Type::key_press:
+        if (!ui_wants_keyboard) apply(command_for_key(event.code));
+        break;
+      case InputEvent::Type::button_press: {
+        if (drag_.active() || mode_ != Mode::idle) break;  // one gesture at a time
+        const int pin = pick(at, /*pinned_only=*/true);
+        const int vertex = pin >= 0 ? pin : pick(at, /*pinned_only=*/false);
+        switch (gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse,
+                                  pin >= 0, vertex >= 0)) {
+          case MouseGesture::grab_pin:
+          case MouseGesture::grab_free_vertex:
+            drag_.grab(*simulation_, vertex, ray_at(at), camera_forward(camera_));
+            break;
+          case MouseGesture::toggle_pin:
+            if (simulation_->is_pinned(vertex)) {
+              simulation_->unpin(vertex);
+            } else {
+              simulation_->pin(vertex);
+            }
+            break;
+          case MouseGesture::orbit: mode_ = Mode::orbit; break;
+          case MouseGesture::pan: mode_ = Mode::pan; break;
+          case MouseGesture::none: break;
+        }
+        break;
+      }
+      case InputEvent::Type::button_release:
+        drag_.release(*simulation_);
+        mode_ = Mode::idle;
+        break;
+      case InputEvent::Type::cursor_move: {
+        const Eigen::Vector2f delta = at - cursor_;
+        if (drag_.active()) drag_.move(*simulation_, ray_at(at));
+        if (mode_ == Mode::orbit) orbit_camera(camera_, delta.x(), delta.y(), window_size_.y());
+        if (mode_ == Mode::pan) pan_camera(camera_, delta.x(), delta.y(), window_size_.y());
+        cursor_ = at;
+        break;
+      }
+      case InputEvent::Type::scroll:
+        if (!ui_wants_mouse) zoom_camera(camera_, static_cast<float>(event.y));
+        break;
+    }
+  }
+}
+
+void Viewer::apply(ViewerCommand command) {
+  switch (command) {
+    case ViewerCommand::toggle_pause: panel_.paused = !panel_.paused; break;
+    case ViewerCommand::step_once:
+      panel_.paused = true;
+      step_requested_ = true;
+      break;
+    case ViewerCommand::reset:
+      if (drag_.active()) drag_.cancel();
+      simulation_->reset();
+      break;
+    case ViewerCommand::toggle_wireframe: panel_.wireframe = !panel_.wireframe; break;
+    case ViewerCommand::toggle_points: panel_.points = !panel_.points; break;
+    case ViewerCommand::toggle_springs: panel_.springs = !panel_.springs; break;
+    case ViewerCommand::toggle_help: panel_.show_help = !panel_.show_help; break;
+    case ViewerCommand::frame_mesh: frame_on_next_render_ = true; break;
+    case ViewerCommand::quit: quit_ = true; break;
+    case ViewerCommand::none: break;
+  }
+}
+
+}  // namespace wobble

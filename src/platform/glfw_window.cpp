@@ -1,0 +1,134 @@
+#include "glfw_window.h"
+
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+#include <string>
+
+namespace wobble {
+
+namespace {
+
+std::string last_glfw_error;
+
+void remember_error(int, const char* description) { last_glfw_error = description; }
+
+GlfwWindow& owner(GLFWwindow* window) {
+  return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+}
+
+}  // namespace
+
+// The callbacks are installed before ImGui's backend, which chains to them, so every event
+// reaches both; the app decides from io.WantCaptureMouse who acts on it.
+struct GlfwCallbacks {
+  static void push(GLFWwindow* window, InputEvent event, int mods) {
+    event.control = (mods & GLFW_MOD_CONTROL) != 0;
+    event.shift = (mods & GLFW_MOD_SHIFT) != 0;
+    owner(window).events_.push_back(event);
+  }
+  static void key(GLFWwindow* window, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+    InputEvent event;
+    event.type = InputEvent::Type::key_press;
+    event.code = key;
+    push(window, event, mods);
+  }
+  static void button(GLFWwindow* window, int button, int action, int mods) {
+    InputEvent event;
+    event.type = action == GLFW_PRESS ? InputEvent::Type::button_press
+                                      : InputEvent::Type::button_release;
+    event.code = button;
+    glfwGetCursorPos(window, &event.x, &event.y);
+    push(window, event, mods);
+  }
+  static void cursor(GLFWwindow* window, double x, double y) {
+    InputEvent event;
+    event.type = InputEvent::Type::cursor_move;
+    event.x = x;
+    event.y = y;
+    push(window, event, 0);
+  }
+  static void scroll(GLFWwindow* window, double dx, double dy) {
+    InputEvent event;
+    event.type = InputEvent::Type::scroll;
+    event.x = dx;
+    event.y = dy;
+    push(window, event, 0);
+  }
+};
+
+GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
+  glfwSetErrorCallback(remember_error);
+  if (glfwInit() != GLFW_TRUE) {
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if ((display == nullptr || *display == '\0') && (wayland == nullptr || *wayland == '\0')) {
+      throw ContextError(
+          "cannot open a window: no display (DISPLAY is not set); add --headless to render "
+          "without one, or run under xvfb-run -a");
+    }
+    throw ContextError("cannot open a window (GLFW: " + last_glfw_error +
+                       "); add --headless to render without a display, or run under xvfb-run -a");
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // the same size in inches on high-DPI
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (window_ == nullptr) {
+    glfwTerminate();
+    throw ContextError("cannot create a window with OpenGL 3.3 core (GLFW: " + last_glfw_error +
+                       "); try --headless");
+  }
+  glfwSetWindowUserPointer(window_, this);
+  glfwMakeContextCurrent(window_);
+  if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+    throw ContextError("cannot load the OpenGL 3.3 functions of this window's context");
+  }
+  glfwSwapInterval(1);  // follow the display: no tearing, no spinning faster than it shows
+  glfwSetKeyCallback(window_, GlfwCallbacks::key);
+  glfwSetMouseButtonCallback(window_, GlfwCallbacks::button);
+  glfwSetCursorPosCallback(window_, GlfwCallbacks::cursor);
+  glfwSetScrollCallback(window_, GlfwCallbacks::scroll);
+}
+
+GlfwWindow::~GlfwWindow() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+
+void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+std::vector<InputEvent> GlfwWindow::poll_events() {
+  glfwPollEvents();
+  std::vector<InputEvent> events;
+  events.swap(events_);
+  return events;
+}
+
+void GlfwWindow::window_size(int& width, int& height) const {
+  glfwGetWindowSize(window_, &width, &height);
+}
+
+void GlfwWindow::framebuffer_size(int& width, int& height) const {
+  glfwGetFramebufferSize(window_, &width, &height);
+}
+
+float GlfwWindow::content_scale() const {
+  float x = 1.0f, y = 1.0f;
+  glfwGetWindowContentScale(window_, &x, &y);
+  return x > 0.0f ? x : 1.0f;
+}
+
+void GlfwWindow::swap_buffers() { glfwSwapBuffers(window_); }
+
+}  // namespace wobble

@@ -1,0 +1,42 @@
+#ifndef WOBBLE_PLATFORM_GLFW_WINDOW_H
+#define WOBBLE_PLATFORM_GLFW_WINDOW_H
+
+#include <string>
+#include <vector>
+
+#include "context_error.h"
+#include "input_event.h"
+
+struct GLFWwindow;
+
+namespace wobble {
+
+// The windowed mode's context: a resizable GLFW window with a GL 3.3 core context, current and
+// loaded through glad. Only context creation and input live here; drawing is the renderer's.
+class GlfwWindow {
+ public:
+  // Opens the window. Throws ContextError with a one-line message (no display, no GL 3.3).
+  GlfwWindow(int width, int height, const std::string& title);
+  ~GlfwWindow();
+  GlfwWindow(const GlfwWindow&) = delete;
+  GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  bool should_close() const;
+  void request_close();
+  // Wait for events (poll), then hand over what arrived since the last call.
+  std::vector<InputEvent> poll_events();
+  void window_size(int& width, int& height) const;       // in window coordinates
+  void framebuffer_size(int& width, int& height) const;  // in pixels
+  float content_scale() const;  // 1 on ordinary screens, 2 on most high-DPI ones
+  void swap_buffers();
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  std::vector<InputEvent> events_;
+  friend struct GlfwCallbacks;
+};
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,212 @@
+#include "renderer.h"
+
+#include <glad/gl.h>
+
+#include <vector>
+
+#include "shader_program.h"
+
+namespace wobble {
+
+namespace {
+
+constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2;
+
+}  // namespace
+
+struct Renderer::Resources {
+  ShaderProgram mesh{"mesh.vert", "mesh.frag"};
+  ShaderProgram line{"line.vert", "line.frag"};
+  ShaderProgram point{"point.vert", "point.frag"};
+  ShaderProgram background{"background.vert", "background.frag"};
+
+  // One position buffer feeds three vertex arrays, each with its own element buffer: the surface
+  // (with normals), the springs, and the markers (with marks).
+  GLuint positions = 0, normals = 0, marks = 0, triangle_indices = 0, spring_indices = 0;
+  GLuint surface_array = 0, spring_array = 0, point_array = 0;
+  GLuint grid_array = 0, grid_vertices = 0, empty_array = 0;
+  int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
+  SurfaceColors colors;
+
+  Resources() {
+    GLuint buffers[6];
+    glGenBuffers(6, buffers);
+    positions = buffers[0];
+    normals = buffers[1];
+    marks = buffers[2];
+    triangle_indices = buffers[3];
+    spring_indices = buffers[4];
+    grid_vertices = buffers[5];
+    GLuint arrays[5];
+    glGenVertexArrays(5, arrays);
+    surface_array = arrays[0];
+    spring_array = arrays[1];
+    point_array = arrays[2];
+    grid_array = arrays[3];
+    empty_array = arrays[4];
+
+    glBindVertexArray(surface_array);
+    attribute(positions, position_location, 3, GL_FLOAT);
+    attribute(normals, normal_location, 3, GL_FLOAT);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_indices);
+
+    glBindVertexArray(spring_array);
+    attribute(positions, position_location, 3, GL_FLOAT);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, spring_indices);
+
+    glBindVertexArray(point_array);
+    attribute(positions, position_location, 3, GL_FLOAT);
+    attribute(marks, mark_location, 1, GL_UNSIGNED_BYTE);
+
+    glBindVertexArray(grid_array);
+    attribute(grid_vertices, position_location, 3, GL_FLOAT);
+    glBindVertexArray(0);
+  }
+
+  ~Resources() {
+    const GLuint buffers[6] = {positions, normals, marks, triangle_indices, spring_indices,
+                               grid_vertices};
+    glDeleteBuffers(6, buffers);
+    const GLuint arrays[5] = {surface_array, spring_array, point_array, grid_array, empty_array};
+    glDeleteVertexArrays(5, arrays);
+  }
+
+  static void attribute(GLuint buffer, GLuint location, int size, GLenum type) {
+    glBindBuffer(GL_ARRAY_BUFFER, buffer);
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, size, type, GL_FALSE, 0, nullptr);
+  }
+};
+
+Renderer::Renderer() : resources_(std::make_unique<Resources>()) { set_ground(GroundGrid()); }
+
+Renderer::~Renderer() = default;
+
+void Renderer::set_topology(const MeshTopology& topology) {
+  Resources& r = *resources_;
+  r.vertex_count = topology.vertex_count;
+  r.triangle_count = topology.triangle_count;
+  r.spring_count = topology.spring_count;
+  glBindVertexArray(0);  // element buffers are vertex-array state: change none by accident
+  glBindBuffer(GL_ARRAY_BUFFER, r.positions);
+  glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, r.normals);
+  glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, r.marks);
+  glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
+  glBindVertexArray(r.surface_array);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.triangle_count,
+               topology.triangles, GL_STATIC_DRAW);
+  glBindVertexArray(r.spring_array);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 2 * sizeof(unsigned) * r.spring_count, topology.springs,
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+}
+
+void Renderer::set_ground(const GroundGrid& ground) {
+  std::vector<float> vertices;
+  const int lines_per_side = static_cast<int>(ground.half_extent / ground.spacing + 0.5f);
+  const float extent = lines_per_side * ground.spacing;
+  for (int i = -lines_per_side; i <= lines_per_side; ++i) {
+    const float offset = i * ground.spacing;
+    const float segments[12] = {
+        ground.center_x + offset, ground.height, ground.center_z - extent,
+        ground.center_x + offset, ground.height, ground.center_z + extent,
+        ground.center_x - extent, ground.height, ground.center_z + offset,
+        ground.center_x + extent, ground.height, ground.center_z + offset,
+    };
+    vertices.insert(vertices.end(), segments, segments + 12);
+  }
+  Resources& r = *resources_;
+  r.grid_vertex_count = static_cast<int>(vertices.size() / 3);
+  glBindBuffer(GL_ARRAY_BUFFER, r.grid_vertices);
+  glBufferData(GL_ARRAY_BUFFER, sizeof(float) * vertices.size(), vertices.data(), GL_STATIC_DRAW);
+}
+
+void Renderer::set_colors(const SurfaceColors& colors) { resources_->colors = colors; }
+
+void Renderer::update(const MeshFrame& frame) {
+  const Resources& r = *resources_;
+  glBindBuffer(GL_ARRAY_BUFFER, r.positions);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.positions);
+  glBindBuffer(GL_ARRAY_BUFFER, r.normals);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.normals);
+  glBindBuffer(GL_ARRAY_BUFFER, r.marks);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, r.vertex_count, frame.marks);
+}
+
+void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
+                    const Eigen::Vector3f& eye, const ViewLayers& layers, int width, int height,
+                    float pixel_ratio) {
+  const Resources& r = *resources_;
+  const Eigen::Matrix4f view_projection = projection * view;
+  glViewport(0, 0, width, height);
+  glDisable(GL_CULL_FACE);  // both sides of a cloth are visible
+  glDisable(GL_BLEND);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  glDisable(GL_DEPTH_TEST);
+  r.background.use();
+  glUniform3f(r.background.uniform("top_color"), 0.33f, 0.36f, 0.41f);
+  glUniform3f(r.background.uniform("bottom_color"), 0.11f, 0.12f, 0.14f);
+  glBindVertexArray(r.empty_array);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+
+  const auto lines = [&](const float rgba[4]) {
+    r.line.use();
+    glUniformMatrix4fv(r.line.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
+    glUniform4fv(r.line.uniform("line_color"), 1, rgba);
+  };
+  if (layers.ground) {
+    const float grid_color[4] = {0.42f, 0.45f, 0.50f, 1.0f};
+    lines(grid_color);
+    glBindVertexArray(r.grid_array);
+    glDrawArrays(GL_LINES, 0, r.grid_vertex_count);
+  }
+
+  if (layers.surface && r.triangle_count > 0) {
+    r.mesh.use();
+    glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
+    glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
+    glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.front.data());
+    glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.back.data());
+    // Push the surface back a little so edges drawn on it win the depth test.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glBindVertexArray(r.surface_array);
+    glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+  }
+  if (layers.wireframe && r.triangle_count > 0) {
+    const float wire_color[4] = {0.08f, 0.08f, 0.10f, 1.0f};
+    lines(wire_color);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glBindVertexArray(r.surface_array);
+    glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+  if (layers.springs && r.spring_count > 0) {
+    const float spring_color[4] = {0.55f, 0.95f, 0.85f, 1.0f};
+    lines(spring_color);
+    glBindVertexArray(r.spring_array);
+    glDrawElements(GL_LINES, 2 * r.spring_count, GL_UNSIGNED_INT, nullptr);
+  }
+
+  if (r.vertex_count > 0) {
+    r.point.use();
+    glUniformMatrix4fv(r.point.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
+    glUniform1i(r.point.uniform("show_free_vertices"), layers.points ? 1 : 0);
+    glUniform1f(r.point.uniform("pixel_ratio"), pixel_ratio);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glBindVertexArray(r.point_array);
+    glDrawArrays(GL_POINTS, 0, r.vertex_count);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace wobble

@@ -1,0 +1,76 @@
+#ifndef WOBBLE_RENDER_RENDERER_H
+#define WOBBLE_RENDER_RENDERER_H
+
+#include <Eigen/Core>
+#include <memory>
+
+namespace wobble {
+
+// What connects the vertices; changes only when a scene is loaded. Plain arrays, row-major.
+struct MeshTopology {
+  int vertex_count = 0;
+  const unsigned* triangles = nullptr;  // #F by 3 vertex indices, counter-clockwise from the front
+  int triangle_count = 0;
+  const unsigned* springs = nullptr;  // #E by 2 vertex indices
+  int spring_count = 0;
+};
+
+// Where the vertices are this frame. Plain arrays of topology.vertex_count rows.
+struct MeshFrame {
+  const float* positions = nullptr;       // #V by 3 (m)
+  const float* normals = nullptr;         // #V by 3 unit normals
+  const unsigned char* marks = nullptr;   // #V: 0 free, 1 pinned, 2 highlighted
+};
+
+// Which layers to draw.
+struct ViewLayers {
+  bool surface = true;     // shaded triangles, two-sided
+  bool wireframe = false;  // triangle edges
+  bool springs = false;    // every spring as a line, interior ones included
+  bool points = false;     // every vertex as a dot (pins are always marked)
+  bool ground = true;      // grid on the ground plane
+};
+
+// The square grid on the ground plane y = height, centred under (center_x, center_z).
+struct GroundGrid {
+  float height = 0.0f;
+  float center_x = 0.0f, center_z = 0.0f;
+  float half_extent = 2.0f;  // m
+  float spacing = 0.25f;     // m between lines
+};
+
+// Colours of the surface, linear RGB in [0, 1].
+struct SurfaceColors {
+  Eigen::Vector3f front{0.95f, 0.55f, 0.22f};
+  Eigen::Vector3f back{0.26f, 0.55f, 0.85f};
+};
+
+// Draws one frame into whatever framebuffer is bound: a window's or an offscreen one. It never
+// knows which, and takes plain arrays, not simulation types. Needs a current GL 3.3 core context
+// with glad loaded, for its whole life.
+class Renderer {
+ public:
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  void set_topology(const MeshTopology& topology);
+  void set_ground(const GroundGrid& ground);
+  void set_colors(const SurfaceColors& colors);
+  // Upload this frame's vertices (topology.vertex_count of each array).
+  void update(const MeshFrame& frame);
+  // Clear and draw the scene in a viewport of width × height pixels. `pixel_ratio` scales point
+  // sizes on high-DPI framebuffers.
+  void draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
+            const Eigen::Vector3f& eye, const ViewLayers& layers, int width, int height,
+            float pixel_ratio = 1.0f);
+
+ private:
+  struct Resources;
+  std::unique_ptr<Resources> resources_;
+};
+
+}  // namespace wobble
+
+#endif

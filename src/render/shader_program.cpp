@@ -1,0 +1,74 @@
+#include "shader_program.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "shader_sources.h"
+
+namespace wobble {
+
+namespace {
+
+const char* find_source(const std::string& file_name) {
+  for (int i = 0; i < shader_source_count; ++i) {
+    if (file_name == shader_sources[i].file_name) return shader_sources[i].text;
+  }
+  throw std::runtime_error("shaders/" + file_name + ": no such shader was built in");
+}
+
+std::string one_line_log(std::string log) {
+  for (char& c : log) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!log.empty() && log.back() == ' ')
+    log.pop_back();
+  return log;
+}
+
+GLuint compile(GLenum type, const std::string& file_name) {
+  const char* text = find_source(file_name);
+  const GLuint shader = glCreateShader(type);
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
+    glDeleteShader(shader);
+    throw std::runtime_error("shaders/" + file_name + ": does not compile: " + one_line_log(log));
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& fragment_file) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertex_file);
+  GLuint fragment = 0;
+  try {
+    fragment = compile(GL_FRAGMENT_SHADER, fragment_file);
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, vertex);
+  glAttachShader(program_, fragment);
+  glLinkProgram(program_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    char log[2048] = {};
+    glGetProgramInfoLog(program_, sizeof log - 1, nullptr, log);
+    glDeleteProgram(program_);
+    throw std::runtime_error("shaders/" + vertex_file + " + " + fragment_file +
+                             ": do not link: " + one_line_log(log));
+  }
+}
+
+ShaderProgram::~ShaderProgram() { glDeleteProgram(program_); }
+
+}  // namespace wobble

@@ -1,0 +1,117 @@
+#include "control_panel.h"
+
+#include <imgui.h>
+
+namespace wobble {
+
+namespace {
+
+// Rows of label and value, aligned.
+void stat_row(const char* label, const char* format, double value) {
+  ImGui::TextUnformatted(label);
+  ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
+  ImGui::Text(format, value);
+}
+
+// A titled divider (ImGui 1.86 has no SeparatorText).
+void section(const char* title) {
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextDisabled("%s", title);
+}
+
+}  // namespace
+
+PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
+                                 const std::vector<std::string>& scene_names, float ui_scale) {
+  PanelRequests requests;
+  ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(300.0f * ui_scale, 0.0f), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Wobble");
+
+  if (!scene_names.empty()) {
+    const char* current = scene_names[settings.scene].c_str();
+    if (ImGui::BeginCombo("scene", current)) {
+      for (int i = 0; i < static_cast<int>(scene_names.size()); ++i) {
+        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene) &&
+            i != settings.scene) {
+          settings.scene = i;
+          requests.scene_changed = true;
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+
+  if (ImGui::Button(settings.paused ? "Play" : "Pause")) settings.paused = !settings.paused;
+  ImGui::SameLine();
+  requests.step_once = ImGui::Button("Step");
+  ImGui::SameLine();
+  requests.reset = ImGui::Button("Reset");
+  ImGui::SameLine();
+  requests.frame_mesh = ImGui::Button("Frame");
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) settings.show_help = !settings.show_help;
+
+  section("simulation");
+  // Stiffness spans six decades, so its slider is logarithmic.
+  ImGui::SliderFloat("k (N/m)", &settings.k, PanelSettings::min_k, PanelSettings::max_k, "%.1f",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("dt (s)", &settings.dt, PanelSettings::min_dt, PanelSettings::max_dt,
+                     "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderInt("iterations", &settings.iterations, PanelSettings::min_iterations,
+                   PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity,
+                     "%.2f", ImGuiSliderFlags_AlwaysClamp);
+
+  section("view");
+  ImGui::Checkbox("surface", &settings.surface);
+  ImGui::SameLine();
+  ImGui::Checkbox("wireframe", &settings.wireframe);
+  ImGui::SameLine();
+  ImGui::Checkbox("ground", &settings.ground);
+  ImGui::Checkbox("springs", &settings.springs);
+  ImGui::SameLine();
+  ImGui::Checkbox("points", &settings.points);
+
+  section("stats");
+  if (stats.show_timings) {
+    stat_row("fps", "%.1f", stats.fps);
+    stat_row("step", "%.2f ms", stats.step_ms);
+    stat_row("  local", "%.2f ms", stats.local_ms);
+    stat_row("  global", "%.2f ms", stats.global_ms);
+  } else {
+    ImGui::TextDisabled("timings hidden: headless images are reproducible");
+  }
+  stat_row("simulated", "%.2f s", stats.simulated_seconds);
+  stat_row("vertices", "%.0f", stats.vertices);
+  stat_row("springs", "%.0f", stats.springs);
+  stat_row("pins", "%.0f", stats.pins);
+  ImGui::End();
+  return requests;
+}
+
+void draw_help_overlay(const std::vector<std::pair<std::string, std::string>>& bindings,
+                       bool& open) {
+  if (!open) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.5f * io.DisplaySize.y),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(0.9f);
+  ImGui::Begin("Keys and mouse", &open,
+               ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  if (ImGui::BeginTable("bindings", 2, ImGuiTableFlags_RowBg)) {
+    for (const auto& [input, action] : bindings) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(input.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(action.c_str());
+    }
+    ImGui::EndTable();
+  }
+  ImGui::End();
+}
+
+}  // namespace wobble

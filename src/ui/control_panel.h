@@ -1,0 +1,58 @@
+#ifndef WOBBLE_UI_CONTROL_PANEL_H
+#define WOBBLE_UI_CONTROL_PANEL_H
+
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+// What the panel edits. The app compares it with the simulation after each frame's UI and applies
+// what changed, so the panel itself touches neither the simulation nor GL.
+struct PanelSettings {
+  float k = 400.0f;             // N/m
+  float dt = 1.0f / 60.0f;      // s
+  int iterations = 50;          //
+  float gravity = 9.81f;        // m/s², downwards
+  bool paused = false;
+  bool surface = true, wireframe = false, springs = false, points = false, ground = true;
+  int scene = 0;                // index into the scene names
+  bool show_help = false;
+
+  static constexpr float min_k = 1.0f, max_k = 1e6f;
+  static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
+  static constexpr int min_iterations = 1, max_iterations = 100;
+  static constexpr float max_gravity = 30.0f;
+};
+
+// Numbers the panel shows.
+struct PanelStats {
+  // Timings come from the wall clock. Headless images leave them out so that two runs give the
+  // same pixels.
+  bool show_timings = true;
+  float fps = 0.0f;
+  float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
+  int vertices = 0, springs = 0, pins = 0;
+  long steps = 0;
+  double simulated_seconds = 0.0;
+};
+
+// Buttons pressed this frame.
+struct PanelRequests {
+  bool step_once = false;
+  bool reset = false;
+  bool frame_mesh = false;
+  bool scene_changed = false;  // settings.scene now names another scene
+};
+
+// The "Wobble" panel: scene picker, play controls, sliders, view toggles and stats. Call between
+// ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
+PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
+                                 const std::vector<std::string>& scene_names, float ui_scale);
+
+// A window listing {input, action} pairs, open while `open` is true (its close button clears it).
+void draw_help_overlay(const std::vector<std::pair<std::string, std::string>>& bindings,
+                       bool& open);
+
+}  // namespace wobble
+
+#endif
