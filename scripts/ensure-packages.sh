@@ -8,10 +8,14 @@ run_packages=(
   cmake ninja-build g++ pkg-config      # toolchain
   libeigen3-dev                         # simulation core
   libcli11-dev nlohmann-json3-dev       # command line
+  libglfw3-dev libimgui-dev             # window and panel
+  libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL, and Mesa's renderer (llvmpipe)
+  libstb-dev                            # PNG output
 )
-# What the test suite needs on top.
+# What the test suite needs on top: the window smoke test runs under a virtual X server.
 test_packages=(
   libgtest-dev
+  xvfb xauth
 )
 
 # ensure_packages run|test

@@ -1,14 +1,10 @@
 #!/usr/bin/env bash
-# Install what is missing, build, and run Wobble on a built-in scene.
-# Usage: scripts/run.sh [wobble arguments]   (default: the cloth scene)
+# Install what is missing, build, and open the viewer on a built-in scene.
+# Usage: scripts/run.sh [wobble arguments]   (default: the cloth scene in a window)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
 ensure_packages run
 build_wobble -DWOBBLE_BUILD_TESTS=OFF
-if [ $# -eq 0 ]; then
-  # The interactive viewer is not built yet: simulate the cloth for 2 s and write the result.
-  set -- cloth --headless --frames 120 --stats --export-obj build/cloth.obj
-  echo "wobble: writing the cloth after 120 frames to build/cloth.obj" >&2
-fi
+[ $# -eq 0 ] && set -- cloth
 exec build/src/app/wobble "$@"

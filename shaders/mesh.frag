@@ -18,11 +18,12 @@ void main() {
     base = back_color;
   }
   vec3 to_eye = normalize(eye - world_position);
-  // A key light just above the viewer keeps the lit side facing the camera while orbiting.
-  vec3 light = normalize(to_eye + vec3(0.0, 0.8, 0.0));
-  float diffuse = max(dot(n, light), 0.0);
+  // A key light just above the viewer keeps the lit side facing the camera while orbiting. It
+  // wraps a little past 90°, so folds turning away from it darken gradually instead of going flat.
+  vec3 light = normalize(to_eye + vec3(0.0, 0.5, 0.0));
+  float diffuse = max(0.75 * dot(n, light) + 0.25, 0.0);
   float specular = pow(max(dot(n, normalize(light + to_eye)), 0.0), 48.0);
   // Sky above, ground bounce below.
-  vec3 ambient = mix(vec3(0.22, 0.20, 0.18), vec3(0.36, 0.40, 0.46), 0.5 + 0.5 * n.y);
-  color = vec4(base * (ambient + 0.75 * diffuse) + vec3(0.18 * specular), 1.0);
+  vec3 ambient = mix(vec3(0.26, 0.24, 0.22), vec3(0.40, 0.44, 0.50), 0.5 + 0.5 * n.y);
+  color = vec4(base * (ambient + 0.7 * diffuse) + vec3(0.15 * specular), 1.0);
 }

@@ -8,7 +8,7 @@ void main() {
   float radius2 = dot(offset, offset);
   if (radius2 > 1.0) discard;
   vec3 fill = point_mark > 1.5 ? vec3(1.0, 0.86, 0.2)
-                               : (point_mark > 0.5 ? vec3(0.92, 0.16, 0.22) : vec3(0.93));
+                               : (point_mark > 0.5 ? vec3(0.92, 0.16, 0.22) : vec3(0.92));
   // A dark rim keeps pins readable on any surface colour.
   bool rim = point_mark > 0.5 && radius2 > 0.5;
   color = vec4(rim ? vec3(0.06) : fill, 1.0);

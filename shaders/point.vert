@@ -18,5 +18,5 @@ void main() {
   if (mark < 0.5 && !show_free_vertices) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: the point is dropped
   }
-  gl_PointSize = pixel_ratio * (mark > 1.5 ? 15.0 : (mark > 0.5 ? 10.0 : 4.0));
+  gl_PointSize = pixel_ratio * (mark > 1.5 ? 15.0 : (mark > 0.5 ? 10.0 : 3.0));
 }

@@ -69,8 +69,8 @@ long whole_number(const char* option, const std::string& text, long limit) {
 double number_between(const char* option, const std::string& text, double low, double high) {
   const std::optional<double> value = parse_number<double>(text);
   if (!value || !(*value >= low && *value <= high)) {
-    throw InputError(std::string(option) + ": expected a number from " + number_text(low) +
-                     " to " + number_text(high) + ", got '" + text + "'");
+    throw InputError(std::string(option) + ": expected a number from " + number_text(low) + " to " +
+                     number_text(high) + ", got '" + text + "'");
   }
   return *value;
 }
@@ -145,7 +145,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (k) command.k = positive_number("--k", *k, CommandLine::max_k);
   if (dt) command.dt = positive_number("--dt", *dt, CommandLine::max_dt);
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
-  if (width) command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
+  if (width)
+    command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
   if (height) {
     command.height =
         static_cast<int>(whole_number("--height", *height, CommandLine::max_image_side));

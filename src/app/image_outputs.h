@@ -15,8 +15,8 @@ class ImageOutputs {
   // Checks the paths before any work is done (InputError): the screenshot must end in .png and
   // its folder must be writable; the record folder is created if its parent exists.
   // `total_frames` (if known) lets long recordings report progress on `progress`.
-  ImageOutputs(std::string screenshot, std::string record_folder,
-               std::optional<long> total_frames, std::ostream& progress);
+  ImageOutputs(std::string screenshot, std::string record_folder, std::optional<long> total_frames,
+               std::ostream& progress);
 
   bool any() const { return !screenshot_.empty() || !record_folder_.empty(); }
   // Whether a frame (the last one, or not) needs its pixels read back.

@@ -7,16 +7,26 @@ namespace wobble {
 
 ViewerCommand command_for_key(int key) {
   switch (key) {
-    case GLFW_KEY_SPACE: return ViewerCommand::toggle_pause;
-    case GLFW_KEY_S: return ViewerCommand::step_once;
-    case GLFW_KEY_R: return ViewerCommand::reset;
-    case GLFW_KEY_W: return ViewerCommand::toggle_wireframe;
-    case GLFW_KEY_P: return ViewerCommand::toggle_points;
-    case GLFW_KEY_L: return ViewerCommand::toggle_springs;
-    case GLFW_KEY_H: return ViewerCommand::toggle_help;
-    case GLFW_KEY_F: return ViewerCommand::frame_mesh;
-    case GLFW_KEY_ESCAPE: return ViewerCommand::quit;
-    default: return ViewerCommand::none;
+    case GLFW_KEY_SPACE:
+      return ViewerCommand::toggle_pause;
+    case GLFW_KEY_S:
+      return ViewerCommand::step_once;
+    case GLFW_KEY_R:
+      return ViewerCommand::reset;
+    case GLFW_KEY_W:
+      return ViewerCommand::toggle_wireframe;
+    case GLFW_KEY_P:
+      return ViewerCommand::toggle_points;
+    case GLFW_KEY_L:
+      return ViewerCommand::toggle_springs;
+    case GLFW_KEY_H:
+      return ViewerCommand::toggle_help;
+    case GLFW_KEY_F:
+      return ViewerCommand::frame_mesh;
+    case GLFW_KEY_ESCAPE:
+      return ViewerCommand::quit;
+    default:
+      return ViewerCommand::none;
   }
 }
 

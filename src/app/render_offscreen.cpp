@@ -41,8 +41,8 @@ struct RendererAttachment {
 
 }  // namespace
 
-RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options,
-                           ImageOutputs* outputs, OffscreenReport* report) {
+RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, ImageOutputs* outputs,
+                           OffscreenReport* report) {
   EglContext context;
   OffscreenTarget target(options.width, options.height);
   RendererAttachment attachment(viewer);
@@ -50,8 +50,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options,
   if (options.ui) ui = std::make_unique<HeadlessUi>(options.width, options.height);
   if (report) report->context = context.description();
 
-  const Eigen::Vector2f size(static_cast<float>(options.width),
-                             static_cast<float>(options.height));
+  const Eigen::Vector2f size(static_cast<float>(options.width), static_cast<float>(options.height));
   PanelStats timings;
   timings.show_timings = false;  // the wall clock stays out of the pixels
   RgbaImage image;

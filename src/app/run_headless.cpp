@@ -6,13 +6,13 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/atomic_file.h"
 #include "image_outputs.h"
+#include "io/atomic_file.h"
 #include "io/write_obj.h"
 #include "render_offscreen.h"
-#include "viewer.h"
 #include "sim/builtin_scenes.h"
 #include "sim/simulation.h"
+#include "viewer.h"
 
 namespace wobble {
 
@@ -27,10 +27,10 @@ double median(std::vector<double> values) {
   return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
 }
 
-nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& scene,
-                                 long frames, const std::vector<double>& step_ms,
-                                 const std::vector<double>& local_ms,
-                                 const std::vector<double>& global_ms) {
+nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& scene, long frames,
+                                  const std::vector<double>& step_ms,
+                                  const std::vector<double>& local_ms,
+                                  const std::vector<double>& global_ms) {
   const SimulationParams& params = simulation.params();
   return {
       {"scene", scene.name},
@@ -55,8 +55,7 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   ImageOutputs outputs(command.screenshot, command.record, frames, progress);
   if (!command.export_obj.empty()) check_output_path(command.export_obj);
-  Viewer viewer(make_builtin_scene(command.scene), viewer_settings(command),
-                builtin_scene_names());
+  Viewer viewer(make_builtin_scene(command.scene), viewer_settings(command), builtin_scene_names());
 
   OffscreenOptions options;
   options.width = command.width;

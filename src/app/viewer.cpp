@@ -18,7 +18,7 @@ constexpr float default_pitch = 20.0f * degrees;
 // Cloth is orange in front and blue behind; a solid shows only its outside.
 SurfaceColors colors_for(const Scene& scene) {
   SurfaceColors colors;
-  if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.42f, 0.80f, 0.30f);
+  if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.45f, 0.76f, 0.34f);
   return colors;
 }
 
@@ -59,9 +59,9 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
   camera_.yaw = settings.camera_yaw_degrees.value_or(default_yaw / degrees) * degrees;
-  camera_.pitch = std::clamp(settings.camera_pitch_degrees.value_or(default_pitch / degrees) *
-                                 degrees,
-                             -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+  camera_.pitch =
+      std::clamp(settings.camera_pitch_degrees.value_or(default_pitch / degrees) * degrees,
+                 -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
   load(std::move(scene));
 }
 
@@ -75,8 +75,8 @@ void Viewer::load(Scene scene) {
                                              scene_.initial_velocity);
   const auto found = std::find(scene_names_.begin(), scene_names_.end(), scene_.name);
   if (found == scene_names_.end()) scene_names_.push_back(scene_.name);
-  panel_.scene = static_cast<int>(
-      std::find(scene_names_.begin(), scene_names_.end(), scene_.name) - scene_names_.begin());
+  panel_.scene = static_cast<int>(std::find(scene_names_.begin(), scene_names_.end(), scene_.name) -
+                                  scene_names_.begin());
   panel_.k = static_cast<float>(scene_.params.k);
   panel_.dt = static_cast<float>(scene_.params.dt);
   panel_.iterations = scene_.params.iterations;
@@ -100,6 +100,7 @@ void Viewer::load(Scene scene) {
   pinned_flags_.resize(n);
   update_vertex_arrays();
   frame_on_next_render_ = true;
+  framing_new_scene_ = true;
   if (renderer_) attach_renderer();
 }
 
@@ -124,7 +125,8 @@ void Viewer::attach_renderer() {
   ground.center_x = 0.5f * (lower.x() + upper.x());
   ground.center_z = 0.5f * (lower.z() + upper.z());
   ground.spacing = 0.25f * std::pow(10.0f, std::round(std::log10(size)));
-  ground.half_extent = 8.0f * ground.spacing * std::max(1.0f, std::ceil(size / (4 * ground.spacing)));
+  ground.half_extent =
+      8.0f * ground.spacing * std::max(1.0f, std::ceil(size / (4 * ground.spacing)));
   renderer_->set_ground(ground);
 }
 
@@ -200,10 +202,17 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   if (frame_on_next_render_) {
     Eigen::Vector3f lower, upper;
     bounds(positions_.data(), n, lower, upper);
-    // A fresh scene is framed with the ground below it, where hanging cloth will fall.
-    if (simulation_->steps_taken() == 0) lower.y() = std::min(lower.y(), 0.0f);
+    if (framing_new_scene_) {
+      // A fresh scene is framed with room to move: down to the ground, where hanging cloth
+      // falls, and a quarter of its size to every side, where it swings.
+      const float room = 0.25f * (upper - lower).maxCoeff();
+      lower -= Eigen::Vector3f(room, 0.0f, room);
+      upper += Eigen::Vector3f(room, 0.0f, room);
+      lower.y() = std::min(lower.y(), 0.0f);
+    }
     frame_box(camera_, lower, upper, aspect);
     frame_on_next_render_ = false;
+    framing_new_scene_ = false;
   }
   view_ = view_matrix(camera_);
   projection_ = projection_matrix(camera_, aspect);

@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "command_line.h"
+#include "input_mapping.h"
 #include "platform/input_event.h"
 #include "render/camera.h"
 #include "render/renderer.h"
-#include "command_line.h"
 #include "sim/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "ui/control_panel.h"
-#include "input_mapping.h"
 #include "vertex_drag.h"
 
 namespace wobble {
@@ -79,6 +79,7 @@ class Viewer {
   PanelSettings panel_;
   OrbitCamera camera_;
   bool frame_on_next_render_ = true;
+  bool framing_new_scene_ = true;  // frame with room for the motion to come
   bool quit_ = false;
   bool step_requested_ = false;
 

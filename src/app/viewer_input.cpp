@@ -11,10 +11,9 @@ constexpr float pick_radius = 8.0f;
 }  // namespace
 
 int Viewer::pick(const Eigen::Vector2f& cursor, bool pinned_only) const {
-  return pick_vertex(projection_ * view_, positions_.data(),
-                     static_cast<int>(positions_.size() / 3),
-                     pinned_only ? pinned_flags_.data() : nullptr, cursor, window_size_,
-                     pick_radius);
+  return pick_vertex(
+      projection_ * view_, positions_.data(), static_cast<int>(positions_.size() / 3),
+      pinned_only ? pinned_flags_.data() : nullptr, cursor, window_size_, pick_radius);
 }
 
 Ray Viewer::ray_at(const Eigen::Vector2f& cursor) const {
@@ -35,8 +34,8 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         if (drag_.active() || mode_ != Mode::idle) break;  // one gesture at a time
         const int pin = pick(at, /*pinned_only=*/true);
         const int vertex = pin >= 0 ? pin : pick(at, /*pinned_only=*/false);
-        switch (gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse,
-                                  pin >= 0, vertex >= 0)) {
+        switch (gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse, pin >= 0,
+                                  vertex >= 0)) {
           case MouseGesture::grab_pin:
           case MouseGesture::grab_free_vertex:
             drag_.grab(*simulation_, vertex, ray_at(at), camera_forward(camera_));
@@ -48,9 +47,14 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
               simulation_->pin(vertex);
             }
             break;
-          case MouseGesture::orbit: mode_ = Mode::orbit; break;
-          case MouseGesture::pan: mode_ = Mode::pan; break;
-          case MouseGesture::none: break;
+          case MouseGesture::orbit:
+            mode_ = Mode::orbit;
+            break;
+          case MouseGesture::pan:
+            mode_ = Mode::pan;
+            break;
+          case MouseGesture::none:
+            break;
         }
         break;
       }
@@ -75,7 +79,9 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
 
 void Viewer::apply(ViewerCommand command) {
   switch (command) {
-    case ViewerCommand::toggle_pause: panel_.paused = !panel_.paused; break;
+    case ViewerCommand::toggle_pause:
+      panel_.paused = !panel_.paused;
+      break;
     case ViewerCommand::step_once:
       panel_.paused = true;
       step_requested_ = true;
@@ -84,13 +90,26 @@ void Viewer::apply(ViewerCommand command) {
       if (drag_.active()) drag_.cancel();
       simulation_->reset();
       break;
-    case ViewerCommand::toggle_wireframe: panel_.wireframe = !panel_.wireframe; break;
-    case ViewerCommand::toggle_points: panel_.points = !panel_.points; break;
-    case ViewerCommand::toggle_springs: panel_.springs = !panel_.springs; break;
-    case ViewerCommand::toggle_help: panel_.show_help = !panel_.show_help; break;
-    case ViewerCommand::frame_mesh: frame_on_next_render_ = true; break;
-    case ViewerCommand::quit: quit_ = true; break;
-    case ViewerCommand::none: break;
+    case ViewerCommand::toggle_wireframe:
+      panel_.wireframe = !panel_.wireframe;
+      break;
+    case ViewerCommand::toggle_points:
+      panel_.points = !panel_.points;
+      break;
+    case ViewerCommand::toggle_springs:
+      panel_.springs = !panel_.springs;
+      break;
+    case ViewerCommand::toggle_help:
+      panel_.show_help = !panel_.show_help;
+      break;
+    case ViewerCommand::frame_mesh:
+      frame_on_next_render_ = true;
+      break;
+    case ViewerCommand::quit:
+      quit_ = true;
+      break;
+    case ViewerCommand::none:
+      break;
   }
 }
 

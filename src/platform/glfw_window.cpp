@@ -13,7 +13,9 @@ namespace {
 
 std::string last_glfw_error;
 
-void remember_error(int, const char* description) { last_glfw_error = description; }
+void remember_error(int, const char* description) {
+  last_glfw_error = description;
+}
 
 GlfwWindow& owner(GLFWwindow* window) {
   return *static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
@@ -38,8 +40,8 @@ struct GlfwCallbacks {
   }
   static void button(GLFWwindow* window, int button, int action, int mods) {
     InputEvent event;
-    event.type = action == GLFW_PRESS ? InputEvent::Type::button_press
-                                      : InputEvent::Type::button_release;
+    event.type =
+        action == GLFW_PRESS ? InputEvent::Type::button_press : InputEvent::Type::button_release;
     event.code = button;
     glfwGetCursorPos(window, &event.x, &event.y);
     push(window, event, mods);
@@ -104,9 +106,13 @@ GlfwWindow::~GlfwWindow() {
   glfwTerminate();
 }
 
-bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
+bool GlfwWindow::should_close() const {
+  return glfwWindowShouldClose(window_) == GLFW_TRUE;
+}
 
-void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void GlfwWindow::request_close() {
+  glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
 
 std::vector<InputEvent> GlfwWindow::poll_events() {
   glfwPollEvents();
@@ -129,6 +135,8 @@ float GlfwWindow::content_scale() const {
   return x > 0.0f ? x : 1.0f;
 }
 
-void GlfwWindow::swap_buffers() { glfwSwapBuffers(window_); }
+void GlfwWindow::swap_buffers() {
+  glfwSwapBuffers(window_);
+}
 
 }  // namespace wobble

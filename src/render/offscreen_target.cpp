@@ -27,9 +27,9 @@ OffscreenTarget::OffscreenTarget(int width, int height, int samples)
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (width < 1 || height < 1 || width > max_size || height > max_size) {
-    throw std::runtime_error("an image of " + std::to_string(width) + "x" +
-                             std::to_string(height) + " is beyond this GL driver's limit of " +
-                             std::to_string(max_size) + " pixels a side");
+    throw std::runtime_error("an image of " + std::to_string(width) + "x" + std::to_string(height) +
+                             " is beyond this GL driver's limit of " + std::to_string(max_size) +
+                             " pixels a side");
   }
   samples = std::min(samples, static_cast<int>(max_samples));
 
@@ -64,7 +64,9 @@ OffscreenTarget::~OffscreenTarget() {
   glDeleteRenderbuffers(3, renderbuffers_);
 }
 
-void OffscreenTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, multisampled_); }
+void OffscreenTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, multisampled_);
+}
 
 void OffscreenTarget::read_rgba(std::vector<unsigned char>& rgba) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_);

@@ -64,8 +64,8 @@ struct Renderer::Resources {
   }
 
   ~Resources() {
-    const GLuint buffers[6] = {positions, normals, marks, triangle_indices, spring_indices,
-                               grid_vertices};
+    const GLuint buffers[6] = {positions,        normals,        marks,
+                               triangle_indices, spring_indices, grid_vertices};
     glDeleteBuffers(6, buffers);
     const GLuint arrays[5] = {surface_array, spring_array, point_array, grid_array, empty_array};
     glDeleteVertexArrays(5, arrays);
@@ -78,7 +78,9 @@ struct Renderer::Resources {
   }
 };
 
-Renderer::Renderer() : resources_(std::make_unique<Resources>()) { set_ground(GroundGrid()); }
+Renderer::Renderer() : resources_(std::make_unique<Resources>()) {
+  set_ground(GroundGrid());
+}
 
 Renderer::~Renderer() = default;
 
@@ -95,8 +97,8 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBindBuffer(GL_ARRAY_BUFFER, r.marks);
   glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
   glBindVertexArray(r.surface_array);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.triangle_count,
-               topology.triangles, GL_STATIC_DRAW);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.triangle_count, topology.triangles,
+               GL_STATIC_DRAW);
   glBindVertexArray(r.spring_array);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, 2 * sizeof(unsigned) * r.spring_count, topology.springs,
                GL_STATIC_DRAW);
@@ -123,7 +125,9 @@ void Renderer::set_ground(const GroundGrid& ground) {
   glBufferData(GL_ARRAY_BUFFER, sizeof(float) * vertices.size(), vertices.data(), GL_STATIC_DRAW);
 }
 
-void Renderer::set_colors(const SurfaceColors& colors) { resources_->colors = colors; }
+void Renderer::set_colors(const SurfaceColors& colors) {
+  resources_->colors = colors;
+}
 
 void Renderer::update(const MeshFrame& frame) {
   const Resources& r = *resources_;
@@ -180,8 +184,11 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
+  // Edges and springs are blended, so the shading still shows through a dense mesh.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   if (layers.wireframe && r.triangle_count > 0) {
-    const float wire_color[4] = {0.08f, 0.08f, 0.10f, 1.0f};
+    const float wire_color[4] = {0.05f, 0.05f, 0.07f, 0.6f};
     lines(wire_color);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glBindVertexArray(r.surface_array);
@@ -189,11 +196,12 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   if (layers.springs && r.spring_count > 0) {
-    const float spring_color[4] = {0.55f, 0.95f, 0.85f, 1.0f};
+    const float spring_color[4] = {0.55f, 0.95f, 0.85f, 0.45f};
     lines(spring_color);
     glBindVertexArray(r.spring_array);
     glDrawElements(GL_LINES, 2 * r.spring_count, GL_UNSIGNED_INT, nullptr);
   }
+  glDisable(GL_BLEND);
 
   if (r.vertex_count > 0) {
     r.point.use();

@@ -17,9 +17,9 @@ struct MeshTopology {
 
 // Where the vertices are this frame. Plain arrays of topology.vertex_count rows.
 struct MeshFrame {
-  const float* positions = nullptr;       // #V by 3 (m)
-  const float* normals = nullptr;         // #V by 3 unit normals
-  const unsigned char* marks = nullptr;   // #V: 0 free, 1 pinned, 2 highlighted
+  const float* positions = nullptr;      // #V by 3 (m)
+  const float* normals = nullptr;        // #V by 3 unit normals
+  const unsigned char* marks = nullptr;  // #V: 0 free, 1 pinned, 2 highlighted
 };
 
 // Which layers to draw.

@@ -69,6 +69,8 @@ ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& 
   }
 }
 
-ShaderProgram::~ShaderProgram() { glDeleteProgram(program_); }
+ShaderProgram::~ShaderProgram() {
+  glDeleteProgram(program_);
+}
 
 }  // namespace wobble

@@ -26,15 +26,16 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                                  const std::vector<std::string>& scene_names, float ui_scale) {
   PanelRequests requests;
   ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(300.0f * ui_scale, 0.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330.0f * ui_scale, 0.0f), ImGuiCond_FirstUseEver);
   ImGui::Begin("Wobble");
+  // Widgets take what the labels leave.
+  ImGui::PushItemWidth(-120.0f * ui_scale);
 
   if (!scene_names.empty()) {
     const char* current = scene_names[settings.scene].c_str();
     if (ImGui::BeginCombo("scene", current)) {
       for (int i = 0; i < static_cast<int>(scene_names.size()); ++i) {
-        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene) &&
-            i != settings.scene) {
+        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene) && i != settings.scene) {
           settings.scene = i;
           requests.scene_changed = true;
         }
@@ -57,12 +58,12 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   // Stiffness spans six decades, so its slider is logarithmic.
   ImGui::SliderFloat("k (N/m)", &settings.k, PanelSettings::min_k, PanelSettings::max_k, "%.1f",
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  ImGui::SliderFloat("dt (s)", &settings.dt, PanelSettings::min_dt, PanelSettings::max_dt,
-                     "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("dt (s)", &settings.dt, PanelSettings::min_dt, PanelSettings::max_dt, "%.4f",
+                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   ImGui::SliderInt("iterations", &settings.iterations, PanelSettings::min_iterations,
                    PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
-  ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity,
-                     "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity, "%.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
 
   section("view");
   ImGui::Checkbox("surface", &settings.surface);
@@ -81,12 +82,13 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     stat_row("  local", "%.2f ms", stats.local_ms);
     stat_row("  global", "%.2f ms", stats.global_ms);
   } else {
-    ImGui::TextDisabled("timings hidden: headless images are reproducible");
+    ImGui::TextDisabled("timings hidden (headless)");
   }
   stat_row("simulated", "%.2f s", stats.simulated_seconds);
   stat_row("vertices", "%.0f", stats.vertices);
   stat_row("springs", "%.0f", stats.springs);
   stat_row("pins", "%.0f", stats.pins);
+  ImGui::PopItemWidth();
   ImGui::End();
   return requests;
 }

@@ -9,13 +9,13 @@ namespace wobble {
 // What the panel edits. The app compares it with the simulation after each frame's UI and applies
 // what changed, so the panel itself touches neither the simulation nor GL.
 struct PanelSettings {
-  float k = 400.0f;             // N/m
-  float dt = 1.0f / 60.0f;      // s
-  int iterations = 50;          //
-  float gravity = 9.81f;        // m/s², downwards
+  float k = 400.0f;         // N/m
+  float dt = 1.0f / 60.0f;  // s
+  int iterations = 50;      //
+  float gravity = 9.81f;    // m/s², downwards
   bool paused = false;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
-  int scene = 0;                // index into the scene names
+  int scene = 0;  // index into the scene names
   bool show_help = false;
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;

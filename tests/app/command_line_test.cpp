@@ -7,35 +7,17 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "../io/temporary_folder.h"
+#include "run_wobble.h"
 
 namespace {
 
 using wobble::testing::TemporaryFolder;
 
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
+using wobble::testing::Result;
+using wobble::testing::run_wobble;
 
 std::string read(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Run wobble with `arguments` (already shell-quoted where needed), capturing both streams.
-Result run_wobble(const std::string& arguments) {
-  TemporaryFolder capture;
-  const std::string command = std::string("'") + WOBBLE_EXECUTABLE + "' " + arguments + " >'" +
-                              capture.file("out") + "' 2>'" + capture.file("err") + "' </dev/null";
-  const int status = std::system(command.c_str());
-  Result result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.out = read(capture.file("out"));
-  result.err = read(capture.file("err"));
-  return result;
+  return wobble::testing::read_text(path);
 }
 
 std::string last_line(const std::string& text) {

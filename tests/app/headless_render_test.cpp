@@ -1,0 +1,151 @@
+// --headless with images: EGL rendering with no display, as CI machines run it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "io/png_image.h"
+#include "run_wobble.h"
+
+namespace {
+
+using wobble::testing::run_wobble;
+using wobble::testing::TemporaryFolder;
+
+// No display at all, as on a server.
+const std::string no_display = "DISPLAY= WAYLAND_DISPLAY=";
+
+// Share of pixels whose colour is the cloth's front (orange: red well above green, green well
+// above blue).
+double orange_share(const wobble::RgbaImage& image) {
+  long orange = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const unsigned char* p = image.pixel(x, y);
+      if (p[0] > p[1] + 30 && p[1] > p[2] + 20) ++orange;
+    }
+  }
+  return static_cast<double>(orange) / (static_cast<double>(image.width) * image.height);
+}
+
+TEST(HeadlessRender, ScreenshotHasTheRequestedSizeAndShowsTheCloth) {
+  TemporaryFolder folder;
+  const auto run = run_wobble("cloth --headless --frames 30 --screenshot '" + folder.file("a.png") +
+                                  "' --width 640 --height 480",
+                              no_display);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const wobble::RgbaImage image = wobble::read_png(folder.file("a.png"));
+  EXPECT_EQ(image.width, 640);
+  EXPECT_EQ(image.height, 480);
+  // The cloth covers a good part of the picture, and the background the rest.
+  const double cloth = orange_share(image);
+  EXPECT_GT(cloth, 0.05);
+  EXPECT_LT(cloth, 0.6);
+  // The top-left corner is background: a dark grey-blue.
+  const unsigned char* corner = image.pixel(2, 2);
+  EXPECT_LT(std::abs(corner[0] - corner[2]), 40);
+  EXPECT_LT(corner[0], 120);
+}
+
+TEST(HeadlessRender, TwoRunsGiveIdenticalFiles) {
+  TemporaryFolder folder;
+  for (const char* name : {"a.png", "b.png"}) {
+    const auto run = run_wobble(
+        "jelly --headless --frames 25 --width 200 --height 150 "
+        "--ui --screenshot '" +
+            folder.file(name) + "'",
+        no_display);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  EXPECT_EQ(wobble::testing::read_text(folder.file("a.png")),
+            wobble::testing::read_text(folder.file("b.png")));
+}
+
+TEST(HeadlessRender, BothEglPlatformsDrawTheSamePicture) {
+  TemporaryFolder folder;
+  for (const char* platform : {"device", "surfaceless"}) {
+    const auto run = run_wobble(
+        "cloth --headless --frames 10 --width 160 --height 120 "
+        "--screenshot '" +
+            folder.file(std::string(platform) + ".png") + "' --stats",
+        no_display + " WOBBLE_EGL_PLATFORM=" + platform);
+    ASSERT_EQ(run.exit_code, 0) << platform << ": " << run.err;
+    EXPECT_NE(run.out.find(std::string("\"context\":\"EGL ") + platform), std::string::npos)
+        << run.out;
+  }
+  EXPECT_EQ(wobble::read_png(folder.file("device.png")).pixels,
+            wobble::read_png(folder.file("surfaceless.png")).pixels);
+}
+
+TEST(HeadlessRender, RecordWritesEveryFrameAndTheyMove) {
+  TemporaryFolder folder;
+  const std::string record = folder.file("frames");
+  const auto run = run_wobble("cloth --headless --frames 12 --width 120 --height 90 --record '" +
+                                  record + "' --screenshot '" + folder.file("last.png") + "'",
+                              no_display);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(record))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  ASSERT_EQ(names.size(), 12u);
+  EXPECT_EQ(names.front(), "frame_00001.png");
+  EXPECT_EQ(names.back(), "frame_00012.png");
+  // The cloth falls, so consecutive frames differ; the last frame is the screenshot.
+  EXPECT_NE(wobble::read_png(record + "/frame_00001.png").pixels,
+            wobble::read_png(record + "/frame_00012.png").pixels);
+  EXPECT_EQ(wobble::read_png(record + "/frame_00012.png").pixels,
+            wobble::read_png(folder.file("last.png")).pixels);
+}
+
+TEST(HeadlessRender, UiAddsThePanelAndOnlyThePanel) {
+  TemporaryFolder folder;
+  for (const std::string flag : {"", "--ui"}) {
+    const auto run = run_wobble("cloth --headless --frames 5 --width 640 --height 400 " + flag +
+                                    " --screenshot '" + folder.file("ui" + flag + ".png") + "'",
+                                no_display);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  const wobble::RgbaImage plain = wobble::read_png(folder.file("ui.png"));
+  const wobble::RgbaImage with_ui = wobble::read_png(folder.file("ui--ui.png"));
+  // The panel sits in the top-left corner; the right half of the picture is untouched.
+  long inside = 0, outside = 0;
+  for (int y = 0; y < plain.height; ++y) {
+    for (int x = 0; x < plain.width; ++x) {
+      const bool differs =
+          std::equal(plain.pixel(x, y), plain.pixel(x, y) + 3, with_ui.pixel(x, y)) == false;
+      if (!differs) continue;
+      (x < 360 ? inside : outside) += 1;
+    }
+  }
+  EXPECT_GT(inside, 20000) << "the panel is missing";
+  EXPECT_EQ(outside, 0);
+}
+
+TEST(HeadlessRender, BadImageRequestsAreRefusedBeforeAnyWork) {
+  TemporaryFolder folder;
+  const auto jpeg = run_wobble("cloth --headless --screenshot '" + folder.file("a.jpg") + "'");
+  EXPECT_EQ(jpeg.exit_code, 2);
+  EXPECT_NE(jpeg.err.find("must end in .png"), std::string::npos) << jpeg.err;
+  const auto folderless =
+      run_wobble("cloth --headless --screenshot '" + folder.file("no/a.png") + "'");
+  EXPECT_EQ(folderless.exit_code, 2);
+  const auto size = run_wobble("cloth --headless --width 0 --screenshot x.png");
+  EXPECT_EQ(size.exit_code, 2);
+  EXPECT_NE(size.err.find("--width"), std::string::npos) << size.err;
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+TEST(HeadlessRender, WithoutEglItExitsWithOneLineSayingWhatToInstall) {
+  TemporaryFolder folder;
+  // An empty vendor list makes libglvnd find no EGL driver at all.
+  const auto run =
+      run_wobble("cloth --headless --frames 2 --screenshot '" + folder.file("a.png") + "'",
+                 no_display + " __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("EGL"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("install libegl-mesa0"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+}  // namespace

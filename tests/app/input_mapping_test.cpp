@@ -1,0 +1,84 @@
+#include "app/input_mapping.h"
+
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <map>
+
+namespace {
+
+using wobble::MouseGesture;
+using wobble::ViewerCommand;
+
+TEST(InputMapping, KeysTheIssueAsksFor) {
+  const std::map<int, ViewerCommand> expected = {
+      {GLFW_KEY_SPACE, ViewerCommand::toggle_pause},
+      {GLFW_KEY_S, ViewerCommand::step_once},
+      {GLFW_KEY_R, ViewerCommand::reset},
+      {GLFW_KEY_W, ViewerCommand::toggle_wireframe},
+      {GLFW_KEY_P, ViewerCommand::toggle_points},
+      {GLFW_KEY_H, ViewerCommand::toggle_help},
+      {GLFW_KEY_F, ViewerCommand::frame_mesh},
+      {GLFW_KEY_ESCAPE, ViewerCommand::quit},
+      {GLFW_KEY_L, ViewerCommand::toggle_springs},
+  };
+  for (const auto& [key, command] : expected)
+    EXPECT_EQ(wobble::command_for_key(key), command) << "key " << key;
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_Q), ViewerCommand::none);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_UNKNOWN), ViewerCommand::none);
+}
+
+TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
+  // Each key with a command appears in the bindings the help overlay lists.
+  const std::map<int, std::string> names = {
+      {GLFW_KEY_SPACE, "Space"}, {GLFW_KEY_S, "S"}, {GLFW_KEY_R, "R"},
+      {GLFW_KEY_W, "W"},         {GLFW_KEY_P, "P"}, {GLFW_KEY_L, "L"},
+      {GLFW_KEY_H, "H"},         {GLFW_KEY_F, "F"}, {GLFW_KEY_ESCAPE, "Esc"}};
+  for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
+    if (wobble::command_for_key(key) == ViewerCommand::none) continue;
+    ASSERT_TRUE(names.count(key)) << "key " << key << " has a command but no name here";
+    bool listed = false;
+    for (const wobble::Binding& binding : wobble::viewer_bindings())
+      listed = listed || binding.input == names.at(key);
+    EXPECT_TRUE(listed) << names.at(key) << " is missing from the help";
+  }
+}
+
+TEST(InputMapping, MouseOverTheUiGoesToTheUiOnly) {
+  for (int button : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE}) {
+    for (bool control : {false, true}) {
+      EXPECT_EQ(wobble::gesture_for_press(button, control, false, /*over_ui=*/true, true, true),
+                MouseGesture::none);
+    }
+  }
+}
+
+TEST(InputMapping, LeftButtonDependsOnWhatIsUnderTheCursor) {
+  const int left = GLFW_MOUSE_BUTTON_LEFT;
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, true, true),
+            MouseGesture::grab_pin);
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, false, true),
+            MouseGesture::grab_free_vertex);
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, false, false),
+            MouseGesture::orbit);
+  // Ctrl+click toggles a pin on any vertex, and does nothing on empty space.
+  EXPECT_EQ(wobble::gesture_for_press(left, true, false, false, true, true),
+            MouseGesture::toggle_pin);
+  EXPECT_EQ(wobble::gesture_for_press(left, true, false, false, false, true),
+            MouseGesture::toggle_pin);
+  EXPECT_EQ(wobble::gesture_for_press(left, true, false, false, false, false), MouseGesture::none);
+  EXPECT_EQ(wobble::gesture_for_press(left, false, true, false, false, false), MouseGesture::pan);
+}
+
+TEST(InputMapping, RightAndMiddlePan) {
+  EXPECT_EQ(wobble::gesture_for_press(GLFW_MOUSE_BUTTON_RIGHT, false, false, false, true, true),
+            MouseGesture::pan);
+  EXPECT_EQ(wobble::gesture_for_press(GLFW_MOUSE_BUTTON_MIDDLE, false, false, false, false, false),
+            MouseGesture::pan);
+  EXPECT_EQ(wobble::gesture_for_press(GLFW_MOUSE_BUTTON_4, false, false, false, false, false),
+            MouseGesture::none);
+}
+
+}  // namespace

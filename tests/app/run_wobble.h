@@ -1,0 +1,44 @@
+#ifndef WOBBLE_TESTS_APP_RUN_WOBBLE_H
+#define WOBBLE_TESTS_APP_RUN_WOBBLE_H
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "../io/temporary_folder.h"
+
+namespace wobble::testing {
+
+struct Result {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+inline std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Run the wobble executable (WOBBLE_EXECUTABLE) with `arguments`, already shell-quoted where
+// needed, and `environment` assignments (e.g. "DISPLAY= ") in front; capture both streams.
+inline Result run_wobble(const std::string& arguments, const std::string& environment = "") {
+  TemporaryFolder capture;
+  const std::string command = environment + " '" + std::string(WOBBLE_EXECUTABLE) + "' " +
+                              arguments + " >'" + capture.file("out") + "' 2>'" +
+                              capture.file("err") + "' </dev/null";
+  const int status = std::system(command.c_str());
+  Result result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_text(capture.file("out"));
+  result.err = read_text(capture.file("err"));
+  return result;
+}
+
+}  // namespace wobble::testing
+
+#endif
