@@ -10,13 +10,15 @@ namespace wobble {
 // pass over the vertices per frame. Window coordinates are pixels from the top-left corner;
 // `viewport` is the window's (width, height) in those units.
 
-// Where `point` lands in the window: (x, y, normalized depth in [-1, 1]). Nothing for a point
-// behind the eye.
+// Where `point` lands in the window: (x, y, depth), depth being the distance in front of the eye
+// along the view axis. Nothing for a point behind the eye.
 std::optional<Eigen::Vector3f> project_to_window(const Eigen::Matrix4f& view_projection,
                                                  const Eigen::Vector3f& point,
                                                  const Eigen::Vector2f& viewport);
 
-// The vertex within `radius` pixels of `cursor` that is nearest the camera, or -1.
+// The vertex under the cursor, or -1: of the vertices within `radius` pixels of `cursor`, those
+// in the front layer (at most 5% deeper than the nearest one, so not one hidden behind a
+// surface), and of these the one drawn closest to the cursor.
 //   positions  #V by 3, row-major
 //   eligible   #V flags (non-zero: may be picked), or null for every vertex
 int pick_vertex(const Eigen::Matrix4f& view_projection, const float* positions, int vertex_count,

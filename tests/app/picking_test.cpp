@@ -65,6 +65,25 @@ TEST(Picking, PrefersTheVertexNearestTheCameraAndHonoursEligibility) {
             1);
 }
 
+TEST(Picking, OnAnObliqueSheetPicksTheVertexClosestToTheCursor) {
+  View view = front_view();
+  view.camera.pitch = 0.35f;  // looking down at a horizontal sheet: rows crowd together on screen
+  std::vector<float> positions;
+  for (int row = 0; row < 5; ++row) {
+    for (int column = 0; column < 5; ++column) {
+      positions.insert(positions.end(), {0.02f * column, 0.0f, 0.02f * row});
+    }
+  }
+  for (int i = 0; i < 25; ++i) {
+    const auto at = wobble::project_to_window(view.view_projection(),
+                                              Eigen::Map<const Eigen::Vector3f>(&positions[3 * i]),
+                                              view.viewport);
+    EXPECT_EQ(wobble::pick_vertex(view.view_projection(), positions.data(), 25, nullptr,
+                                  at->head<2>(), view.viewport, 30.0f),
+              i);
+  }
+}
+
 TEST(Picking, CursorRayPassesThroughWhatIsDrawnUnderTheCursor) {
   View view = front_view();
   view.camera.yaw = 0.7f;

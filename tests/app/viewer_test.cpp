@@ -1,0 +1,153 @@
+// The viewer's input path, in-process and without GL: synthetic mouse and key events go through
+// Viewer::handle_events exactly as the window delivers them, and the simulation must respond.
+#include "app/viewer.h"
+
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/picking.h"
+
+namespace {
+
+using wobble::InputEvent;
+
+const Eigen::Vector2f window(1280.0f, 720.0f);
+
+struct ViewerFixture {
+  ViewerFixture()
+      : viewer(wobble::make_builtin_scene("cloth"), wobble::ViewerSettings(),
+               wobble::builtin_scene_names()) {
+    // Without a renderer, render() still sets up the camera and the picking arrays.
+    viewer.render(1280, 720, window, 1.0f);
+  }
+  // Where vertex i is drawn, in window coordinates.
+  Eigen::Vector2f on_screen(int i) const {
+    const Eigen::Matrix4f view_projection =
+        wobble::projection_matrix(viewer.camera(), window.x() / window.y()) *
+        wobble::view_matrix(viewer.camera());
+    const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
+    return wobble::project_to_window(view_projection, p, window)->head<2>();
+  }
+  void send(InputEvent::Type type, const Eigen::Vector2f& at, int code = 0, bool control = false,
+            bool ui_wants_mouse = false) {
+    InputEvent event;
+    event.type = type;
+    event.code = code;
+    event.control = control;
+    event.x = at.x();
+    event.y = at.y();
+    viewer.handle_events({event}, ui_wants_mouse, false, window);
+  }
+  void press_key(int key) {
+    InputEvent event;
+    event.type = InputEvent::Type::key_press;
+    event.code = key;
+    viewer.handle_events({event}, false, false, window);
+  }
+  void frame() {
+    viewer.advance();
+    viewer.render(1280, 720, window, 1.0f);
+  }
+  wobble::Viewer viewer;
+};
+
+TEST(Viewer, DraggingAPinnedCornerMovesItAndTheClothFollows) {
+  ViewerFixture f;
+  const int corner = f.viewer.scene().pins[0];
+  const Eigen::Vector3d start = f.viewer.simulation().positions().row(corner);
+  const int factorizations = f.viewer.simulation().numeric_factorizations();
+  const Eigen::Vector2f at = f.on_screen(corner) + Eigen::Vector2f(3, 2);  // a few pixels off
+
+  f.send(InputEvent::Type::cursor_move, at);
+  f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT);
+  // Drag 300 px to the right over 30 frames.
+  for (int i = 1; i <= 30; ++i) {
+    f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(10.0f * i, 0));
+    f.frame();
+  }
+  const Eigen::Vector3d moved = f.viewer.simulation().positions().row(corner);
+  // The corner went where the cursor went: 300 px to the right on screen ...
+  EXPECT_NEAR((f.on_screen(corner) - at).x(), 300.0f - 3.0f, 2.0f);
+  EXPECT_NEAR((f.on_screen(corner) - at).y(), -2.0f, 2.0f);
+  // ... which is a large move in the world, in the plane facing the camera.
+  EXPECT_GT((moved - start).norm(), 0.5);
+  EXPECT_NEAR((moved - start).cast<float>().dot(wobble::camera_forward(f.viewer.camera())), 0.0f,
+              1e-3f);
+  f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_TRUE(f.viewer.simulation().is_pinned(corner));
+  EXPECT_EQ(f.viewer.simulation().numeric_factorizations(), factorizations)
+      << "moving a pin must not re-factorize";
+  // The cloth follows: its centre of mass moved the same way.
+  const double centre = f.viewer.simulation().positions().col(0).mean();
+  EXPECT_GT(centre, f.viewer.scene().network.V.col(0).mean() + 0.1);
+}
+
+TEST(Viewer, ControlClickTogglesAPin) {
+  ViewerFixture f;
+  const int vertex = 40 * 20 + 20;  // the middle of the cloth, free
+  ASSERT_FALSE(f.viewer.simulation().is_pinned(vertex));
+  const Eigen::Vector2f at = f.on_screen(vertex);
+  f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*control=*/true);
+  f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_TRUE(f.viewer.simulation().is_pinned(vertex));
+  EXPECT_EQ(f.viewer.simulation().pin_count(), 3);
+  f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*control=*/true);
+  f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_FALSE(f.viewer.simulation().is_pinned(vertex));
+}
+
+TEST(Viewer, MouseOverThePanelDoesNothingToTheScene) {
+  ViewerFixture f;
+  const int corner = f.viewer.scene().pins[0];
+  const Eigen::Vector2f at = f.on_screen(corner);
+  const wobble::OrbitCamera before = f.viewer.camera();
+  f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, true, /*ui=*/true);
+  f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(100, 50), 0, false, true);
+  f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT, false, true);
+  EXPECT_EQ(f.viewer.simulation().pin_count(), 2);
+  EXPECT_TRUE(f.viewer.simulation().pin_target(corner).isApprox(
+      f.viewer.scene().network.V.row(corner).transpose()));
+  EXPECT_EQ(f.viewer.camera().yaw, before.yaw);
+}
+
+TEST(Viewer, DraggingEmptySpaceOrbitsAndTheWheelZooms) {
+  ViewerFixture f;
+  const wobble::OrbitCamera before = f.viewer.camera();
+  const Eigen::Vector2f corner_of_window(20, 700);  // nothing drawn there but the ground
+  f.send(InputEvent::Type::cursor_move, corner_of_window);
+  f.send(InputEvent::Type::button_press, corner_of_window, GLFW_MOUSE_BUTTON_LEFT);
+  f.send(InputEvent::Type::cursor_move, corner_of_window + Eigen::Vector2f(72, 0));
+  f.send(InputEvent::Type::button_release, corner_of_window, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_NEAR(f.viewer.camera().yaw, before.yaw - 72 * 3.14159265f / 720, 1e-4f);
+  InputEvent wheel;
+  wheel.type = InputEvent::Type::scroll;
+  wheel.y = 1.0;
+  f.viewer.handle_events({wheel}, false, false, window);
+  EXPECT_NEAR(f.viewer.camera().distance, before.distance / 1.15f, 1e-4f);
+}
+
+TEST(Viewer, KeysPauseStepAndReset) {
+  ViewerFixture f;
+  f.frame();
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
+  f.press_key(GLFW_KEY_SPACE);  // pause
+  f.frame();
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
+  f.press_key(GLFW_KEY_S);  // one step, still paused
+  f.frame();
+  f.frame();
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 2);
+  f.press_key(GLFW_KEY_R);
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 0);
+  EXPECT_TRUE(f.viewer.simulation().positions().isApprox(f.viewer.scene().network.V));
+  f.press_key(GLFW_KEY_SPACE);  // play
+  f.frame();
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
+  EXPECT_FALSE(f.viewer.quit_requested());
+  f.press_key(GLFW_KEY_ESCAPE);
+  EXPECT_TRUE(f.viewer.quit_requested());
+}
+
+}  // namespace
