@@ -1,6 +1,7 @@
 #ifndef WOBBLE_TESTS_GOLDEN_GOLDEN_CASES_H
 #define WOBBLE_TESTS_GOLDEN_GOLDEN_CASES_H
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,10 @@ struct GoldenCase {
   std::string name;
   std::string arguments;
 };
+// How GoogleTest shows a case in test names and messages.
+inline void PrintTo(const GoldenCase& golden, std::ostream* out) {
+  *out << golden.name;
+}
 
 // Small images keep the suite fast and the PNGs small; 240 rows still show every spring.
 inline const std::vector<GoldenCase>& golden_cases() {
