@@ -43,10 +43,16 @@ struct GlfwCallbacks {
     event.type =
         action == GLFW_PRESS ? InputEvent::Type::button_press : InputEvent::Type::button_release;
     event.code = button;
-    glfwGetCursorPos(window, &event.x, &event.y);
+    // Where the cursor was when the button went down: the last motion event, not
+    // glfwGetCursorPos, which asks the X server for where the pointer is now, after any motion
+    // still queued behind this event.
+    event.x = owner(window).cursor_x_;
+    event.y = owner(window).cursor_y_;
     push(window, event, mods);
   }
   static void cursor(GLFWwindow* window, double x, double y) {
+    owner(window).cursor_x_ = x;
+    owner(window).cursor_y_ = y;
     InputEvent event;
     event.type = InputEvent::Type::cursor_move;
     event.x = x;
@@ -88,6 +94,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
                        "); try --headless");
   }
   glfwSetWindowUserPointer(window_, this);
+  glfwGetCursorPos(window_, &cursor_x_, &cursor_y_);
   glfwMakeContextCurrent(window_);
   if (gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress)) == 0) {
     glfwDestroyWindow(window_);

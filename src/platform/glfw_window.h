@@ -34,6 +34,7 @@ class GlfwWindow {
  private:
   GLFWwindow* window_ = nullptr;
   std::vector<InputEvent> events_;
+  double cursor_x_ = 0.0, cursor_y_ = 0.0;  // as of the last event handled
   friend struct GlfwCallbacks;
 };
 
