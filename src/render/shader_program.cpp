@@ -16,7 +16,12 @@ const char* find_source(const std::string& file_name) {
   throw std::runtime_error("shaders/" + file_name + ": no such shader was built in");
 }
 
-std::string one_line_log(std::string log) {
+// The driver's log for a shader or program that failed (glGetShaderInfoLog or
+// glGetProgramInfoLog), on one line.
+std::string failure_log(GLuint object, PFNGLGETSHADERINFOLOGPROC get_log) {
+  char buffer[2048] = {};
+  get_log(object, sizeof buffer - 1, nullptr, buffer);
+  std::string log = buffer;
   for (char& c : log) {
     if (c == '\n' || c == '\r') c = ' ';
   }
@@ -33,10 +38,9 @@ GLuint compile(GLenum type, const std::string& file_name) {
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (ok != GL_TRUE) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log - 1, nullptr, log);
+    const std::string log = failure_log(shader, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw std::runtime_error("shaders/" + file_name + ": does not compile: " + one_line_log(log));
+    throw std::runtime_error("shaders/" + file_name + ": does not compile: " + log);
   }
   return shader;
 }
@@ -61,11 +65,10 @@ ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& 
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
-    char log[2048] = {};
-    glGetProgramInfoLog(program_, sizeof log - 1, nullptr, log);
+    const std::string log = failure_log(program_, glGetProgramInfoLog);
     glDeleteProgram(program_);
     throw std::runtime_error("shaders/" + vertex_file + " + " + fragment_file +
-                             ": do not link: " + one_line_log(log));
+                             ": do not link: " + log);
   }
 }
 
