@@ -4,21 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "simulation.h"
-#include "spring_network.h"
+#include "scene.h"
 
 namespace wobble {
-
-// Everything needed to start a Simulation: the rest shape, the initial pins (vertex indices),
-// default parameters and the initial velocity (#V by 3, or empty for rest).
-struct Scene {
-  std::string name;
-  std::string description;
-  SpringNetwork network;
-  std::vector<int> pins;
-  SimulationParams params;
-  Eigen::MatrixXd initial_velocity;
-};
 
 // Names of the scenes Wobble generates itself, in the order a scene picker lists them.
 std::vector<std::string> builtin_scene_names();
