@@ -10,7 +10,8 @@ run_packages=(
   libcli11-dev nlohmann-json3-dev       # command line
   libglfw3-dev libimgui-dev             # window and panel
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL, and Mesa's renderer (llvmpipe)
-  libstb-dev                            # PNG output
+  libstb-dev                            # PNG input and output
+  libtinyobjloader-dev                  # OBJ input
 )
 # What the test suite needs on top: the window smoke test runs under a virtual X server.
 test_packages=(
