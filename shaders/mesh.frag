@@ -3,19 +3,24 @@
 // from behind is lit like the front and still tells the two sides apart.
 in vec3 world_position;
 in vec3 world_normal;
+in vec2 texture_uv;
 
 uniform vec3 eye;
 uniform vec3 front_color;
 uniform vec3 back_color;
+uniform bool use_texture;
+uniform sampler2D surface_texture;
 
 out vec4 color;
 
 void main() {
   vec3 n = normalize(world_normal);
   vec3 base = front_color;
+  if (use_texture) base = texture(surface_texture, texture_uv).rgb;
   if (!gl_FrontFacing) {
     n = -n;
-    base = back_color;
+    // A textured back shows the texture through, a little darker, as printed fabric does.
+    base = use_texture ? 0.8 * base : back_color;
   }
   vec3 to_eye = normalize(eye - world_position);
   // A key light just above the viewer keeps the lit side facing the camera while orbiting. It

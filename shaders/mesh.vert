@@ -2,14 +2,18 @@
 // Surface of the shape: positions and smooth normals, both updated every frame.
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
+layout(location = 3) in vec2 uv;
 
 uniform mat4 view_projection;
 
 out vec3 world_position;
 out vec3 world_normal;
+out vec2 texture_uv;
 
 void main() {
   world_position = position;
   world_normal = normal;
+  // OBJ's v grows upwards; image rows (as uploaded) grow downwards.
+  texture_uv = vec2(uv.x, 1.0 - uv.y);
   gl_Position = view_projection * vec4(position, 1.0);
 }

@@ -15,10 +15,12 @@ constexpr float degrees = 3.14159265358979f / 180.0f;
 constexpr float default_yaw = 30.0f * degrees;
 constexpr float default_pitch = 20.0f * degrees;
 
-// Cloth is orange in front and blue behind; a solid shows only its outside.
+// Cloth is orange in front and blue behind; a solid shows only its outside. A scene may choose.
 SurfaceColors colors_for(const Scene& scene) {
   SurfaceColors colors;
   if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.45f, 0.76f, 0.34f);
+  if (scene.look.front_color) colors.front = scene.look.front_color->cast<float>();
+  if (scene.look.back_color) colors.back = scene.look.back_color->cast<float>();
   return colors;
 }
 
@@ -101,6 +103,30 @@ void Viewer::load(Scene scene) {
   update_vertex_arrays();
   frame_on_next_render_ = true;
   framing_new_scene_ = true;
+  const SceneLook& look = scene_.look;
+  if (look.camera_position && look.camera_target) {
+    // The scene's own view replaces the framing; --camera-yaw/--camera-pitch still turn it.
+    const Eigen::Vector3f eye = look.camera_position->cast<float>();
+    const Eigen::Vector3f target = look.camera_target->cast<float>();
+    const Eigen::Vector3f back = eye - target;
+    camera_.target = target;
+    camera_.distance = std::max(back.norm(), OrbitCamera::min_distance);
+    camera_.yaw = std::atan2(back.x(), back.z());
+    camera_.pitch = std::clamp(std::asin(std::clamp(back.y() / camera_.distance, -1.0f, 1.0f)),
+                               -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+    if (settings_yaw_) camera_.yaw = *settings_yaw_;
+    if (settings_pitch_) camera_.pitch = *settings_pitch_;
+    frame_on_next_render_ = false;
+  }
+  uv_.clear();
+  if (look.uv.rows() == n && look.uv.cols() == 2) {
+    uv_.resize(2 * n);
+    for (int i = 0; i < n; ++i) {
+      uv_[2 * i] = static_cast<float>(look.uv(i, 0));
+      uv_[2 * i + 1] = static_cast<float>(look.uv(i, 1));
+    }
+  }
+  texture_ = look.texture.empty() ? RgbaImage() : read_png(look.texture);
   if (renderer_) attach_renderer();
 }
 
@@ -112,8 +138,16 @@ void Viewer::attach_renderer() {
   topology.triangle_count = static_cast<int>(triangles_.size() / 3);
   topology.springs = springs_.data();
   topology.spring_count = static_cast<int>(springs_.size() / 2);
+  topology.uv = uv_.empty() ? nullptr : uv_.data();
   renderer_->set_topology(topology);
   renderer_->set_colors(colors_for(scene_));
+  TextureImage texture;
+  if (!texture_.pixels.empty()) {
+    texture.rgba = texture_.pixels.data();
+    texture.width = texture_.width;
+    texture.height = texture_.height;
+  }
+  renderer_->set_texture(texture);
 
   // The ground sits under the scene (or at y = 0, whichever is lower), with lines at a round
   // fraction of the scene's size.
@@ -178,6 +212,7 @@ PanelStats Viewer::stats() const {
   stats.pins = simulation_->pin_count();
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
+  stats.notes = scene_.notes;
   return stats;
 }
 

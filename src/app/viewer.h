@@ -9,6 +9,7 @@
 
 #include "command_line.h"
 #include "input_mapping.h"
+#include "io/png_image.h"
 #include "platform/input_event.h"
 #include "render/camera.h"
 #include "render/renderer.h"
@@ -78,6 +79,7 @@ class Viewer {
   std::vector<std::string> scene_names_;
   PanelSettings panel_;
   OrbitCamera camera_;
+  std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line
   bool frame_on_next_render_ = true;
   bool framing_new_scene_ = true;  // frame with room for the motion to come
   bool quit_ = false;
@@ -95,6 +97,8 @@ class Viewer {
   std::vector<unsigned> triangles_, springs_;
   std::vector<float> positions_, normals_;
   std::vector<unsigned char> marks_, pinned_flags_;
+  std::vector<float> uv_;  // #V by 2, or empty
+  RgbaImage texture_;
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
   std::unique_ptr<Renderer> renderer_;

@@ -10,7 +10,7 @@ namespace wobble {
 
 namespace {
 
-constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2;
+constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3;
 
 }  // namespace
 
@@ -22,21 +22,25 @@ struct Renderer::Resources {
 
   // One position buffer feeds three vertex arrays, each with its own element buffer: the surface
   // (with normals), the springs, and the markers (with marks).
-  GLuint positions = 0, normals = 0, marks = 0, triangle_indices = 0, spring_indices = 0;
+  GLuint positions = 0, normals = 0, marks = 0, triangle_indices = 0, spring_indices = 0, uvs = 0;
+  GLuint texture = 0;
+  bool textured = false, has_uv = false;
   GLuint surface_array = 0, spring_array = 0, point_array = 0;
   GLuint grid_array = 0, grid_vertices = 0, empty_array = 0;
   int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
   SurfaceColors colors;
 
   Resources() {
-    GLuint buffers[6];
-    glGenBuffers(6, buffers);
+    GLuint buffers[7];
+    glGenBuffers(7, buffers);
     positions = buffers[0];
     normals = buffers[1];
     marks = buffers[2];
     triangle_indices = buffers[3];
     spring_indices = buffers[4];
     grid_vertices = buffers[5];
+    uvs = buffers[6];
+    glGenTextures(1, &texture);
     GLuint arrays[5];
     glGenVertexArrays(5, arrays);
     surface_array = arrays[0];
@@ -48,6 +52,7 @@ struct Renderer::Resources {
     glBindVertexArray(surface_array);
     attribute(positions, position_location, 3, GL_FLOAT);
     attribute(normals, normal_location, 3, GL_FLOAT);
+    attribute(uvs, uv_location, 2, GL_FLOAT);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_indices);
 
     glBindVertexArray(spring_array);
@@ -96,6 +101,12 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, r.marks);
   glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
+  // Without uv the buffer still holds zeros, so the attribute never reads past its end.
+  r.has_uv = topology.uv != nullptr;
+  const std::vector<float> no_uv(r.has_uv ? 0 : 2 * r.vertex_count, 0.0f);
+  glBindBuffer(GL_ARRAY_BUFFER, r.uvs);
+  glBufferData(GL_ARRAY_BUFFER, 2 * sizeof(float) * r.vertex_count,
+               r.has_uv ? topology.uv : no_uv.data(), GL_STATIC_DRAW);
   glBindVertexArray(r.surface_array);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.triangle_count, topology.triangles,
                GL_STATIC_DRAW);
@@ -127,6 +138,22 @@ void Renderer::set_ground(const GroundGrid& ground) {
 
 void Renderer::set_colors(const SurfaceColors& colors) {
   resources_->colors = colors;
+}
+
+void Renderer::set_texture(const TextureImage& image) {
+  Resources& r = *resources_;
+  r.textured = image.rgba != nullptr && image.width > 0 && image.height > 0;
+  if (!r.textured) return;
+  glBindTexture(GL_TEXTURE_2D, r.texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               image.rgba);
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void Renderer::update(const MeshFrame& frame) {
@@ -177,12 +204,18 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
     glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.front.data());
     glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.back.data());
+    const bool textured = r.textured && r.has_uv;
+    glUniform1i(r.mesh.uniform("use_texture"), textured ? 1 : 0);
+    glUniform1i(r.mesh.uniform("surface_texture"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, textured ? r.texture : 0);
     // Push the surface back a little so edges drawn on it win the depth test.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
     glBindVertexArray(r.surface_array);
     glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
+    glBindTexture(GL_TEXTURE_2D, 0);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
   glEnable(GL_BLEND);

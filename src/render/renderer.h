@@ -13,6 +13,13 @@ struct MeshTopology {
   int triangle_count = 0;
   const unsigned* springs = nullptr;  // #E by 2 vertex indices
   int spring_count = 0;
+  const float* uv = nullptr;  // #V by 2 texture coordinates (v up, as in OBJ), or null
+};
+
+// An 8-bit RGBA image for the surface, rows from the top (as image files store them).
+struct TextureImage {
+  const unsigned char* rgba = nullptr;
+  int width = 0, height = 0;
 };
 
 // Where the vertices are this frame. Plain arrays of topology.vertex_count rows.
@@ -58,6 +65,9 @@ class Renderer {
   void set_topology(const MeshTopology& topology);
   void set_ground(const GroundGrid& ground);
   void set_colors(const SurfaceColors& colors);
+  // Paint the surface with `image` through the topology's uv; an empty image goes back to the
+  // plain colours. Without uv the texture is not used.
+  void set_texture(const TextureImage& image);
   // Upload this frame's vertices (topology.vertex_count of each array).
   void update(const MeshFrame& frame);
   // Clear and draw the scene in a viewport of width × height pixels. `pixel_ratio` scales point

@@ -88,6 +88,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   stat_row("vertices", "%.0f", stats.vertices);
   stat_row("springs", "%.0f", stats.springs);
   stat_row("pins", "%.0f", stats.pins);
+  for (const std::string& note : stats.notes)
+    ImGui::TextWrapped("%s", note.c_str());
   ImGui::PopItemWidth();
   ImGui::End();
   return requests;

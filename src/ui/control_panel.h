@@ -34,6 +34,7 @@ struct PanelStats {
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;
+  std::vector<std::string> notes;  // what the scene loader chose for the user
 };
 
 // Buttons pressed this frame.
