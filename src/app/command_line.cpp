@@ -7,6 +7,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "scene_catalog.h"
 #include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
 #include "sim/simulation.h"
@@ -88,18 +89,23 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   CLI::App app("Wobble: cloth and jelly as fast mass-spring systems (Liu et al. 2013).", "wobble");
   app.get_formatter()->column_width(28);
   bool version = false, list_scenes = false;
-  app.add_option("scene", command.scene, "Built-in scene to load (see --list-scenes)")
+  app.add_option("scene", command.scene,
+                 "Built-in scene (see --list-scenes), scene file (.json) or mesh (.obj, .mesh, "
+                 ".node/.ele)")
       ->capture_default_str();
+  app.add_flag("--fill", command.fill, "Fill a closed OBJ surface with tetrahedra: a jelly");
   app.add_flag("--headless", command.headless,
                "No window: simulate, and render through EGL if an image is asked for");
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch;
+      record, yaw, pitch, obj_sequence;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
+  app.add_option("--export-obj-sequence", obj_sequence,
+                 "Write every frame as DIR/frame_00001.obj, ...");
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
@@ -134,6 +140,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     for (const std::string& name : builtin_scene_names()) {
       out << name << "  " << make_builtin_scene(name).description << "\n";
     }
+    // The shipped scene files, by path (loading them all just for a description would be slow).
+    for (const std::string& source : scene_catalog()) {
+      if (source.find('/') != std::string::npos) out << source << "\n";
+    }
     return std::nullopt;
   }
 
@@ -150,6 +160,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (height) {
     command.height =
         static_cast<int>(whole_number("--height", *height, CommandLine::max_image_side));
+  }
+  if (obj_sequence) {
+    command.export_obj_sequence = path_value("--export-obj-sequence", *obj_sequence, "folder path");
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");

@@ -9,10 +9,12 @@ namespace wobble {
 
 // What the user asked for on the command line, already checked for range and sanity.
 struct CommandLine {
-  std::string scene = "cloth";
+  std::string scene = "cloth";  // a built-in scene's name or a scene or mesh file
   bool headless = false;
   std::optional<long> frames;  // steps to run; headless runs default to default_headless_frames
   std::string export_obj;      // empty: no export
+  std::string export_obj_sequence;  // folder for one OBJ per frame; empty: none
+  bool fill = false;                // fill a closed OBJ surface with tetrahedra
   std::optional<double> k;
   std::optional<double> dt;
   std::optional<int> iterations;

@@ -23,19 +23,6 @@ bool ends_with_png(const std::string& path) {
   return extension == ".png";
 }
 
-// Make `folder` if it is missing (not its parents: a typo should not grow a tree of folders).
-void prepare_folder(const std::string& folder) {
-  struct stat info {};
-  if (stat(folder.c_str(), &info) == 0) {
-    if (!S_ISDIR(info.st_mode)) throw InputError("--record: '" + folder + "' is not a folder");
-  } else if (mkdir(folder.c_str(), 0777) != 0) {
-    throw InputError("--record: cannot create the folder '" + folder + "' (" +
-                     std::strerror(errno) + ")");
-  }
-  // The same check as any output file, on a file name inside the folder.
-  check_output_path(ImageOutputs::frame_file(folder, 1));
-}
-
 }  // namespace
 
 ImageOutputs::ImageOutputs(std::string screenshot, std::string record_folder,
@@ -50,12 +37,14 @@ ImageOutputs::ImageOutputs(std::string screenshot, std::string record_folder,
     }
     check_output_path(screenshot_);
   }
-  if (!record_folder_.empty()) prepare_folder(record_folder_);
+  if (!record_folder_.empty()) {
+    prepare_output_folder("--record", record_folder_, frame_file(record_folder_, 1));
+  }
 }
 
-std::string ImageOutputs::frame_file(const std::string& folder, long frame) {
-  char name[32];
-  std::snprintf(name, sizeof name, "frame_%05ld.png", frame);
+std::string ImageOutputs::frame_file(const std::string& folder, long frame, const char* extension) {
+  char name[48];
+  std::snprintf(name, sizeof name, "frame_%05ld%s", frame, extension);
   return folder + (folder.back() == '/' ? "" : "/") + name;
 }
 

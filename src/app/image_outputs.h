@@ -24,8 +24,9 @@ class ImageOutputs {
   // Write frame `frame`: into the record folder, and as the screenshot if it is the last.
   void write(long frame, bool last, const RgbaImage& image);
 
-  // The record folder's file for a frame: DIR/frame_00001.png.
-  static std::string frame_file(const std::string& folder, long frame);
+  // The record folder's file for a frame: DIR/frame_00001.png (or another extension).
+  static std::string frame_file(const std::string& folder, long frame,
+                                const char* extension = ".png");
 
  private:
   std::string screenshot_, record_folder_;

@@ -64,6 +64,9 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
       viewer.build_ui(timings, 1.0f);
     }
     viewer.advance();
+    if (options.obj_sequence != nullptr) {
+      options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
+    }
     if (report) {
       const StepTiming& step = viewer.simulation().last_step_timing();
       report->step_ms.push_back(step.total_ms);

@@ -5,14 +5,16 @@
 
 #include "image_outputs.h"
 #include "io/png_image.h"
+#include "obj_sequence.h"
 #include "viewer.h"
 
 namespace wobble {
 
 struct OffscreenOptions {
-  int width = 1280, height = 720;  // pixels
-  long frames = 1;                 // one time step each
-  bool ui = false;                 // draw the ImGui panel into the images too
+  int width = 1280, height = 720;             // pixels
+  long frames = 1;                            // one time step each
+  bool ui = false;                            // draw the ImGui panel into the images too
+  const ObjSequence* obj_sequence = nullptr;  // also write each frame's positions as OBJ
 };
 
 // What an offscreen run measured.

@@ -9,7 +9,9 @@
 #include "image_outputs.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
+#include "obj_sequence.h"
 #include "render_offscreen.h"
+#include "scene_catalog.h"
 #include "sim/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "viewer.h"
@@ -55,13 +57,15 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   ImageOutputs outputs(command.screenshot, command.record, frames, progress);
   if (!command.export_obj.empty()) check_output_path(command.export_obj);
-  Viewer viewer(make_builtin_scene(command.scene), viewer_settings(command), builtin_scene_names());
+  const ObjSequence obj_sequence(command.export_obj_sequence);
+  Viewer viewer(open_scene(command, progress), viewer_settings(command), scene_catalog());
 
   OffscreenOptions options;
   options.width = command.width;
   options.height = command.height;
   options.frames = frames;
   options.ui = command.ui;
+  options.obj_sequence = &obj_sequence;
   OffscreenReport report;
   render_offscreen(viewer, options, &outputs, &report);
 
@@ -90,8 +94,9 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
 int run_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
   if (command.writes_images()) return render_headless(command, out, progress);
   if (!command.export_obj.empty()) check_output_path(command.export_obj);
+  const ObjSequence obj_sequence(command.export_obj_sequence);
 
-  Scene scene = make_builtin_scene(command.scene);
+  Scene scene = open_scene(command, progress);
   SimulationParams params = scene.params;
   if (command.k) params.k = *command.k;
   if (command.dt) params.dt = *command.dt;
@@ -107,6 +112,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   }
   for (long frame = 0; frame < frames; ++frame) {
     simulation.step();
+    obj_sequence.write(frame + 1, simulation.positions(), scene.network);
     if (command.stats) {
       const StepTiming& timing = simulation.last_step_timing();
       step_ms.push_back(timing.total_ms);

@@ -8,8 +8,10 @@
 #include <memory>
 
 #include "image_outputs.h"
+#include "obj_sequence.h"
 #include "platform/glfw_window.h"
 #include "render/offscreen_target.h"
+#include "scene_catalog.h"
 #include "viewer.h"
 
 namespace wobble {
@@ -42,12 +44,13 @@ class WindowUi {
 int run_window(const CommandLine& command, std::ostream& progress) {
   // Everything that can be refused is checked before a window appears.
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
-  Scene scene = make_builtin_scene(command.scene);
+  const ObjSequence obj_sequence(command.export_obj_sequence);
+  Scene scene = open_scene(command, progress);
 
   GlfwWindow window(command.width, command.height, "Wobble: " + scene.name);
   const float ui_scale = window.content_scale();
   WindowUi ui(window, ui_scale);
-  Viewer viewer(std::move(scene), viewer_settings(command), builtin_scene_names());
+  Viewer viewer(std::move(scene), viewer_settings(command), scene_catalog());
   viewer.attach_renderer();
 
   RgbaImage image;
@@ -72,6 +75,7 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     viewer.build_ui(timings, ui_scale);
     // 4. step: one fixed dt per frame
     viewer.advance();
+    obj_sequence.write(frame + 1, viewer.simulation().positions(), viewer.scene().network);
     // 5. render
     ImGui::Render();
     if (width > 0 && height > 0) {  // a minimized window has no pixels

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <utility>
 
+#include "io/load_scene.h"
 #include "render/vertex_normals.h"
+#include "scene_catalog.h"
+#include "sim/input_error.h"
 
 namespace wobble {
 
@@ -50,8 +53,10 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   return settings;
 }
 
-Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_names)
-    : scene_names_(std::move(scene_names)) {
+Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources)
+    : scene_sources_(std::move(scene_sources)) {
+  for (const std::string& source : scene_sources_)
+    scene_labels_.push_back(scene_label(source));
   if (settings.k) scene.params.k = *settings.k;
   if (settings.dt) scene.params.dt = *settings.dt;
   if (settings.iterations) scene.params.iterations = *settings.iterations;
@@ -75,10 +80,14 @@ void Viewer::load(Scene scene) {
   scene_ = std::move(scene);
   simulation_ = std::make_unique<Simulation>(scene_.network, scene_.pins, scene_.params,
                                              scene_.initial_velocity);
-  const auto found = std::find(scene_names_.begin(), scene_names_.end(), scene_.name);
-  if (found == scene_names_.end()) scene_names_.push_back(scene_.name);
-  panel_.scene = static_cast<int>(std::find(scene_names_.begin(), scene_names_.end(), scene_.name) -
-                                  scene_names_.begin());
+  // The picker shows the scene as current; a scene from elsewhere joins the list.
+  const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
+  if (found == scene_labels_.end()) {
+    scene_labels_.push_back(scene_.name);
+    scene_sources_.push_back(scene_.name);
+  }
+  panel_.scene = static_cast<int>(
+      std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) - scene_labels_.begin());
   panel_.k = static_cast<float>(scene_.params.k);
   panel_.dt = static_cast<float>(scene_.params.dt);
   panel_.iterations = scene_.params.iterations;
@@ -173,14 +182,22 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.local_ms = static_cast<float>(step.local_ms);
   stats.global_ms = static_cast<float>(step.global_ms);
 
-  const PanelRequests requests = draw_control_panel(panel_, stats, scene_names_, ui_scale);
+  const PanelRequests requests = draw_control_panel(panel_, stats, scene_labels_, ui_scale);
   std::vector<std::pair<std::string, std::string>> help;
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
 
   if (requests.scene_changed) {
-    load(make_builtin_scene(scene_names_[panel_.scene]));
+    // A scene file that fails to load leaves the current scene running, with the reason shown.
+    try {
+      load(load_scene(scene_sources_[panel_.scene]));
+    } catch (const InputError& error) {
+      scene_.notes.push_back(error.what());
+      panel_.scene =
+          static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
+                           scene_labels_.begin());
+    }
     return;
   }
   apply_panel_settings();

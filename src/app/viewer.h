@@ -37,8 +37,9 @@ ViewerSettings viewer_settings(const CommandLine& command);
 //   handle_events → build_ui → advance → render
 class Viewer {
  public:
-  // `scene_names` are what the scene picker offers; `scene` is already built. No GL needed yet.
-  Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_names);
+  // `scene_sources` are what the scene picker offers (built-in names and scene files, as
+  // load_scene takes them); `scene` is already built. No GL needed yet.
+  Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources);
   ~Viewer();
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
@@ -76,7 +77,7 @@ class Viewer {
 
   Scene scene_;
   std::unique_ptr<Simulation> simulation_;
-  std::vector<std::string> scene_names_;
+  std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
   PanelSettings panel_;
   OrbitCamera camera_;
   std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line

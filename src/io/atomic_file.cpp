@@ -37,6 +37,18 @@ void check_output_path(const std::string& path) {
   }
 }
 
+void prepare_output_folder(const std::string& option, const std::string& folder,
+                           const std::string& first_file) {
+  struct stat info {};
+  if (stat(folder.c_str(), &info) == 0) {
+    if (!S_ISDIR(info.st_mode)) throw InputError(option + ": '" + folder + "' is not a folder");
+  } else if (mkdir(folder.c_str(), 0777) != 0) {
+    throw InputError(option + ": cannot create the folder '" + folder + "' (" +
+                     std::strerror(errno) + ")");
+  }
+  check_output_path(first_file);
+}
+
 void write_file_atomically(const std::string& path, const std::string& contents) {
   const std::string pattern = path + ".tmp-XXXXXX";
   std::vector<char> temporary(pattern.begin(), pattern.end());

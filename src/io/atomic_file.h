@@ -18,6 +18,12 @@ class OutputError : public std::runtime_error {
 // output path is reported at once instead of after the work is done.
 void check_output_path(const std::string& path);
 
+// For an option that writes many files into a folder (--record DIR): make `folder` if it is
+// missing (not its parents: a typo should not grow a tree of folders), then check that
+// `first_file` inside it can be written. Throws InputError naming `option`.
+void prepare_output_folder(const std::string& option, const std::string& folder,
+                           const std::string& first_file);
+
 // Write `contents` to `path` so that readers only ever see the old file or the complete new one:
 // the bytes go to a temporary file in the same folder, are flushed to disk, and the temporary
 // file is renamed over `path`. On failure the temporary file is removed and OutputError thrown.

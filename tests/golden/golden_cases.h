@@ -10,11 +10,22 @@
 namespace wobble::testing {
 
 // One stored picture: tests/golden/<name>.png is what `wobble <arguments> --headless
-// --screenshot FILE` draws.
+// --screenshot FILE` draws. "@ASSETS@" in the arguments stands for Wobble's assets/ folder.
 struct GoldenCase {
   std::string name;
   std::string arguments;
 };
+// The arguments with "@ASSETS@" replaced by `assets`.
+inline std::string golden_arguments(const GoldenCase& golden, const std::string& assets) {
+  std::string arguments = golden.arguments;
+  const std::string marker = "@ASSETS@";
+  for (std::size_t at = arguments.find(marker); at != std::string::npos;
+       at = arguments.find(marker)) {
+    arguments.replace(at, marker.size(), assets);
+  }
+  return arguments;
+}
+
 // How GoogleTest shows a case in test names and messages.
 inline void PrintTo(const GoldenCase& golden, std::ostream* out) {
   *out << golden.name;
@@ -34,6 +45,8 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"jelly_points", "jelly --frames 20 --points --camera-pitch 50 --width 320 --height 240"},
       // The panel needs room: 640 × 400.
       {"cloth_ui", "cloth --frames 30 --ui --width 640 --height 400"},
+      // A course-format scene with a PNG texture mapped through the OBJ's vt.
+      {"course_banner_texture", "@ASSETS@/course/banner.json --frames 20 --width 320 --height 240"},
   };
   return cases;
 }

@@ -29,8 +29,10 @@ TEST_P(GoldenImage, MatchesStoredPng) {
   const std::string expected_path = std::string(WOBBLE_GOLDEN_DIR) + "/" + golden.name + ".png";
 
   // No DISPLAY: headless must not need one.
-  const wobble::testing::Result run = wobble::testing::run_wobble(
-      golden.arguments + " --headless --screenshot '" + actual_path + "'", "DISPLAY=");
+  const wobble::testing::Result run =
+      wobble::testing::run_wobble(wobble::testing::golden_arguments(golden, WOBBLE_ASSETS_DIR) +
+                                      " --headless --screenshot '" + actual_path + "'",
+                                  "DISPLAY=");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const wobble::RgbaImage actual = wobble::read_png(actual_path);
 

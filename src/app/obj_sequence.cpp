@@ -1,0 +1,21 @@
+#include "obj_sequence.h"
+
+#include "image_outputs.h"
+#include "io/atomic_file.h"
+#include "io/write_obj.h"
+
+namespace wobble {
+
+ObjSequence::ObjSequence(std::string folder) : folder_(std::move(folder)) {
+  if (folder_.empty()) return;
+  prepare_output_folder("--export-obj-sequence", folder_,
+                        ImageOutputs::frame_file(folder_, 1, ".obj"));
+}
+
+void ObjSequence::write(long frame, const Eigen::MatrixXd& positions,
+                        const SpringNetwork& network) const {
+  if (folder_.empty()) return;
+  write_obj(ImageOutputs::frame_file(folder_, frame, ".obj"), positions, network.F, network.E);
+}
+
+}  // namespace wobble

@@ -1,0 +1,25 @@
+#ifndef WOBBLE_APP_OBJ_SEQUENCE_H
+#define WOBBLE_APP_OBJ_SEQUENCE_H
+
+#include <string>
+
+#include "sim/scene.h"
+
+namespace wobble {
+
+// --export-obj-sequence DIR: the positions after every frame as DIR/frame_00001.obj, ..., each
+// with the scene's render faces (or its springs as lines), written atomically, for Blender and
+// other tools.
+class ObjSequence {
+ public:
+  // Creates the folder if its parent exists (InputError otherwise). An empty folder: no output.
+  explicit ObjSequence(std::string folder);
+  void write(long frame, const Eigen::MatrixXd& positions, const SpringNetwork& network) const;
+
+ private:
+  std::string folder_;
+};
+
+}  // namespace wobble
+
+#endif

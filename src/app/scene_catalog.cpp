@@ -1,0 +1,40 @@
+#include "scene_catalog.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <ostream>
+
+#include "io/load_scene.h"
+#include "sim/builtin_scenes.h"
+
+#ifndef WOBBLE_ASSETS_DIR
+#define WOBBLE_ASSETS_DIR ""
+#endif
+
+namespace wobble {
+
+std::vector<std::string> scene_catalog() {
+  std::vector<std::string> sources = builtin_scene_names();
+  std::vector<std::string> files;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(WOBBLE_ASSETS_DIR, error)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  sources.insert(sources.end(), files.begin(), files.end());
+  return sources;
+}
+
+std::string scene_label(const std::string& source) {
+  const std::filesystem::path path(source);
+  return path.has_extension() ? path.stem().string() : source;
+}
+
+Scene open_scene(const CommandLine& command, std::ostream& notes) {
+  Scene scene = load_scene(command.scene, command.fill);
+  for (const std::string& note : scene.notes)
+    notes << "wobble: note: " << note << "\n";
+  return scene;
+}
+
+}  // namespace wobble

@@ -1,0 +1,206 @@
+#include "course_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/read_obj.h"
+#include "sim/face_springs.h"
+#include "sim/input_error.h"
+#include "sim/voronoi_masses.h"
+
+namespace wobble {
+
+namespace {
+
+// The reference program's fixed settings.
+constexpr double course_time_step = 1.0 / 30.0;
+constexpr int course_iterations = 50;
+constexpr double course_gravity = -9.8;
+
+// A JSON value as it would be written, cut short so that a long list keeps the message short.
+std::string shown(const nlohmann::json& value) {
+  const std::string text = value.dump();
+  return text.size() <= 40 ? text : text.substr(0, 37) + "...";
+}
+
+InputError key_error(const std::string& json_path, const std::string& key,
+                     const std::string& what) {
+  return InputError(json_path + ": key `" + key + "`: " + what);
+}
+
+double positive_number(const std::string& json_path, const nlohmann::json& object,
+                       const std::string& key) {
+  const nlohmann::json& value = object.at(key);
+  const double number = value.is_number() ? value.get<double>() : 0.0;
+  if (!value.is_number() || !std::isfinite(number) || !(number > 0.0)) {
+    throw key_error(json_path, key, "got " + shown(value) + ", expected a positive finite number");
+  }
+  return number;
+}
+
+// A path given relative to the JSON file, which must name an existing file.
+std::string existing_file(const std::string& json_path, const nlohmann::json& object,
+                          const std::string& key, const std::string& expected) {
+  const nlohmann::json& value = object.at(key);
+  if (!value.is_string() || value.get<std::string>().empty()) {
+    throw key_error(json_path, key,
+                    "got " + shown(value) + ", expected " + expected +
+                        " path (a string, relative to the JSON file)");
+  }
+  const std::filesystem::path resolved =
+      std::filesystem::path(json_path).parent_path() / value.get<std::string>();
+  std::error_code ignored;
+  if (!std::filesystem::is_regular_file(resolved, ignored)) {
+    throw key_error(json_path, key,
+                    "no such file '" + resolved.string() + "', expected " + expected + " file");
+  }
+  return resolved.string();
+}
+
+// "b": 1-based vertex indices, returned 0-based.
+std::vector<int> pins(const std::string& json_path, const nlohmann::json& object,
+                      Eigen::Index vertex_count) {
+  const nlohmann::json& list = object.at("b");
+  if (!list.is_array()) {
+    throw key_error(json_path, "b",
+                    "got " + shown(list) + ", expected a list of 1-based vertex indices");
+  }
+  const std::string range = "1 to " + std::to_string(vertex_count);
+  std::vector<int> pinned;
+  for (std::size_t entry = 0; entry < list.size(); ++entry) {
+    const nlohmann::json& value = list[entry];
+    const std::string at = "entry " + std::to_string(entry) + " is " + shown(value);
+    if (!value.is_number_integer()) {
+      throw key_error(json_path, "b", at + ", expected an integer vertex index " + range);
+    }
+    // Unsigned first: a value past the signed range must not wrap into the valid range.
+    const bool in_range = value.is_number_unsigned()
+                              ? value.get<std::uint64_t>() >= 1 &&
+                                    value.get<std::uint64_t>() <= std::uint64_t(vertex_count)
+                              : value.get<std::int64_t>() >= 1 &&
+                                    value.get<std::int64_t>() <= std::int64_t(vertex_count);
+    if (!in_range) {
+      throw key_error(json_path, "b", at + ", expected a 1-based vertex index " + range);
+    }
+    const int vertex = static_cast<int>(value.get<std::int64_t>()) - 1;
+    if (std::find(pinned.begin(), pinned.end(), vertex) != pinned.end()) {
+      throw key_error(json_path, "b", at + ", a vertex already pinned, expected each once");
+    }
+    pinned.push_back(vertex);
+  }
+  return pinned;
+}
+
+// The course's area masses, refused where a vertex has no area to give it one.
+Eigen::VectorXd area_masses(const std::string& json_path, const SpringNetwork& network) {
+  const Eigen::VectorXd masses = voronoi_masses(network.V, network.F);
+  for (Eigen::Index i = 0; i < masses.size(); ++i) {
+    if (!(masses(i) > 0.0)) {
+      throw key_error(json_path, "m",
+                      "missing, and vertex " + std::to_string(i + 1) +
+                          " is in no triangle of non-zero area, so its Voronoi area mass is "
+                          "undefined; expected `m`, one mass for every vertex");
+    }
+  }
+  return masses;
+}
+
+int line_of_byte(const std::string& text, std::size_t byte) {
+  // nlohmann counts the characters read, so the offending one is text[byte - 1].
+  const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
+}
+
+// nlohmann's message without its "[json.exception...] parse error at line L, column C: " head,
+// since the line is given in Wobble's own form.
+std::string parse_error_detail(const std::string& what) {
+  const std::size_t column = what.find("column");
+  const std::size_t colon = column == std::string::npos ? column : what.find(": ", column);
+  std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+  std::replace(detail.begin(), detail.end(), '\n', ' ');
+  return detail;
+}
+
+}  // namespace
+
+bool is_course_scene(const nlohmann::json& object) {
+  return object.is_object() && object.contains("obj") && object.contains("b");
+}
+
+Scene load_course_scene(const std::string& json_path, const nlohmann::json& object) {
+  if (!is_course_scene(object)) {
+    throw InputError(json_path +
+                     ": not a course scene, expected a JSON object with keys `obj` and `b`");
+  }
+  if (object.contains("bc")) {
+    throw key_error(json_path, "bc",
+                    "boundary conditions are not supported, expected pins in `b` only");
+  }
+  if (!object.contains("k")) {
+    throw key_error(json_path, "k", "missing, expected the spring stiffness (a positive number)");
+  }
+  const double k = positive_number(json_path, object, "k");
+  const bool constant_mass = object.contains("m");
+  const double m = constant_mass ? positive_number(json_path, object, "m") : 0.0;
+  const std::string obj_path = existing_file(json_path, object, "obj", "an OBJ mesh");
+  const std::string texture =
+      object.contains("png") ? existing_file(json_path, object, "png", "a PNG texture") : "";
+
+  const ObjMesh mesh = read_obj(obj_path);
+  Scene scene;
+  scene.name = std::filesystem::path(json_path).stem().string();
+  SpringNetwork& network = scene.network;
+  network.V = mesh.V;
+  network.E = face_springs(mesh.faces);
+  network.F = fan_triangles(mesh.faces);
+  network.m = constant_mass ? Eigen::VectorXd::Constant(mesh.V.rows(), m).eval()
+                            : area_masses(json_path, network);
+  try {
+    validate_spring_network(network);
+  } catch (const InputError& error) {
+    throw InputError(json_path + ": " + error.what());
+  }
+  scene.pins = pins(json_path, object, mesh.V.rows());
+  scene.description = "course scene: " + std::to_string(network.V.rows()) + " vertices, " +
+                      std::to_string(network.E.rows()) + " springs";
+
+  scene.params.k = k;
+  scene.params.dt = course_time_step;
+  scene.params.iterations = course_iterations;
+  scene.params.gravity = Eigen::Vector3d(0.0, course_gravity, 0.0);
+  scene.params.gravity_model = GravityModel::force_per_vertex;
+
+  scene.look.uv = mesh.uv;
+  scene.look.texture = texture;
+  if (!texture.empty() && mesh.uv.size() == 0) {
+    scene.notes.push_back("the OBJ has no `vt` texture coordinates, so its texture cannot show");
+  }
+  return scene;
+}
+
+Scene load_course_scene(const std::string& json_path) {
+  std::error_code ignored;
+  if (!std::filesystem::is_regular_file(json_path, ignored)) {
+    throw InputError(json_path + ": no such file, expected a course scene (JSON)");
+  }
+  std::ifstream file(json_path, std::ios::binary);
+  std::stringstream contents;
+  contents << file.rdbuf();
+  if (!file) throw InputError(json_path + ": could not read the file");
+  const std::string text = contents.str();
+  nlohmann::json object;
+  try {
+    object = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    throw InputError(json_path + ": line " + std::to_string(line_of_byte(text, error.byte)) +
+                     ": malformed JSON: " + parse_error_detail(error.what()));
+  }
+  return load_course_scene(json_path, object);
+}
+
+}  // namespace wobble

@@ -1,0 +1,121 @@
+#include "load_mesh.h"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+#include "io/read_medit_mesh.h"
+#include "io/read_obj.h"
+#include "io/read_tetgen.h"
+#include "sim/face_springs.h"
+#include "sim/input_error.h"
+#include "sim/tet_mesh.h"
+#include "sim/tetrahedralize_surface.h"
+#include "sim/voronoi_masses.h"
+
+namespace wobble {
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot);
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+// Springs, boundary and volume weights of a tetrahedral mesh, without unused vertices (they would
+// have no mass and no spring, which makes the system singular).
+LoadedMesh volume_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
+  std::vector<int> new_index(V.rows(), -1);
+  int used = 0;
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    for (int c = 0; c < 4; ++c) {
+      if (new_index[T(t, c)] < 0) new_index[T(t, c)] = used++;
+    }
+  }
+  // Keep the file's order among the vertices that stay.
+  used = 0;
+  for (int& index : new_index) {
+    if (index >= 0) index = used++;
+  }
+  LoadedMesh mesh;
+  mesh.kind = LoadedMesh::Kind::volume;
+  SpringNetwork& network = mesh.network;
+  network.V.resize(used, 3);
+  for (Eigen::Index i = 0; i < V.rows(); ++i) {
+    if (new_index[i] >= 0) network.V.row(new_index[i]) = V.row(i);
+  }
+  Eigen::MatrixXi tets(T.rows(), 4);
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    for (int c = 0; c < 4; ++c)
+      tets(t, c) = new_index[T(t, c)];
+  }
+  network.E = tet_mesh_edges(tets);
+  network.F = tet_mesh_boundary_faces(network.V, tets);
+  network.m = tet_mesh_lumped_masses(network.V, tets, 1.0);
+  return mesh;
+}
+
+LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution) {
+  const ObjMesh obj = read_obj(path);
+  const Eigen::MatrixXi triangles = fan_triangles(obj.faces);
+  if (fill) {
+    if (triangles.rows() == 0) {
+      throw InputError(path + ": has no faces to fill with tetrahedra");
+    }
+    Eigen::MatrixXd TV;
+    Eigen::MatrixXi TT;
+    try {
+      tetrahedralize_surface(obj.V, triangles, fill_resolution, TV, TT);
+    } catch (const InputError& error) {
+      throw InputError(path + ": cannot fill: " + error.what());
+    }
+    return volume_mesh(TV, TT);
+  }
+  LoadedMesh mesh;
+  mesh.network.V = obj.V;
+  mesh.network.E = face_springs(obj.faces);
+  mesh.network.F = triangles;
+  mesh.uv = obj.uv;
+  if (triangles.rows() == 0) {
+    mesh.kind = LoadedMesh::Kind::lines;
+    mesh.network.m = Eigen::VectorXd::Ones(obj.V.rows());
+  } else {
+    mesh.kind = LoadedMesh::Kind::surface;
+    mesh.network.m = voronoi_masses(obj.V, triangles);
+    // A vertex on no face (only on l lines) has no area; give it the mean so it has a mass.
+    const double mean = mesh.network.m.sum() / static_cast<double>(mesh.network.m.size());
+    for (Eigen::Index i = 0; i < mesh.network.m.size(); ++i) {
+      if (!(mesh.network.m(i) > 0.0)) mesh.network.m(i) = mean;
+    }
+  }
+  return mesh;
+}
+
+}  // namespace
+
+bool is_mesh_file(const std::string& path) {
+  const std::string extension = extension_of(path);
+  return extension == ".obj" || extension == ".mesh" || extension == ".node" || extension == ".ele";
+}
+
+LoadedMesh load_mesh(const std::string& path, bool fill, int fill_resolution) {
+  const std::string extension = extension_of(path);
+  if (extension == ".obj") return obj_mesh(path, fill, fill_resolution);
+  if (fill) throw InputError(path + ": only an OBJ surface can be filled with tetrahedra");
+  if (extension == ".mesh") {
+    const TetMeshFile file = read_medit_mesh(path);
+    return volume_mesh(file.V, file.T);
+  }
+  if (extension == ".node" || extension == ".ele") {
+    const TetMeshFile file = read_tetgen(path);
+    return volume_mesh(file.V, file.T);
+  }
+  throw InputError(path + ": unknown mesh format (expected .obj, .mesh, .node or .ele)");
+}
+
+}  // namespace wobble

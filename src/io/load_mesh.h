@@ -1,0 +1,36 @@
+#ifndef WOBBLE_IO_LOAD_MESH_H
+#define WOBBLE_IO_LOAD_MESH_H
+
+#include <Eigen/Core>
+#include <string>
+
+#include "sim/spring_network.h"
+
+namespace wobble {
+
+// A spring network read from a mesh file, before any material is chosen.
+struct LoadedMesh {
+  // V, E and F as simulated; m holds mass weights, not masses: the area around each vertex
+  // (m², surfaces), the volume (m³, tetrahedral meshes) or 1 (networks of lines only).
+  SpringNetwork network;
+  Eigen::MatrixXd uv;  // #V by 2 from the OBJ's vt, or empty
+  enum class Kind { surface, volume, lines } kind = Kind::surface;
+};
+
+// Read a mesh file by its extension:
+//   .obj          springs between every two vertices of each face (l lines: one spring), render
+//                 faces fan-triangulated, weights = lumped Voronoi areas; with `fill`, the closed
+//                 surface is filled with tetrahedra (voxel grid of `fill_resolution` cells along
+//                 its longest side) and simulated as a volume
+//   .mesh         MEDIT tetrahedra
+//   .node / .ele  TetGen tetrahedra (either file of the pair)
+// Tetrahedral meshes: springs are the edges, render faces the boundary, weights the lumped
+// volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
+LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12);
+
+// Whether `path` ends in an extension load_mesh reads.
+bool is_mesh_file(const std::string& path);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,92 @@
+#include "load_scene.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "io/course_scene.h"
+#include "io/load_mesh.h"
+#include "io/scene_pins.h"
+#include "io/wobble_scene.h"
+#include "sim/builtin_scenes.h"
+#include "sim/input_error.h"
+
+namespace wobble {
+
+namespace {
+
+std::string extension_of(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+Scene bare_mesh_scene(const std::string& path, bool fill) {
+  LoadedMesh mesh = load_mesh(path, fill);
+  Scene scene;
+  scene.name = std::filesystem::path(path).stem().string();
+  const bool volume = mesh.kind == LoadedMesh::Kind::volume;
+  scene.description = std::string(volume ? "tetrahedral mesh " : "surface mesh ") + path;
+  mesh.network.m *= volume ? 200.0 : (mesh.kind == LoadedMesh::Kind::surface ? 0.25 : 0.01);
+  scene.params.k = volume ? 1500.0 : 400.0;
+  // A cloth hangs from its top; a solid stands on its base.
+  scene.pins = extreme_vertices(mesh.network.V, volume ? -1 : 1);
+  scene.notes.push_back("no pins given: pinned the " + std::to_string(scene.pins.size()) +
+                        (volume ? " lowest" : " top-most") + " vertices of " + path);
+  scene.network = std::move(mesh.network);
+  if (mesh.uv.rows() == scene.network.V.rows()) scene.look.uv = mesh.uv;
+  validate_spring_network(scene.network);
+  return scene;
+}
+
+}  // namespace
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& error) {
+    const std::size_t end = std::min<std::size_t>(error.byte, text.size());
+    const long line = 1 + std::count(text.begin(), text.begin() + end, '\n');
+    std::string what = error.what();
+    // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line..";
+    // keep what follows the last ": ", which says what was expected.
+    const std::size_t colon = what.rfind(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    throw InputError(path + ": line " + std::to_string(line) + ": malformed JSON: " + what);
+  }
+}
+
+Scene load_scene(const std::string& source, bool fill) {
+  const std::vector<std::string> builtins = builtin_scene_names();
+  if (std::find(builtins.begin(), builtins.end(), source) != builtins.end()) {
+    if (fill) throw InputError("--fill: only an OBJ surface can be filled, not '" + source + "'");
+    return make_builtin_scene(source);
+  }
+  if (!std::filesystem::exists(source)) {
+    std::string known;
+    for (const std::string& name : builtins)
+      known += (known.empty() ? "" : ", ") + name;
+    throw InputError("'" + source + "': no such scene file or built-in scene (built-in: " + known +
+                     ")");
+  }
+  if (extension_of(source) == ".json") {
+    if (fill) throw InputError("--fill: only an OBJ surface can be filled; set it in the scene");
+    const nlohmann::json object = read_json_file(source);
+    if (is_course_scene(object)) return load_course_scene(source, object);
+    if (is_wobble_scene(object)) return load_wobble_scene(source, object);
+    throw InputError(source +
+                     ": not a scene: expected a Wobble scene (with \"mesh\") or a course scene "
+                     "(with \"obj\" and \"b\")");
+  }
+  if (is_mesh_file(source)) return bare_mesh_scene(source, fill);
+  throw InputError(source + ": unknown kind of file (expected .json, .obj, .mesh, .node or .ele)");
+}
+
+}  // namespace wobble

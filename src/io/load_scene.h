@@ -1,0 +1,26 @@
+#ifndef WOBBLE_IO_LOAD_SCENE_H
+#define WOBBLE_IO_LOAD_SCENE_H
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sim/scene.h"
+
+namespace wobble {
+
+// The scene `source` names: a built-in scene ("cloth", "jelly"), or a file:
+//   .json         the course's scene format (keys "obj" and "b") or Wobble's own ("mesh")
+//   .obj          a bare surface: area masses (0.25 kg/m²), k = 400, its top-most vertices
+//                 pinned; with `fill`, filled with tetrahedra and simulated as a jelly
+//   .mesh, .node, .ele   a tetrahedral mesh: volume masses (200 kg/m³), k = 1500, its lowest
+//                 vertices pinned
+// What was chosen for the user is recorded in scene.notes. Throws InputError with one line naming
+// the file and the line or key at fault.
+Scene load_scene(const std::string& source, bool fill = false);
+
+// Parse a JSON file, with a parse error reported as "PATH: line L: ...".
+nlohmann::json read_json_file(const std::string& path);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,36 @@
+#ifndef WOBBLE_IO_READ_OBJ_H
+#define WOBBLE_IO_READ_OBJ_H
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+// A Wavefront OBJ file read as a spring network's raw material: positions, polygons as written
+// (not triangulated), and per-vertex texture coordinates.
+struct ObjMesh {
+  Eigen::MatrixXd V;  // #V by 3 vertex positions, in the order of the `v` lines
+  // 0-based polygons: every `f` element in file order (2-vertex faces included, each with at
+  // least 2 distinct vertices), then every segment of every `l` polyline as a 2-vertex face.
+  std::vector<std::vector<int>> faces;
+  // #V by 2 texture coordinates: for each vertex the `vt` of the first face corner that gives
+  // it one (vertices that none gives stay (0, 0)). Empty when no face corner has a `vt`.
+  Eigen::MatrixXd uv;
+};
+
+// Read an OBJ file with tinyobjloader (double precision, no triangulation). Only `v`, `vt`,
+// `f` and `l` matter; other statements (groups, materials, normals, points) are ignored.
+// Indices may be 1-based or negative (counting back from the latest vertex, as OBJ allows).
+// Coordinates are the correctly rounded doubles of their decimals (strtod), so a file written by
+// write_obj reads back bit for bit; tinyobjloader's own number reader can be an ulp off.
+//
+// Throws InputError, with a one-line message "PATH: line L: what, expected what" where a line
+// is to blame, for: a missing or unreadable file, a coordinate that is not a finite number, an
+// index that is 0, malformed or out of range, a face or line of fewer than 2 vertices, a face
+// that uses a vertex twice, and a file with no vertices or with no faces and no lines.
+ObjMesh read_obj(const std::string& path);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,256 @@
+#include "wobble_scene.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "io/json_fields.h"
+#include "io/load_mesh.h"
+#include "io/scene_pins.h"
+#include "sim/cloth_grid.h"
+#include "sim/input_error.h"
+#include "sim/jelly_block.h"
+
+namespace wobble {
+
+namespace {
+
+// The shape and what kind of thing it is, before any material.
+struct Shape {
+  LoadedMesh mesh;
+  int cloth_resolution = 0;  // > 0 for the cloth generator: its grid names pins
+  double default_k = 400.0;
+};
+
+std::string relative_to(const std::string& scene_path, const std::string& file) {
+  const std::filesystem::path path(file);
+  if (path.is_absolute()) return file;
+  return (std::filesystem::path(scene_path).parent_path() / path).lexically_normal().string();
+}
+
+Shape cloth_shape(JsonFields& mesh) {
+  ClothGridOptions options;
+  options.resolution = mesh.whole("resolution", 2, 1000).value_or(40);
+  options.size = mesh.positive("size").value_or(1.0);
+  options.areal_density = 1.0;  // masses come out as areas; the material scales them
+  if (mesh.has("springs")) {
+    const nlohmann::json& springs = mesh.raw("springs");
+    if (!springs.is_array()) mesh.fail("springs", "a list of \"structural\", \"shear\", \"bend\"");
+    options.structural = options.shear = options.bend = false;
+    for (const nlohmann::json& kind : springs) {
+      const std::string name = kind.is_string() ? kind.get<std::string>() : "";
+      if (name == "structural") {
+        options.structural = true;
+      } else if (name == "shear") {
+        options.shear = true;
+      } else if (name == "bend") {
+        options.bend = true;
+      } else {
+        mesh.fail("springs", "a list of \"structural\", \"shear\", \"bend\"");
+      }
+    }
+  }
+  const std::string orientation = mesh.text("orientation").value_or("horizontal");
+  if (orientation != "horizontal" && orientation != "vertical") {
+    mesh.fail("orientation", "\"horizontal\" or \"vertical\"");
+  }
+  const double height = mesh.number("height").value_or(orientation == "vertical" ? 1.6 : 1.2);
+
+  Shape shape;
+  shape.cloth_resolution = options.resolution;
+  shape.mesh.kind = LoadedMesh::Kind::surface;
+  shape.mesh.network = make_cloth_grid(options);
+  Eigen::MatrixXd& V = shape.mesh.network.V;
+  if (orientation == "vertical") {
+    // Turn the sheet up about x so row 0 is the top edge at `height`, facing +z:
+    // (x, y, z) → (x, −z, y), then lift.
+    const Eigen::VectorXd z = V.col(2);
+    V.col(2) = V.col(1);
+    V.col(1) = -z.array() + (height - 0.5 * options.size);
+  } else {
+    V.col(1).array() += height;
+  }
+  // Texture coordinates: u along columns, v up from the bottom row, as OBJ's vt.
+  const int n = options.resolution;
+  shape.mesh.uv.resize(n * n, 2);
+  for (int row = 0; row < n; ++row) {
+    for (int column = 0; column < n; ++column) {
+      shape.mesh.uv.row(cloth_grid_vertex(n, row, column)) << column / double(n - 1),
+          1.0 - row / double(n - 1);
+    }
+  }
+  return shape;
+}
+
+Shape jelly_shape(JsonFields& mesh) {
+  JellyBlockOptions options;
+  options.resolution = mesh.whole("resolution", 1, 64).value_or(8);
+  options.size = mesh.positive("size").value_or(0.5);
+  options.density = 1.0;  // masses come out as volumes
+  Shape shape;
+  shape.mesh.kind = LoadedMesh::Kind::volume;
+  shape.mesh.network = make_jelly_block(options);
+  shape.default_k = 1500.0;
+  return shape;
+}
+
+Shape file_shape(const std::string& path, JsonFields& mesh) {
+  const std::string file = relative_to(path, *mesh.text("file"));
+  if (!std::filesystem::is_regular_file(file)) {
+    throw InputError(mesh.where("file") + ": no such file '" + file + "'");
+  }
+  const bool fill = mesh.flag("fill").value_or(false);
+  const int resolution = mesh.whole("fill_resolution", 2, 100).value_or(12);
+  Shape shape;
+  shape.mesh = load_mesh(file, fill, resolution);
+  const double scale = mesh.positive("scale").value_or(1.0);
+  const Eigen::Vector3d offset = mesh.vector3("offset").value_or(Eigen::Vector3d::Zero());
+  SpringNetwork& network = shape.mesh.network;
+  network.V = ((network.V * scale).rowwise() + offset.transpose()).eval();
+  if (shape.mesh.kind == LoadedMesh::Kind::surface) network.m *= scale * scale;
+  if (shape.mesh.kind == LoadedMesh::Kind::volume) network.m *= scale * scale * scale;
+  if (shape.mesh.kind == LoadedMesh::Kind::volume) shape.default_k = 1500.0;
+  return shape;
+}
+
+// Masses from the material: a density per unit of what the weights measure, or a total mass.
+void set_masses(JsonFields& material, LoadedMesh& mesh) {
+  if (material.has("density") && material.has("mass")) {
+    material.fail("mass", "either density or mass, not both");
+  }
+  const double default_density = mesh.kind == LoadedMesh::Kind::volume    ? 200.0
+                                 : mesh.kind == LoadedMesh::Kind::surface ? 0.25
+                                                                          : 0.01;
+  Eigen::VectorXd& m = mesh.network.m;
+  if (const std::optional<double> mass = material.positive("mass")) {
+    m *= *mass / m.sum();
+  } else {
+    m *= material.positive("density").value_or(default_density);
+  }
+}
+
+}  // namespace
+
+bool is_wobble_scene(const nlohmann::json& object) {
+  return object.is_object() && object.contains("mesh");
+}
+
+Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
+  JsonFields top(path, object);
+  std::vector<std::string> unknown;
+  Scene scene;
+  scene.name = top.text("name").value_or(std::filesystem::path(path).stem().string());
+  scene.description = top.text("description").value_or("scene file " + path);
+
+  JsonFields mesh = top.object("mesh");
+  Shape shape;
+  if (mesh.has("generator")) {
+    const std::string generator = *mesh.text("generator");
+    if (generator == "cloth") {
+      shape = cloth_shape(mesh);
+    } else if (generator == "jelly") {
+      shape = jelly_shape(mesh);
+    } else {
+      mesh.fail("generator", "\"cloth\" or \"jelly\"");
+    }
+  } else if (mesh.has("file")) {
+    shape = file_shape(path, mesh);
+  } else {
+    throw InputError(top.where("mesh") + ": expected a \"generator\" or a \"file\"");
+  }
+  for (const std::string& key : mesh.unread())
+    unknown.push_back(key);
+
+  scene.params.k = shape.default_k;
+  if (top.has("material")) {
+    JsonFields material = top.object("material");
+    scene.params.k = material.positive("k").value_or(shape.default_k);
+    set_masses(material, shape.mesh);
+    for (const std::string& key : material.unread())
+      unknown.push_back(key);
+  } else {
+    JsonFields none(path, nlohmann::json::object());
+    set_masses(none, shape.mesh);
+  }
+  scene.network = std::move(shape.mesh.network);
+
+  if (top.has("simulation")) {
+    JsonFields simulation = top.object("simulation");
+    scene.params.dt = simulation.positive("dt").value_or(scene.params.dt);
+    scene.params.iterations = simulation.whole("iterations", 1, 10000).value_or(50);
+    if (simulation.has("gravity")) {
+      // A number is the downward acceleration; a vector may point anywhere (a sideways part
+      // acts as a steady wind).
+      const nlohmann::json& gravity = simulation.raw("gravity");
+      if (gravity.is_number()) {
+        scene.params.gravity = Eigen::Vector3d(0.0, -*simulation.number("gravity"), 0.0);
+      } else {
+        scene.params.gravity = *simulation.vector3("gravity");
+      }
+    }
+    for (const std::string& key : simulation.unread())
+      unknown.push_back(key);
+  }
+
+  if (top.has("pins")) {
+    scene.pins = scene_pins(top, "pins", scene.network.V, shape.cloth_resolution);
+  }
+  const Eigen::Index n = scene.network.V.rows();
+  if (top.has("initial_velocity")) {
+    const nlohmann::json& velocity = top.raw("initial_velocity");
+    scene.initial_velocity = Eigen::MatrixXd::Zero(n, 3);
+    if (velocity.is_object()) {
+      // Sway: sideways (x) speed growing linearly with height, `sway` m/s at the top.
+      JsonFields sway = top.object("initial_velocity");
+      const double top_speed = sway.number("sway").value_or(0.0);
+      const double low = scene.network.V.col(1).minCoeff();
+      const double span = std::max(scene.network.V.col(1).maxCoeff() - low, 1e-12);
+      scene.initial_velocity.col(0) = top_speed * (scene.network.V.col(1).array() - low) / span;
+      for (const std::string& key : sway.unread())
+        unknown.push_back(key);
+    } else {
+      scene.initial_velocity.rowwise() = top.vector3("initial_velocity")->transpose();
+    }
+  }
+
+  if (top.has("camera")) {
+    JsonFields camera = top.object("camera");
+    scene.look.camera_position = camera.vector3("position");
+    scene.look.camera_target = camera.vector3("target");
+    if (scene.look.camera_position.has_value() != scene.look.camera_target.has_value()) {
+      camera.fail("target", "both a position and a target");
+    }
+    for (const std::string& key : camera.unread())
+      unknown.push_back(key);
+  }
+  if (top.has("appearance")) {
+    JsonFields appearance = top.object("appearance");
+    scene.look.front_color = appearance.color("front_color");
+    scene.look.back_color = appearance.color("back_color");
+    if (const std::optional<std::string> texture = appearance.text("texture")) {
+      scene.look.texture = relative_to(path, *texture);
+      if (!std::filesystem::is_regular_file(scene.look.texture)) {
+        throw InputError(appearance.where("texture") + ": no such file '" + scene.look.texture +
+                         "'");
+      }
+      if (shape.mesh.uv.rows() != n) {
+        scene.notes.push_back(path + ": the mesh has no texture coordinates; texture ignored");
+      }
+    }
+    for (const std::string& key : appearance.unread())
+      unknown.push_back(key);
+  }
+  if (shape.mesh.uv.rows() == n) scene.look.uv = shape.mesh.uv;
+
+  for (const std::string& key : top.unread())
+    unknown.push_back(key);
+  if (!unknown.empty()) {
+    std::string list;
+    for (const std::string& key : unknown)
+      list += (list.empty() ? "" : ", ") + key;
+    scene.notes.push_back(path + ": unknown keys ignored: " + list);
+  }
+  validate_spring_network(scene.network);
+  return scene;
+}
+
+}  // namespace wobble

@@ -1,0 +1,21 @@
+#ifndef WOBBLE_IO_WOBBLE_SCENE_H
+#define WOBBLE_IO_WOBBLE_SCENE_H
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "sim/scene.h"
+
+namespace wobble {
+
+// Whether a parsed JSON object is a Wobble scene: it has a "mesh".
+bool is_wobble_scene(const nlohmann::json& object);
+
+// Build the scene a Wobble scene file describes (the README documents the format). `path` names
+// the file in messages and anchors relative paths. Unknown keys do not stop loading: they become
+// a note naming them. Throws InputError naming the file, the key and what was expected.
+Scene load_wobble_scene(const std::string& path, const nlohmann::json& object);
+
+}  // namespace wobble
+
+#endif

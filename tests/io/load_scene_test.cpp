@@ -1,0 +1,87 @@
+#include "io/load_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "io/write_obj.h"
+#include "sim/builtin_scenes.h"
+#include "sim/input_error.h"
+#include "temporary_folder.h"
+
+namespace {
+
+using wobble::testing::TemporaryFolder;
+
+std::string error_of(const std::string& source, bool fill = false) {
+  try {
+    wobble::load_scene(source, fill);
+  } catch (const wobble::InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+// A unit cube's surface, 8 vertices and 12 triangles facing out, standing on y = 0.
+void write_cube(const std::string& path) {
+  std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                         "v 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                         "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+                         "f 4 8 7\nf 4 7 3\nf 1 5 8\nf 1 8 4\nf 2 3 7\nf 2 7 6\n";
+}
+
+TEST(LoadScene, BuiltInNamesGiveTheBuiltInScenes) {
+  const wobble::Scene cloth = wobble::load_scene("cloth");
+  EXPECT_EQ(cloth.network.V, wobble::make_builtin_scene("cloth").network.V);
+  EXPECT_NE(error_of("clothes").find("no such scene file or built-in scene (built-in: cloth, "
+                                     "jelly)"),
+            std::string::npos);
+}
+
+TEST(LoadScene, BareObjIsPinnedAtItsTopAndSaysSo) {
+  TemporaryFolder folder;
+  // A 1 m × 1 m vertical quad made of two triangles, plus a vertex below on a line.
+  std::ofstream(folder.file("sheet.obj")) << "v 0 2 0\nv 1 2 0\nv 1 1 0\nv 0 1 0\n"
+                                             "f 1 4 3\nf 1 3 2\n";
+  const wobble::Scene scene = wobble::load_scene(folder.file("sheet.obj"));
+  EXPECT_EQ(scene.name, "sheet");
+  EXPECT_EQ(scene.pins, (std::vector<int>{0, 1}));
+  ASSERT_EQ(scene.notes.size(), 1u);
+  EXPECT_NE(scene.notes[0].find("pinned the 2 top-most vertices"), std::string::npos);
+  EXPECT_EQ(scene.network.E.rows(), 5);                   // 4 sides and the shared diagonal
+  EXPECT_NEAR(scene.network.m.sum(), 0.25 * 1.0, 1e-12);  // 0.25 kg/m² over 1 m²
+  EXPECT_EQ(scene.params.k, 400.0);
+}
+
+TEST(LoadScene, ClosedObjFilledIsAJellyOnItsBase) {
+  TemporaryFolder folder;
+  write_cube(folder.file("cube.obj"));
+  const wobble::Scene scene = wobble::load_scene(folder.file("cube.obj"), /*fill=*/true);
+  EXPECT_GT(scene.network.V.rows(), 8);
+  EXPECT_NEAR(scene.network.m.sum(), 200.0 * 1.0, 200.0 * 0.05);  // 200 kg/m³ × about 1 m³
+  EXPECT_FALSE(scene.pins.empty());
+  for (int i : scene.pins)
+    EXPECT_NEAR(scene.network.V(i, 1), 0.0, 1e-9);
+  EXPECT_NE(error_of(folder.file("cube.obj") + ".none"), "(no error)");
+  EXPECT_NE(error_of("cloth", true).find("--fill"), std::string::npos);
+}
+
+TEST(LoadScene, ExportedObjLoadsAgain) {
+  TemporaryFolder folder;
+  const wobble::Scene cloth = wobble::make_builtin_scene("cloth");
+  wobble::write_obj(folder.file("out.obj"), cloth.network.V, cloth.network.F, cloth.network.E);
+  const wobble::Scene again = wobble::load_scene(folder.file("out.obj"));
+  // The OBJ holds shortest round-trip decimals; tinyobjloader's own number parser may round the
+  // last bit differently from strtod, hence a relative 1e-15 rather than equality.
+  EXPECT_LE((again.network.V - cloth.network.V).cwiseAbs().maxCoeff(), 1e-15 * 1.2);
+  EXPECT_EQ(again.network.F, cloth.network.F);
+}
+
+TEST(LoadScene, UnknownFilesAreRefusedByName) {
+  TemporaryFolder folder;
+  std::ofstream(folder.file("notes.txt")) << "hello";
+  const std::string message = error_of(folder.file("notes.txt"));
+  EXPECT_NE(message.find("notes.txt: unknown kind of file"), std::string::npos) << message;
+}
+
+}  // namespace

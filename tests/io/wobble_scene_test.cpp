@@ -1,0 +1,149 @@
+#include "io/wobble_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <fstream>
+
+#include "io/load_scene.h"
+#include "sim/builtin_scenes.h"
+#include "sim/input_error.h"
+#include "temporary_folder.h"
+
+namespace {
+
+using wobble::testing::TemporaryFolder;
+
+// Write `json` as FOLDER/scene.json and load it.
+wobble::Scene load(const TemporaryFolder& folder, const std::string& json) {
+  std::ofstream(folder.file("scene.json")) << json;
+  return wobble::load_scene(folder.file("scene.json"));
+}
+
+// The InputError message that loading `json` gives.
+std::string error_of(const std::string& json) {
+  TemporaryFolder folder;
+  try {
+    load(folder, json);
+  } catch (const wobble::InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+TEST(WobbleScene, ClothGeneratorMatchesTheBuiltInCloth) {
+  TemporaryFolder folder;
+  const wobble::Scene scene = load(folder, R"({
+    "mesh": {"generator": "cloth", "resolution": 40, "size": 1.0, "height": 1.2},
+    "pins": "top-corners",
+    "material": {"k": 400, "density": 0.25}
+  })");
+  const wobble::Scene builtin = wobble::make_builtin_scene("cloth");
+  EXPECT_TRUE(scene.network.V.isApprox(builtin.network.V));
+  EXPECT_EQ(scene.network.E, builtin.network.E);
+  EXPECT_EQ(scene.network.F, builtin.network.F);
+  EXPECT_TRUE(scene.network.m.isApprox(builtin.network.m, 1e-12));
+  EXPECT_EQ(scene.pins, builtin.pins);
+  EXPECT_EQ(scene.params.k, builtin.params.k);
+  EXPECT_EQ(scene.name, "scene");  // no "name": the file's stem
+  EXPECT_TRUE(scene.notes.empty());
+}
+
+TEST(WobbleScene, JellyGeneratorMatchesTheBuiltInJelly) {
+  TemporaryFolder folder;
+  const wobble::Scene scene = load(folder, R"({
+    "name": "j", "mesh": {"generator": "jelly"}, "pins": "bottom",
+    "initial_velocity": {"sway": 2.0}
+  })");
+  const wobble::Scene builtin = wobble::make_builtin_scene("jelly");
+  EXPECT_TRUE(scene.network.V.isApprox(builtin.network.V));
+  EXPECT_TRUE(scene.network.m.isApprox(builtin.network.m, 1e-12));
+  EXPECT_EQ(scene.pins, builtin.pins);
+  EXPECT_TRUE(scene.initial_velocity.isApprox(builtin.initial_velocity));
+  EXPECT_EQ(scene.params.k, 1500.0);
+}
+
+TEST(WobbleScene, VerticalClothHasItsTopEdgeAtTheHeightFacingPlusZ) {
+  TemporaryFolder folder;
+  const wobble::Scene scene = load(folder, R"({
+    "mesh": {"generator": "cloth", "resolution": 5, "size": 2.0, "orientation": "vertical",
+             "height": 3.0, "springs": ["structural"]},
+    "pins": ["top-edge", 24], "material": {"mass": 2.0},
+    "simulation": {"dt": 0.01, "iterations": 7, "gravity": 5}
+  })");
+  const Eigen::MatrixXd& V = scene.network.V;
+  EXPECT_DOUBLE_EQ(V.col(1).maxCoeff(), 3.0);
+  EXPECT_DOUBLE_EQ(V.col(1).minCoeff(), 1.0);
+  EXPECT_DOUBLE_EQ(V.col(2).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(scene.pins, (std::vector<int>{0, 1, 2, 3, 4, 24}));
+  EXPECT_EQ(scene.network.E.rows(), 2 * 5 * 4);  // structural only
+  EXPECT_NEAR(scene.network.m.sum(), 2.0, 1e-12);
+  EXPECT_EQ(scene.params.dt, 0.01);
+  EXPECT_EQ(scene.params.iterations, 7);
+  EXPECT_TRUE(scene.params.gravity.isApprox(Eigen::Vector3d(0, -5, 0)));
+  // Faces turn to +z: the first triangle's normal.
+  const Eigen::RowVector3d a = V.row(scene.network.F(0, 0)), b = V.row(scene.network.F(0, 1)),
+                           c = V.row(scene.network.F(0, 2));
+  EXPECT_GT((b - a).cross(c - a).z(), 0.0);
+  // Texture coordinates: v = 1 along the top edge.
+  ASSERT_EQ(scene.look.uv.rows(), 25);
+  EXPECT_EQ(scene.look.uv(0, 1), 1.0);
+  EXPECT_EQ(scene.look.uv(24, 0), 1.0);
+}
+
+TEST(WobbleScene, CameraColoursAndUnknownKeys) {
+  TemporaryFolder folder;
+  const wobble::Scene scene = load(folder, R"({
+    "mesh": {"generator": "cloth", "resolution": 3, "colour": 1},
+    "camera": {"position": [0, 1, 5], "target": [0, 1, 0]},
+    "appearance": {"front_color": [1, 0, 0], "back_color": [0, 0, 1]},
+    "wind": 3
+  })");
+  EXPECT_TRUE(scene.look.camera_position->isApprox(Eigen::Vector3d(0, 1, 5)));
+  EXPECT_TRUE(scene.look.front_color->isApprox(Eigen::Vector3d(1, 0, 0)));
+  ASSERT_EQ(scene.notes.size(), 1u);
+  EXPECT_NE(scene.notes[0].find("unknown keys ignored: mesh.colour, wind"), std::string::npos)
+      << scene.notes[0];
+  EXPECT_TRUE(scene.pins.empty());  // none asked for, none given
+}
+
+TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"mesh": {"generator": "torus"}})", "mesh.generator: expected \"cloth\" or \"jelly\""},
+      {R"({"mesh": {}})", "mesh: expected a \"generator\" or a \"file\""},
+      {R"({"mesh": {"generator": "cloth"}, "material": {"k": -3}})",
+       "material.k: expected a positive number, got -3"},
+      {R"({"mesh": {"generator": "cloth"}, "material": {"k": "stiff"}})",
+       "material.k: expected a number, got \"stiff\""},
+      {R"({"mesh": {"generator": "cloth"}, "material": {"density": 1, "mass": 1}})",
+       "expected either density or mass"},
+      {R"({"mesh": {"generator": "cloth"}, "simulation": {"dt": 0}})", "simulation.dt"},
+      {R"({"mesh": {"generator": "cloth", "resolution": 1}})", "mesh.resolution"},
+      {R"({"mesh": {"generator": "jelly"}, "pins": "top-edge"})", "only on the cloth generator"},
+      {R"({"mesh": {"generator": "cloth", "resolution": 3}, "pins": [9]})",
+       "vertex index 9 is out of range (0 to 8)"},
+      {R"({"mesh": {"generator": "cloth"}, "pins": [1.5]})", "pins: expected a vertex index"},
+      {R"({"mesh": {"file": "missing.obj"}})", "missing.obj"},
+      {R"({"mesh": {"generator": "cloth"}, "appearance": {"texture": "none.png"}})",
+       "appearance.texture: no such file"},
+      {R"({"mesh": {"generator": "cloth"}, "appearance": {"front_color": [2, 0, 0]}})",
+       "appearance.front_color: expected a colour"},
+      {R"({"mesh": {"generator": "cloth"}, "camera": {"position": [0, 0, 1]}})",
+       "camera.target: expected both a position and a target"},
+      {R"({"mesh": {"generator": "cloth"},)", "line 1: malformed JSON"},
+      {R"({"something": 1})", "not a scene"},
+  };
+  for (const auto& [json, expected] : cases) {
+    const std::string message = error_of(json);
+    EXPECT_NE(message.find("scene.json"), std::string::npos) << json << " -> " << message;
+    EXPECT_NE(message.find(expected), std::string::npos) << json << " -> " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(WobbleScene, MalformedJsonGivesTheLine) {
+  const std::string message = error_of("{\n  \"mesh\": {\"generator\": \"cloth\"},\n  oops\n}");
+  EXPECT_NE(message.find("line 3: malformed JSON"), std::string::npos) << message;
+}
+
+}  // namespace
