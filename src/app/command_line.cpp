@@ -20,15 +20,6 @@ namespace wobble {
 
 namespace {
 
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ')
-    text.pop_back();
-  return text;
-}
-
 std::string number_text(double value) {
   std::ostringstream text;
   text << value;

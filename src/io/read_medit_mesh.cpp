@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sim/input_error.h"
+#include "sim/tet_mesh.h"
 
 namespace wobble {
 
@@ -214,12 +215,7 @@ TetMeshFile read_medit_mesh(const std::string& path) {
   for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
     const Eigen::Vector3d a = mesh.V.row(mesh.T(t, 0)), b = mesh.V.row(mesh.T(t, 1)),
                           c = mesh.V.row(mesh.T(t, 2)), d = mesh.V.row(mesh.T(t, 3));
-    double longest = 0.0;
-    const Eigen::Vector3d edges[] = {b - a, c - a, d - a, c - b, d - b, d - c};
-    for (const Eigen::Vector3d& edge : edges)
-      longest = std::max(longest, edge.norm());
-    const double volume = (b - a).dot((c - a).cross(d - a)) / 6.0;
-    if (!(std::abs(volume) > 1e-12 * longest * longest * longest)) {
+    if (tetrahedron_is_flat(a, b, c, d)) {
       words.fail("expected a tetrahedron with volume in " + row_name("Tetrahedra", t) +
                      ", but its corners are repeated or coplanar",
                  tet_lines[t]);

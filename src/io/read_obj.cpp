@@ -169,15 +169,6 @@ int resolve(int raw, int before, int count, const std::string& what, const std::
   return index;
 }
 
-std::string one_line(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  while (!text.empty() && text.back() == ' ')
-    text.pop_back();
-  return text;
-}
-
 }  // namespace
 
 ObjMesh read_obj(const std::string& path) {

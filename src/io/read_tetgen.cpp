@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sim/input_error.h"
+#include "sim/tet_mesh.h"
 
 namespace wobble {
 
@@ -192,12 +193,7 @@ TetMeshFile read_tetgen(const std::string& path) {
       ele.number(line, field, "an attribute");
     const Eigen::Vector3d a = mesh.V.row(mesh.T(t, 0)), b = mesh.V.row(mesh.T(t, 1)),
                           c = mesh.V.row(mesh.T(t, 2)), d = mesh.V.row(mesh.T(t, 3));
-    double longest = 0.0;
-    const Eigen::Vector3d edges[] = {b - a, c - a, d - a, c - b, d - b, d - c};
-    for (const Eigen::Vector3d& edge : edges)
-      longest = std::max(longest, edge.norm());
-    const double volume = (b - a).dot((c - a).cross(d - a)) / 6.0;
-    if (!(std::abs(volume) > 1e-12 * longest * longest * longest)) {
+    if (tetrahedron_is_flat(a, b, c, d)) {
       ele.fail(line.number,
                "expected a tetrahedron with volume, but its corners are repeated or coplanar");
     }

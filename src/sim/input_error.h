@@ -2,6 +2,7 @@
 #define WOBBLE_SIM_INPUT_ERROR_H
 
 #include <stdexcept>
+#include <string>
 
 namespace wobble {
 
@@ -11,6 +12,17 @@ class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// `text` on one line: line breaks become spaces and trailing spaces go, so a message quoted from
+// a library (a parser's report, say) still fits the one-line rule.
+inline std::string one_line(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  while (!text.empty() && text.back() == ' ')
+    text.pop_back();
+  return text;
+}
 
 }  // namespace wobble
 

@@ -80,4 +80,16 @@ Eigen::VectorXd tet_mesh_lumped_masses(const Eigen::MatrixXd& V, const Eigen::Ma
   return m;
 }
 
+bool tetrahedron_is_flat(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c, const Eigen::Vector3d& d) {
+  double longest = 0.0;
+  for (const Eigen::Vector3d& edge :
+       {Eigen::Vector3d(b - a), Eigen::Vector3d(c - a), Eigen::Vector3d(d - a),
+        Eigen::Vector3d(c - b), Eigen::Vector3d(d - b), Eigen::Vector3d(d - c)}) {
+    longest = std::max(longest, edge.norm());
+  }
+  const double volume = (b - a).dot((c - a).cross(d - a)) / 6.0;
+  return !(std::abs(volume) > 1e-12 * longest * longest * longest);
+}
+
 }  // namespace wobble

@@ -34,6 +34,12 @@ Eigen::MatrixXi tet_mesh_boundary_faces(const Eigen::MatrixXd& V, const Eigen::M
 Eigen::VectorXd tet_mesh_lumped_masses(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T,
                                        double density);
 
+// Whether the tetrahedron (a, b, c, d) has no volume to speak of: |volume| at most 1e-12 of its
+// longest edge cubed (repeated or coplanar corners). Such a tetrahedron gives its corners no mass
+// and its faces no orientation, so mesh readers refuse it.
+bool tetrahedron_is_flat(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                         const Eigen::Vector3d& c, const Eigen::Vector3d& d);
+
 }  // namespace wobble
 
 #endif

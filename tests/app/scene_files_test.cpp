@@ -35,7 +35,9 @@ TEST(SceneFiles, EveryShippedSceneAndMeshOpensHeadless) {
                                     shot + "'",
                                 "DISPLAY=");
     EXPECT_EQ(run.exit_code, 0) << source << ": " << run.err;
-    if (run.exit_code == 0) EXPECT_EQ(wobble::read_png(shot).width, 96) << source;
+    if (run.exit_code == 0) {
+      EXPECT_EQ(wobble::read_png(shot).width, 96) << source;
+    }
   }
 }
 
