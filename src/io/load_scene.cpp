@@ -33,8 +33,10 @@ Scene bare_mesh_scene(const std::string& path, bool fill) {
   scene.params.k = volume ? 1500.0 : 400.0;
   // A cloth hangs from its top; a solid stands on its base.
   scene.pins = extreme_vertices(mesh.network.V, volume ? -1 : 1);
+  const bool one = scene.pins.size() == 1;
   scene.notes.push_back("no pins given: pinned the " + std::to_string(scene.pins.size()) +
-                        (volume ? " lowest" : " top-most") + " vertices of " + path);
+                        (volume ? " lowest" : " top-most") + (one ? " vertex" : " vertices") +
+                        " of " + path);
   scene.network = std::move(mesh.network);
   if (mesh.uv.rows() == scene.network.V.rows()) scene.look.uv = mesh.uv;
   validate_spring_network(scene.network);
