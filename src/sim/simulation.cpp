@@ -106,7 +106,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   pin_count_ = static_cast<int>(initial_pins_.size());
   update_external_forces();
 
-  solver_.analyzePattern(Q_);
+  solver_.analyze(Q_);
   ++symbolic_analyses_;
   refactorize();
   reset();
@@ -175,7 +175,7 @@ void Simulation::step() {
     const auto global_start = Clock::now();
     local_ms += std::chrono::duration<double, std::milli>(global_start - local_start).count();
 
-    next_ = solver_.solve(rhs_);
+    solver_.solve(rhs_, next_);
     global_ms += milliseconds_since(global_start);
     if (observer_) observer_(iteration, next_);
   }
@@ -319,11 +319,8 @@ void Simulation::refactorize() {
   for (std::size_t i = 0; i < diagonal_slot_.size(); ++i) {
     q[diagonal_slot_[i]] += network_.m(i) * inverse_dt2 + (pinned_[i] ? pin_weight : 0.0);
   }
-  solver_.factorize(Q_);
   ++numeric_factorizations_;
-  if (solver_.info() != Eigen::Success) {
-    throw std::runtime_error("the Cholesky factorization of Q failed");
-  }
+  if (!solver_.factorize(Q_)) throw std::runtime_error("the Cholesky factorization of Q failed");
 }
 
 }  // namespace wobble

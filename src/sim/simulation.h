@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "cholesky_solver.h"
 #include "spring_network.h"
 
 namespace wobble {
@@ -139,7 +140,7 @@ class Simulation {
   Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored
   Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_
   std::vector<Eigen::Index> diagonal_slot_;  // index of Q(i,i) in Q_.valuePtr()
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> solver_;
+  CholeskySolver solver_;
 
   std::function<void(int, const Eigen::MatrixXd&)> observer_;
   StepTiming timing_;
