@@ -15,7 +15,7 @@ run_packages=(
 )
 # What the test suite needs on top: the window smoke test runs under a virtual X server.
 test_packages=(
-  libgtest-dev
+  libgtest-dev libbenchmark-dev
   xvfb xauth
 )
 

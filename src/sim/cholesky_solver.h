@@ -26,7 +26,9 @@ class CholeskySolver {
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x);
 
   // Nonzeros of L, the diagonal included: the memory one solve streams through, twice.
-  long factor_nonzeros() const { return static_cast<long>(rows_.size() + inverse_diagonal_.size()); }
+  long factor_nonzeros() const {
+    return static_cast<long>(rows_.size() + inverse_diagonal_.size());
+  }
 
  private:
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt_;

@@ -94,6 +94,9 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
     }
   }
 
+  local_step_ = std::make_unique<LocalStep>(E, r_, network_.V);
+  chebyshev_ = ChebyshevAcceleration(n);
+  solved_.resize(n, 3);
   previous_.resize(n, 3);
   current_.resize(n, 3);
   next_.resize(n, 3);
@@ -110,6 +113,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   ++symbolic_analyses_;
   refactorize();
   reset();
+  if (params_.chebyshev) calibrate_chebyshev();
   precompute_ms_ = milliseconds_since(start);
 }
 
@@ -139,43 +143,25 @@ void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd
 
 void Simulation::step() {
   const auto step_start = Clock::now();
-  const Eigen::MatrixXi& E = network_.E;
   const double k = params_.k;
-  const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
 
-  // y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
-  y_.noalias() = network_.m.asDiagonal() * (2.0 * current_ - previous_);
-  y_ *= inverse_dt2;
-  y_ += fext_;
-  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
-    if (pinned_[i]) y_.row(i) += pin_weight * targets_.row(i);
-  }
+  compute_y();
 
   next_ = current_;
+  if (params_.chebyshev) chebyshev_.start(next_);
   double local_ms = 0.0, global_ms = 0.0;
   for (int iteration = 0; iteration < params_.iterations; ++iteration) {
     const auto local_start = Clock::now();
-    // Local step fused with the product k Aᵀd: spring e = [i j] adds k d_e to row i and
-    // subtracts it from row j, so neither A nor d is ever formed.
-    rhs_ = y_;
-    for (Eigen::Index e = 0; e < E.rows(); ++e) {
-      const int i = E(e, 0), j = E(e, 1);
-      Eigen::RowVector3d d = next_.row(i) - next_.row(j);
-      const double length = d.norm();
-      if (length > 0.0) {
-        d = (d / length) * r_(e);
-      } else {
-        // Coincident vertices have no direction: fall back on the rest direction, which pushes
-        // them apart along the line they started on (r_e times the unit rest vector).
-        d = network_.V.row(i) - network_.V.row(j);
-      }
-      rhs_.row(i) += k * d;
-      rhs_.row(j) -= k * d;
-    }
+    local_step_->apply(next_, k, y_, rhs_);
     const auto global_start = Clock::now();
     local_ms += std::chrono::duration<double, std::milli>(global_start - local_start).count();
 
-    solver_.solve(rhs_, next_);
+    if (params_.chebyshev) {
+      solver_.solve(rhs_, solved_);
+      chebyshev_.accelerate(iteration, solved_, next_);
+    } else {
+      solver_.solve(rhs_, next_);
+    }
     global_ms += milliseconds_since(global_start);
     if (observer_) observer_(iteration, next_);
   }
@@ -211,6 +197,39 @@ void Simulation::set_iterations(int iterations) {
   changed.iterations = iterations;
   validate_params(changed);
   params_.iterations = iterations;
+}
+
+void Simulation::compute_y() {
+  // y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
+  const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
+  y_.noalias() = network_.m.asDiagonal() * (2.0 * current_ - previous_);
+  y_ *= inverse_dt2;
+  y_ += fext_;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
+    if (pinned_[i]) y_.row(i) += pin_weight * targets_.row(i);
+  }
+}
+
+void Simulation::set_chebyshev(bool on) {
+  params_.chebyshev = on;
+  if (on && !chebyshev_calibrated_) calibrate_chebyshev();
+}
+
+void Simulation::calibrate_chebyshev() {
+  // The paper's calibration: plain iterations of one step, from the current state, watching the
+  // updates shrink. Nothing of the state changes.
+  constexpr int calibration_iterations = 40;
+  compute_y();
+  std::vector<double> update_norms;
+  next_ = current_;
+  for (int iteration = 0; iteration < calibration_iterations; ++iteration) {
+    local_step_->apply(next_, params_.k, y_, rhs_);
+    solver_.solve(rhs_, solved_);
+    update_norms.push_back((solved_ - next_).norm());
+    next_.swap(solved_);
+  }
+  chebyshev_.set_spectral_radius(ChebyshevAcceleration::estimate_spectral_radius(update_norms));
+  chebyshev_calibrated_ = true;
 }
 
 void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {

@@ -4,9 +4,12 @@
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include "chebyshev.h"
 #include "cholesky_solver.h"
+#include "local_step.h"
 #include "spring_network.h"
 
 namespace wobble {
@@ -23,6 +26,9 @@ struct SimulationParams {
   int iterations = 50;     // local-global iterations per step, 1 to Simulation::max_iterations
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s² (or N, see gravity_model)
   GravityModel gravity_model = GravityModel::acceleration;
+  // Chebyshev semi-iterative acceleration of the iterations (Wang 2015). Off by default, and for
+  // the course's scenes, whose positions must match the reference.
+  bool chebyshev = false;
 };
 
 // Wall-clock time of the last step, split between the local step (springs) and the global step
@@ -78,6 +84,11 @@ class Simulation {
   // Keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.
   void set_dt(double dt);
   void set_iterations(int iterations);
+  // Chebyshev acceleration on or off. Turning it on for the first time estimates ρ with a short
+  // run of plain iterations from the current state (which it leaves unchanged).
+  void set_chebyshev(bool on);
+  // The spectral radius the acceleration uses; 0 until estimated.
+  double chebyshev_spectral_radius() const { return chebyshev_.spectral_radius(); }
   void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
 
   // Pin vertex i where it is now (target = current position). No-op if already pinned.
@@ -117,12 +128,16 @@ class Simulation {
   // How often Q was analysed symbolically (once, in the constructor) and factorized numerically.
   int symbolic_analyses() const { return symbolic_analyses_; }
   int numeric_factorizations() const { return numeric_factorizations_; }
+  // Nonzeros of the Cholesky factor L of Q, its diagonal included.
+  long factor_nonzeros() const { return solver_.factor_nonzeros(); }
 
  private:
   void check_vertex(int i, const char* what) const;
   void update_external_forces();
   // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
   void refactorize();
+  void calibrate_chebyshev();
+  void compute_y();
 
   SpringNetwork network_;
   SimulationParams params_;
@@ -141,6 +156,10 @@ class Simulation {
   Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_
   std::vector<Eigen::Index> diagonal_slot_;  // index of Q(i,i) in Q_.valuePtr()
   CholeskySolver solver_;
+  ChebyshevAcceleration chebyshev_{0};
+  bool chebyshev_calibrated_ = false;
+  Eigen::MatrixXd solved_;  // the plain iterate q̂, when accelerating
+  std::unique_ptr<LocalStep> local_step_;
 
   std::function<void(int, const Eigen::MatrixXd&)> observer_;
   StepTiming timing_;

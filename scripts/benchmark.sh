@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Install what is missing, build, and time Wobble's stepper against the plain reference on the
+# curtain, 128x128 and 256x256 cloths and the jelly; ends with one table and the Chebyshev curve.
+# Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source scripts/ensure-packages.sh
+ensure_packages test
+build_wobble -DWOBBLE_BUILD_TESTS=ON
+exec build/tests/wobble_benchmark "$@"

@@ -1,0 +1,35 @@
+#ifndef WOBBLE_SIM_LOCAL_STEP_H
+#define WOBBLE_SIM_LOCAL_STEP_H
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace wobble {
+
+// The local step fused with the product k Aᵀd (A the #E by #V signed incidence matrix):
+//   d_e = r_e (p_i − p_j)/‖p_i − p_j‖ for every spring e = [i j], then rhs = y + k Aᵀd,
+// so neither A nor d is formed as a sparse product. The springs are split across threads
+// (OpenMP), then each vertex gathers its springs in a fixed order, so the result does not depend
+// on the number of threads. Allocates nothing after construction.
+class LocalStep {
+ public:
+  // E  #E by 2 springs; r  #E rest lengths; V  #V by 3 rest positions (for the direction of a
+  // spring whose ends meet).
+  LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const Eigen::MatrixXd& V);
+
+  // rhs = y + k Aᵀd(p); p, y and rhs #V by 3, rhs already of that shape.
+  void apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y, Eigen::MatrixXd& rhs);
+
+ private:
+  Eigen::MatrixXi E_;
+  Eigen::VectorXd r_;
+  Eigen::MatrixXd rest_direction_;  // #E by 3: r_e times the unit rest vector
+  Eigen::MatrixXd d_;               // #E by 3: this iteration's directions
+  // Vertex i's springs are incident_[s] for s in [incident_start_[i], incident_start_[i+1]);
+  // a non-negative entry e means i is the spring's first end (+d_e), ~e its second (−d_e).
+  std::vector<int> incident_start_, incident_;
+};
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,73 @@
+#include "sim/chebyshev.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/builtin_scenes.h"
+#include "sim/simulation.h"
+
+namespace {
+
+TEST(Chebyshev, SpectralRadiusIsTheSettledRatioOfUpdates) {
+  std::vector<double> norms;
+  for (int k = 0; k < 20; ++k)
+    norms.push_back((k < 5 ? 3.0 : 1.0) * std::pow(0.8, k));  // an early transient, then 0.8
+  EXPECT_NEAR(wobble::ChebyshevAcceleration::estimate_spectral_radius(norms), 0.8, 1e-12);
+  EXPECT_EQ(wobble::ChebyshevAcceleration::estimate_spectral_radius({}), 0.0);
+  EXPECT_EQ(wobble::ChebyshevAcceleration::estimate_spectral_radius({1.0, 2.0, 4.0}), 0.999);
+}
+
+// One step of `iterations` from the cloth's state after 20 frames; returns the error against
+// 400 plain iterations, relative to the error of the starting guess.
+double step_error(bool chebyshev, int iterations) {
+  const wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params);
+  simulation.set_iterations(10);
+  for (int frame = 0; frame < 20; ++frame)
+    simulation.step();
+  const Eigen::MatrixXd current = simulation.positions(),
+                        previous = simulation.previous_positions();
+  simulation.set_iterations(400);
+  simulation.step();
+  const Eigen::MatrixXd converged = simulation.positions();
+  simulation.set_state(current, previous);
+  simulation.set_chebyshev(chebyshev);
+  simulation.set_iterations(iterations);
+  simulation.step();
+  return (simulation.positions() - converged).norm() / (current - converged).norm();
+}
+
+TEST(Chebyshev, FourAcceleratedIterationsBeatTenPlainOnes) {
+  const double plain = step_error(false, 10);
+  const double accelerated = step_error(true, 4);
+  std::cout << "  error after 10 plain iterations " << plain << ", after 4 accelerated "
+            << accelerated << "\n";
+  EXPECT_LT(accelerated, plain);
+}
+
+TEST(Chebyshev, ConvergesToTheSameStep) {
+  // Acceleration changes how fast the iterations get there, not where they go: with enough
+  // iterations both approach the 400-iteration answer, the accelerated ones faster.
+  const double plain = step_error(false, 200), accelerated = step_error(true, 200);
+  std::cout << "  error after 200 iterations: plain " << plain << ", accelerated " << accelerated
+            << "\n";
+  // This soft cloth converges slowly (10 plain iterations leave 60% of the error): the accelerated
+  // run must be clearly closer, and close.
+  EXPECT_LT(accelerated, 0.75 * plain);
+  EXPECT_LT(accelerated, 0.1);
+}
+
+TEST(Chebyshev, EstimatesRhoOnceWhenTurnedOn) {
+  const wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params);
+  EXPECT_EQ(simulation.chebyshev_spectral_radius(), 0.0);
+  const Eigen::MatrixXd before = simulation.positions();
+  simulation.set_chebyshev(true);
+  EXPECT_GT(simulation.chebyshev_spectral_radius(), 0.5);
+  EXPECT_LT(simulation.chebyshev_spectral_radius(), 1.0);
+  EXPECT_EQ(simulation.positions(), before) << "calibration must not move the cloth";
+  EXPECT_TRUE(simulation.params().chebyshev);
+}
+
+}  // namespace

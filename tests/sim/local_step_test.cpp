@@ -1,0 +1,70 @@
+#include "sim/local_step.h"
+
+#include <gtest/gtest.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "sim/cloth_grid.h"
+#include "sim/signed_incidence_matrix_sparse.h"
+
+namespace {
+
+struct Fixture {
+  Fixture() {
+    wobble::ClothGridOptions options;
+    options.resolution = 12;
+    cloth = wobble::make_cloth_grid(options);
+    r.resize(cloth.E.rows());
+    for (Eigen::Index e = 0; e < cloth.E.rows(); ++e)
+      r(e) = (cloth.V.row(cloth.E(e, 0)) - cloth.V.row(cloth.E(e, 1))).norm();
+    p = cloth.V + 0.01 * Eigen::MatrixXd::Random(cloth.V.rows(), 3);
+    y = Eigen::MatrixXd::Random(cloth.V.rows(), 3);
+  }
+  wobble::SpringNetwork cloth;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd p, y;
+};
+
+TEST(LocalStep, MatchesKAtransposeDPlusY) {
+  Fixture f;
+  wobble::LocalStep local(f.cloth.E, f.r, f.cloth.V);
+  Eigen::MatrixXd rhs(f.p.rows(), 3);
+  local.apply(f.p, 250.0, f.y, rhs);
+  // The assignment's form: d from the normalized spring vectors, then k Aᵀd + y.
+  Eigen::SparseMatrix<double> A;
+  signed_incidence_matrix_sparse(f.p.rows(), f.cloth.E, A);
+  Eigen::MatrixXd d(f.cloth.E.rows(), 3);
+  for (Eigen::Index e = 0; e < f.cloth.E.rows(); ++e)
+    d.row(e) = f.r(e) * (f.p.row(f.cloth.E(e, 0)) - f.p.row(f.cloth.E(e, 1))).normalized();
+  const Eigen::MatrixXd expected = 250.0 * (A.transpose() * d) + f.y;
+  EXPECT_LE((rhs - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
+}
+
+TEST(LocalStep, CoincidentEndsPushApartAlongTheRestDirection) {
+  Fixture f;
+  const int i = f.cloth.E(0, 0), j = f.cloth.E(0, 1);
+  f.p.row(j) = f.p.row(i);
+  wobble::LocalStep local(f.cloth.E, f.r, f.cloth.V);
+  Eigen::MatrixXd rhs(f.p.rows(), 3);
+  local.apply(f.p, 1.0, Eigen::MatrixXd::Zero(f.p.rows(), 3), rhs);
+  EXPECT_TRUE(rhs.allFinite());
+}
+
+#ifdef _OPENMP
+TEST(LocalStep, SameResultWithOneThreadOrTwo) {
+  Fixture f;
+  wobble::LocalStep local(f.cloth.E, f.r, f.cloth.V);
+  Eigen::MatrixXd one(f.p.rows(), 3), two(f.p.rows(), 3);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  local.apply(f.p, 400.0, f.y, one);
+  omp_set_num_threads(2);
+  local.apply(f.p, 400.0, f.y, two);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(one, two);  // bit for bit: each vertex sums its springs in a fixed order
+}
+#endif
+
+}  // namespace
