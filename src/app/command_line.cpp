@@ -101,6 +101,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
+  app.add_flag("--chebyshev", command.chebyshev,
+               "Chebyshev acceleration of the iterations (Wang 2015)");
   app.add_option("--width", width, "Window or image width in pixels (default 1280)");
   app.add_option("--height", height, "Window or image height in pixels (default 720)");
   app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");

@@ -19,7 +19,7 @@ struct CommandLine {
   std::optional<double> dt;
   std::optional<int> iterations;
   bool stats = false;
-
+  bool chebyshev = false;  // Chebyshev acceleration of the iterations
   // Images (both modes) and what they show.
   int width = 1280, height = 720;  // window or offscreen image size, pixels
   std::string screenshot;          // PNG of the frame after the last step; empty: none

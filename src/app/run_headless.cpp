@@ -40,6 +40,7 @@ nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& sce
       {"springs", scene.network.E.rows()},
       {"pinned", simulation.pin_count()},
       {"iterations", params.iterations},
+      {"chebyshev", params.chebyshev},
       {"frames", frames},
       {"k", params.k},
       {"dt", params.dt},
@@ -101,6 +102,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   if (command.k) params.k = *command.k;
   if (command.dt) params.dt = *command.dt;
   if (command.iterations) params.iterations = *command.iterations;
+  if (command.chebyshev) params.chebyshev = true;
   Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
 
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);

@@ -43,6 +43,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.k = command.k;
   settings.dt = command.dt;
   settings.iterations = command.iterations;
+  settings.chebyshev = command.chebyshev;
   settings.layers.wireframe = command.wireframe;
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
@@ -60,6 +61,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   if (settings.k) scene.params.k = *settings.k;
   if (settings.dt) scene.params.dt = *settings.dt;
   if (settings.iterations) scene.params.iterations = *settings.iterations;
+  if (settings.chebyshev) scene.params.chebyshev = true;
   panel_.surface = settings.layers.surface;
   panel_.wireframe = settings.layers.wireframe;
   panel_.springs = settings.layers.springs;
@@ -92,6 +94,7 @@ void Viewer::load(Scene scene) {
   panel_.dt = static_cast<float>(scene_.params.dt);
   panel_.iterations = scene_.params.iterations;
   panel_.gravity = static_cast<float>(-scene_.params.gravity.y());
+  panel_.chebyshev = scene_.params.chebyshev;
 
   const SpringNetwork& network = scene_.network;
   triangles_.resize(3 * network.F.rows());
@@ -212,6 +215,7 @@ void Viewer::apply_panel_settings() {
   if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
   if (static_cast<float>(params.dt) != panel_.dt) simulation_->set_dt(panel_.dt);
   if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
+  if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
   if (static_cast<float>(-params.gravity.y()) != panel_.gravity) {
     simulation_->set_gravity(Eigen::Vector3d(0.0, -panel_.gravity, 0.0), params.gravity_model);
   }

@@ -24,6 +24,7 @@ namespace wobble {
 struct ViewerSettings {
   std::optional<double> k, dt;
   std::optional<int> iterations;
+  bool chebyshev = false;  // turn Chebyshev acceleration on
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
 };

@@ -177,6 +177,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     JsonFields simulation = top.object("simulation");
     scene.params.dt = simulation.positive("dt").value_or(scene.params.dt);
     scene.params.iterations = simulation.whole("iterations", 1, 10000).value_or(50);
+    scene.params.chebyshev = simulation.flag("chebyshev").value_or(false);
     if (simulation.has("gravity")) {
       // A number is the downward acceleration; a vector may point anywhere (a sideways part
       // acts as a steady wind).

@@ -62,6 +62,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   ImGui::SliderInt("iterations", &settings.iterations, PanelSettings::min_iterations,
                    PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::Checkbox("Chebyshev acceleration", &settings.chebyshev);
   ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity, "%.2f",
                      ImGuiSliderFlags_AlwaysClamp);
 

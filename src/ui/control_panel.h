@@ -13,6 +13,7 @@ struct PanelSettings {
   float dt = 1.0f / 60.0f;  // s
   int iterations = 50;      //
   float gravity = 9.81f;    // m/s², downwards
+  bool chebyshev = false;   // Chebyshev acceleration of the iterations
   bool paused = false;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
   int scene = 0;  // index into the scene names
