@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/read_json_file.h"
 #include "io/read_obj.h"
 #include "sim/face_springs.h"
 #include "sim/input_error.h"
@@ -110,22 +111,6 @@ Eigen::VectorXd area_masses(const std::string& json_path, const SpringNetwork& n
   return masses;
 }
 
-int line_of_byte(const std::string& text, std::size_t byte) {
-  // nlohmann counts the characters read, so the offending one is text[byte - 1].
-  const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
-  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + end, '\n'));
-}
-
-// nlohmann's message without its "[json.exception...] parse error at line L, column C: " head,
-// since the line is given in Wobble's own form.
-std::string parse_error_detail(const std::string& what) {
-  const std::size_t column = what.find("column");
-  const std::size_t colon = column == std::string::npos ? column : what.find(": ", column);
-  std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-  std::replace(detail.begin(), detail.end(), '\n', ' ');
-  return detail;
-}
-
 }  // namespace
 
 bool is_course_scene(const nlohmann::json& object) {
@@ -184,23 +169,7 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
 }
 
 Scene load_course_scene(const std::string& json_path) {
-  std::error_code ignored;
-  if (!std::filesystem::is_regular_file(json_path, ignored)) {
-    throw InputError(json_path + ": no such file, expected a course scene (JSON)");
-  }
-  std::ifstream file(json_path, std::ios::binary);
-  std::stringstream contents;
-  contents << file.rdbuf();
-  if (!file) throw InputError(json_path + ": could not read the file");
-  const std::string text = contents.str();
-  nlohmann::json object;
-  try {
-    object = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    throw InputError(json_path + ": line " + std::to_string(line_of_byte(text, error.byte)) +
-                     ": malformed JSON: " + parse_error_detail(error.what()));
-  }
-  return load_course_scene(json_path, object);
+  return load_course_scene(json_path, read_json_file(json_path));
 }
 
 }  // namespace wobble

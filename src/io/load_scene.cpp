@@ -7,6 +7,7 @@
 
 #include "io/course_scene.h"
 #include "io/load_mesh.h"
+#include "io/read_json_file.h"
 #include "io/scene_pins.h"
 #include "io/wobble_scene.h"
 #include "sim/builtin_scenes.h"
@@ -44,26 +45,6 @@ Scene bare_mesh_scene(const std::string& path, bool fill) {
 }
 
 }  // namespace
-
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& error) {
-    const std::size_t end = std::min<std::size_t>(error.byte, text.size());
-    const long line = 1 + std::count(text.begin(), text.begin() + end, '\n');
-    std::string what = error.what();
-    // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line..";
-    // keep what follows the last ": ", which says what was expected.
-    const std::size_t colon = what.rfind(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw InputError(path + ": line " + std::to_string(line) + ": malformed JSON: " + what);
-  }
-}
 
 Scene load_scene(const std::string& source, bool fill) {
   const std::vector<std::string> builtins = builtin_scene_names();

@@ -1,7 +1,6 @@
 #ifndef WOBBLE_IO_LOAD_SCENE_H
 #define WOBBLE_IO_LOAD_SCENE_H
 
-#include <nlohmann/json.hpp>
 #include <string>
 
 #include "sim/scene.h"
@@ -17,9 +16,6 @@ namespace wobble {
 // What was chosen for the user is recorded in scene.notes. Throws InputError with one line naming
 // the file and the line or key at fault.
 Scene load_scene(const std::string& source, bool fill = false);
-
-// Parse a JSON file, with a parse error reported as "PATH: line L: ...".
-nlohmann::json read_json_file(const std::string& path);
 
 }  // namespace wobble
 

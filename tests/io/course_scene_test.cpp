@@ -181,7 +181,7 @@ TEST_F(CourseScene, OtherFilesAreNamed) {
     FAIL() << "expected InputError";
   } catch (const wobble::InputError& e) {
     EXPECT_EQ(std::string(e.what()),
-              folder_.file("absent.json") + ": no such file, expected a course scene (JSON)");
+              folder_.file("absent.json") + ": no such file, expected a scene (JSON)");
   }
 }
 
