@@ -18,7 +18,16 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-void validate_params(const SimulationParams& params) {
+// Throws InputError unless `positions` is a finite n by 3 matrix; `what` names it.
+void check_vertex_matrix(const Eigen::MatrixXd& positions, Eigen::Index n, const char* what) {
+  if (positions.rows() != n || positions.cols() != 3 || !positions.allFinite()) {
+    throw InputError(std::string(what) + " must be a finite " + std::to_string(n) + " by 3 matrix");
+  }
+}
+
+}  // namespace
+
+void validate_simulation_params(const SimulationParams& params) {
   if (!(params.k > 0.0) || !std::isfinite(params.k)) {
     throw InputError("k must be a positive finite stiffness, got " + std::to_string(params.k));
   }
@@ -33,15 +42,6 @@ void validate_params(const SimulationParams& params) {
   if (!params.gravity.allFinite()) throw InputError("gravity must be finite");
 }
 
-// Throws InputError unless `positions` is a finite n by 3 matrix; `what` names it.
-void check_vertex_matrix(const Eigen::MatrixXd& positions, Eigen::Index n, const char* what) {
-  if (positions.rows() != n || positions.cols() != 3 || !positions.allFinite()) {
-    throw InputError(std::string(what) + " must be a finite " + std::to_string(n) + " by 3 matrix");
-  }
-}
-
-}  // namespace
-
 Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
                        const SimulationParams& params, Eigen::MatrixXd initial_velocity)
     : network_(std::move(network)),
@@ -49,7 +49,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
       initial_velocity_(std::move(initial_velocity)) {
   const auto start = Clock::now();
   validate_spring_network(network_);
-  validate_params(params_);
+  validate_simulation_params(params_);
   const Eigen::Index n = network_.V.rows();
   if (initial_velocity_.size() != 0) check_vertex_matrix(initial_velocity_, n, "initial velocity");
   for (int i : pins) {
@@ -174,31 +174,6 @@ void Simulation::step() {
   timing_.total_ms = milliseconds_since(step_start);
 }
 
-void Simulation::set_k(double k) {
-  SimulationParams changed = params_;
-  changed.k = k;
-  validate_params(changed);
-  params_.k = k;
-  refactorize();
-}
-
-void Simulation::set_dt(double dt) {
-  SimulationParams changed = params_;
-  changed.dt = dt;
-  validate_params(changed);
-  // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
-  previous_ = current_ - (current_ - previous_) * (dt / params_.dt);
-  params_.dt = dt;
-  refactorize();
-}
-
-void Simulation::set_iterations(int iterations) {
-  SimulationParams changed = params_;
-  changed.iterations = iterations;
-  validate_params(changed);
-  params_.iterations = iterations;
-}
-
 void Simulation::compute_y() {
   // y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
   const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
@@ -208,11 +183,6 @@ void Simulation::compute_y() {
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
     if (pinned_[i]) y_.row(i) += pin_weight * targets_.row(i);
   }
-}
-
-void Simulation::set_chebyshev(bool on) {
-  params_.chebyshev = on;
-  if (on && !chebyshev_calibrated_) calibrate_chebyshev();
 }
 
 void Simulation::calibrate_chebyshev() {
@@ -230,60 +200,6 @@ void Simulation::calibrate_chebyshev() {
   }
   chebyshev_.set_spectral_radius(ChebyshevAcceleration::estimate_spectral_radius(update_norms));
   chebyshev_calibrated_ = true;
-}
-
-void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
-  SimulationParams changed = params_;
-  changed.gravity = gravity;
-  validate_params(changed);
-  params_.gravity = gravity;
-  params_.gravity_model = model;
-  update_external_forces();
-}
-
-void Simulation::pin(int i) {
-  check_vertex(i, "pin");
-  if (pinned_[i]) return;
-  pinned_[i] = 1;
-  ++pin_count_;
-  targets_.row(i) = current_.row(i);
-  refactorize();
-}
-
-void Simulation::unpin(int i) {
-  check_vertex(i, "unpin");
-  if (!pinned_[i]) return;
-  pinned_[i] = 0;
-  --pin_count_;
-  refactorize();
-}
-
-void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
-  check_vertex(i, "set_pin_target");
-  if (!pinned_[i]) {
-    throw std::invalid_argument("set_pin_target: vertex " + std::to_string(i) + " is not pinned");
-  }
-  if (!target.allFinite()) throw std::invalid_argument("set_pin_target: target is not finite");
-  targets_.row(i) = target.transpose();
-}
-
-bool Simulation::is_pinned(int i) const {
-  check_vertex(i, "is_pinned");
-  return pinned_[i] != 0;
-}
-
-std::vector<int> Simulation::pinned_vertices() const {
-  std::vector<int> result;
-  result.reserve(pin_count_);
-  for (std::size_t i = 0; i < pinned_.size(); ++i) {
-    if (pinned_[i]) result.push_back(static_cast<int>(i));
-  }
-  return result;
-}
-
-Eigen::Vector3d Simulation::pin_target(int i) const {
-  check_vertex(i, "pin_target");
-  return targets_.row(i).transpose();
 }
 
 void Simulation::set_iteration_observer(std::function<void(int, const Eigen::MatrixXd&)> observer) {

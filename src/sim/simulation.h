@@ -31,6 +31,10 @@ struct SimulationParams {
   bool chebyshev = false;
 };
 
+// Throws InputError unless k and dt are positive and finite, iterations within 1 to
+// Simulation::max_iterations and gravity finite.
+void validate_simulation_params(const SimulationParams& params);
+
 // Wall-clock time of the last step, split between the local step (springs) and the global step
 // (the prefactored solve).
 struct StepTiming {

@@ -1,0 +1,95 @@
+// The Simulation's setters: each changes what it must and no more (see the README's table of
+// costs): k and dt re-factorize numerically, pins re-factorize, targets and iterations do not.
+#include <stdexcept>
+#include <string>
+
+#include "input_error.h"
+#include "simulation.h"
+
+namespace wobble {
+
+void Simulation::set_k(double k) {
+  SimulationParams changed = params_;
+  changed.k = k;
+  validate_simulation_params(changed);
+  params_.k = k;
+  refactorize();
+}
+
+void Simulation::set_dt(double dt) {
+  SimulationParams changed = params_;
+  changed.dt = dt;
+  validate_simulation_params(changed);
+  // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
+  previous_ = current_ - (current_ - previous_) * (dt / params_.dt);
+  params_.dt = dt;
+  refactorize();
+}
+
+void Simulation::set_iterations(int iterations) {
+  SimulationParams changed = params_;
+  changed.iterations = iterations;
+  validate_simulation_params(changed);
+  params_.iterations = iterations;
+}
+
+void Simulation::set_chebyshev(bool on) {
+  params_.chebyshev = on;
+  if (on && !chebyshev_calibrated_) calibrate_chebyshev();
+}
+
+void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
+  SimulationParams changed = params_;
+  changed.gravity = gravity;
+  validate_simulation_params(changed);
+  params_.gravity = gravity;
+  params_.gravity_model = model;
+  update_external_forces();
+}
+
+void Simulation::pin(int i) {
+  check_vertex(i, "pin");
+  if (pinned_[i]) return;
+  pinned_[i] = 1;
+  ++pin_count_;
+  targets_.row(i) = current_.row(i);
+  refactorize();
+}
+
+void Simulation::unpin(int i) {
+  check_vertex(i, "unpin");
+  if (!pinned_[i]) return;
+  pinned_[i] = 0;
+  --pin_count_;
+  refactorize();
+}
+
+void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
+  check_vertex(i, "set_pin_target");
+  if (!pinned_[i]) {
+    throw std::invalid_argument("set_pin_target: vertex " + std::to_string(i) + " is not pinned");
+  }
+  if (!target.allFinite()) throw std::invalid_argument("set_pin_target: target is not finite");
+  targets_.row(i) = target.transpose();
+}
+
+bool Simulation::is_pinned(int i) const {
+  check_vertex(i, "is_pinned");
+  return pinned_[i] != 0;
+}
+
+std::vector<int> Simulation::pinned_vertices() const {
+  std::vector<int> result;
+  result.reserve(pin_count_);
+  for (std::size_t i = 0; i < pinned_.size(); ++i) {
+    if (pinned_[i]) result.push_back(static_cast<int>(i));
+  }
+  return result;
+}
+
+Eigen::Vector3d Simulation::pin_target(int i) const {
+  check_vertex(i, "pin_target");
+  return targets_.row(i).transpose();
+}
+
+}  // namespace wobble
