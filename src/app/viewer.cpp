@@ -67,10 +67,13 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.springs = settings.layers.springs;
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
-  camera_.yaw = settings.camera_yaw_degrees.value_or(default_yaw / degrees) * degrees;
-  camera_.pitch =
-      std::clamp(settings.camera_pitch_degrees.value_or(default_pitch / degrees) * degrees,
-                 -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+  if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
+  if (settings.camera_pitch_degrees) {
+    settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees,
+                                 -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+  }
+  camera_.yaw = settings_yaw_.value_or(default_yaw);
+  camera_.pitch = settings_pitch_.value_or(default_pitch);
   load(std::move(scene));
 }
 

@@ -151,3 +151,24 @@ TEST(Viewer, KeysPauseStepAndReset) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Viewer, ASceneCameraIsUsedAndTheCommandLineCanTurnIt) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  scene.look.camera_position = Eigen::Vector3d(0.0, 1.0, 4.0);
+  scene.look.camera_target = Eigen::Vector3d(0.0, 1.0, 0.0);
+  const wobble::Viewer from_scene(scene, wobble::ViewerSettings(), {"cloth"});
+  EXPECT_TRUE(from_scene.camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
+  EXPECT_NEAR(from_scene.camera().distance, 4.0f, 1e-5f);
+  EXPECT_NEAR(from_scene.camera().yaw, 0.0f, 1e-6f);
+  EXPECT_NEAR(from_scene.camera().pitch, 0.0f, 1e-6f);
+
+  wobble::ViewerSettings turned;
+  turned.camera_yaw_degrees = 90.0f;
+  const wobble::Viewer overridden(scene, turned, {"cloth"});
+  EXPECT_NEAR(overridden.camera().yaw, 3.14159265f / 2, 1e-5f);
+  EXPECT_NEAR(overridden.camera().distance, 4.0f, 1e-5f);
+}
+
+}  // namespace
