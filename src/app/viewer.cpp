@@ -69,8 +69,8 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.ground = settings.layers.ground;
   if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
   if (settings.camera_pitch_degrees) {
-    settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees,
-                                 -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+    settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees, -OrbitCamera::max_pitch,
+                                 OrbitCamera::max_pitch);
   }
   camera_.yaw = settings_yaw_.value_or(default_yaw);
   camera_.pitch = settings_pitch_.value_or(default_pitch);
@@ -80,11 +80,15 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
 Viewer::~Viewer() = default;
 
 void Viewer::load(Scene scene) {
+  // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
+  // was.
+  RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
+  auto simulation =
+      std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
   drag_.cancel();
   mode_ = Mode::idle;
   scene_ = std::move(scene);
-  simulation_ = std::make_unique<Simulation>(scene_.network, scene_.pins, scene_.params,
-                                             scene_.initial_velocity);
+  simulation_ = std::move(simulation);
   // The picker shows the scene as current; a scene from elsewhere joins the list.
   const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
   if (found == scene_labels_.end()) {
@@ -141,7 +145,7 @@ void Viewer::load(Scene scene) {
       uv_[2 * i + 1] = static_cast<float>(look.uv(i, 1));
     }
   }
-  texture_ = look.texture.empty() ? RgbaImage() : read_png(look.texture);
+  texture_ = std::move(texture);
   if (renderer_) attach_renderer();
 }
 
@@ -198,7 +202,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     // A scene file that fails to load leaves the current scene running, with the reason shown.
     try {
       load(load_scene(scene_sources_[panel_.scene]));
-    } catch (const InputError& error) {
+    } catch (const std::exception& error) {
       scene_.notes.push_back(error.what());
       panel_.scene =
           static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
