@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <utility>
 
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
 #include "scene_catalog.h"
-#include "sim/input_error.h"
 
 namespace wobble {
 
