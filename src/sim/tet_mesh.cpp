@@ -12,12 +12,15 @@ namespace wobble {
 
 namespace {
 
+// Positive when (b − a, c − a, d − a) is right-handed.
+double signed_volume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                     const Eigen::Vector3d& d) {
+  return (b - a).dot((c - a).cross(d - a)) / 6.0;
+}
+
 double signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
-  const Eigen::RowVector3d a = V.row(T(t, 0));
-  const Eigen::RowVector3d ab = V.row(T(t, 1)) - a;
-  const Eigen::RowVector3d ac = V.row(T(t, 2)) - a;
-  const Eigen::RowVector3d ad = V.row(T(t, 3)) - a;
-  return ab.dot(ac.cross(ad)) / 6.0;
+  return signed_volume(V.row(T(t, 0)).transpose(), V.row(T(t, 1)).transpose(),
+                       V.row(T(t, 2)).transpose(), V.row(T(t, 3)).transpose());
 }
 
 }  // namespace
@@ -88,8 +91,7 @@ bool tetrahedron_is_flat(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
         Eigen::Vector3d(c - b), Eigen::Vector3d(d - b), Eigen::Vector3d(d - c)}) {
     longest = std::max(longest, edge.norm());
   }
-  const double volume = (b - a).dot((c - a).cross(d - a)) / 6.0;
-  return !(std::abs(volume) > 1e-12 * longest * longest * longest);
+  return !(std::abs(signed_volume(a, b, c, d)) > 1e-12 * longest * longest * longest);
 }
 
 }  // namespace wobble

@@ -25,12 +25,11 @@ Point measure(Simulation& simulation, const Eigen::MatrixXd& current,
     simulation.set_state(current, previous);
     const auto start = std::chrono::steady_clock::now();
     simulation.step();
-    best = std::min(best, std::chrono::duration<double, std::milli>(
-                              std::chrono::steady_clock::now() - start)
-                              .count());
+    best = std::min(
+        best, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count());
   }
-  const double error =
-      (simulation.positions() - converged).norm() / (current - converged).norm();
+  const double error = (simulation.positions() - converged).norm() / (current - converged).norm();
   simulation.set_state(current, previous);
   return {best, error};
 }
@@ -73,10 +72,11 @@ void print_chebyshev_curve(const BenchmarkScene& scene) {
   }
   for (std::size_t i = 0; i < counts.size(); ++i) {
     if (chebyshev[i].error <= plain10) {
-      std::printf("chebyshev reaches the error of 10 plain iterations (%.4f) after %d: %.2f ms "
-                  "against %.2f ms, %.2f of the time\n",
-                  plain10, counts[i], chebyshev[i].milliseconds, plain10_ms,
-                  chebyshev[i].milliseconds / plain10_ms);
+      std::printf(
+          "chebyshev reaches the error of 10 plain iterations (%.4f) after %d: %.2f ms "
+          "against %.2f ms, %.2f of the time\n",
+          plain10, counts[i], chebyshev[i].milliseconds, plain10_ms,
+          chebyshev[i].milliseconds / plain10_ms);
       return;
     }
   }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sim/input_error.h"
+#include "sim/tet_mesh.h"
 #include "temporary_folder.h"
 
 namespace {
@@ -18,14 +19,9 @@ std::string write_file(const wobble::testing::TemporaryFolder& folder, const std
   return path;
 }
 
+// The lumped masses at density 1 add up to the total volume.
 double total_volume(const wobble::TetMeshFile& mesh) {
-  double volume = 0.0;
-  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.T(t, 0)), b = mesh.V.row(mesh.T(t, 1)),
-                          c = mesh.V.row(mesh.T(t, 2)), d = mesh.V.row(mesh.T(t, 3));
-    volume += std::abs((b - a).dot((c - a).cross(d - a))) / 6.0;
-  }
-  return volume;
+  return wobble::tet_mesh_lumped_masses(mesh.V, mesh.T, 1.0).sum();
 }
 
 // The unit cube's corners (v&1, v>>1&1, v>>2&1) as MEDIT rows, then its split into five

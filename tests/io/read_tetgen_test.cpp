@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sim/input_error.h"
+#include "sim/tet_mesh.h"
 #include "temporary_folder.h"
 
 namespace {
@@ -19,14 +20,9 @@ std::string write_pair(const wobble::testing::TemporaryFolder& folder, const std
   return folder.file(base);
 }
 
+// The lumped masses at density 1 add up to the total volume.
 double total_volume(const wobble::TetMeshFile& mesh) {
-  double volume = 0.0;
-  for (Eigen::Index t = 0; t < mesh.T.rows(); ++t) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.T(t, 0)), b = mesh.V.row(mesh.T(t, 1)),
-                          c = mesh.V.row(mesh.T(t, 2)), d = mesh.V.row(mesh.T(t, 3));
-    volume += std::abs((b - a).dot((c - a).cross(d - a))) / 6.0;
-  }
-  return volume;
+  return wobble::tet_mesh_lumped_masses(mesh.V, mesh.T, 1.0).sum();
 }
 
 TEST(ReadTetgen, OneBasedSingleTetrahedronFromAnyOfTheThreePaths) {
