@@ -1,42 +1,222 @@
 #include "cholesky_solver.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+
 namespace wobble {
 
-void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
-  llt_.analyzePattern(Q);
-  const Eigen::Index n = Q.rows();
-  permutation_.resize(n);
-  const auto& indices = llt_.permutationP().indices();
-  for (Eigen::Index i = 0; i < n; ++i)
-    permutation_[i] = indices(i);
-  work_.assign(4 * n, 0.0);
-}
+namespace {
 
-bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
-  llt_.factorize(Q);
-  if (llt_.info() != Eigen::Success) return false;
-  // Copy L out of Eigen's storage into plain arrays with the diagonal apart (inverted, so the
-  // solve multiplies), which is all the solve reads.
-  const Eigen::SparseMatrix<double>& L = llt_.matrixL().nestedExpression();
-  const Eigen::Index n = L.cols();
-  column_start_.resize(n + 1);
-  inverse_diagonal_.resize(n);
-  rows_.clear();
-  values_.clear();
-  rows_.reserve(L.nonZeros());
-  values_.reserve(L.nonZeros());
-  for (Eigen::Index j = 0; j < n; ++j) {
-    column_start_[j] = static_cast<int>(rows_.size());
-    for (Eigen::SparseMatrix<double>::InnerIterator it(L, j); it; ++it) {
-      if (it.row() == j) {
-        inverse_diagonal_[j] = 1.0 / it.value();
-      } else if (it.row() > j) {
-        rows_.push_back(static_cast<int>(it.row()));
-        values_.push_back(it.value());
+using ColumnBlock = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+
+}  // namespace
+
+void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
+  const int n = static_cast<int>(Q.rows());
+  // The fill-reducing ordering: Eigen's AMD, as SimplicialLLT would use it.
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> ordering;
+  ordering.analyzePattern(Q);
+  permutation_.resize(n);
+  for (int i = 0; i < n; ++i)
+    permutation_[i] = ordering.permutationP().indices()(i);
+
+  // The permuted lower triangle's pattern, as rows below each column and columns left of each row.
+  std::vector<std::vector<int>> below(n), left(n);
+  for (int j = 0; j < n; ++j) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
+      const int a = permutation_[it.row()], b = permutation_[j];
+      if (a > b) {
+        below[b].push_back(a);
+        left[a].push_back(b);
       }
     }
   }
-  column_start_[n] = static_cast<int>(rows_.size());
+  // Elimination tree (Liu's algorithm with path compression).
+  std::vector<int> parent(n, -1), ancestor(n, -1);
+  for (int i = 0; i < n; ++i) {
+    for (int k : left[i]) {
+      int r = k;
+      while (ancestor[r] != -1 && ancestor[r] != i) {
+        const int next = ancestor[r];
+        ancestor[r] = i;
+        r = next;
+      }
+      if (ancestor[r] == -1) {
+        ancestor[r] = i;
+        parent[r] = i;
+      }
+    }
+  }
+  // The pattern of each column of L below the diagonal: its own entries and its children's.
+  std::vector<std::vector<int>> children(n), pattern(n);
+  for (int j = 0; j < n; ++j) {
+    if (parent[j] >= 0) children[parent[j]].push_back(j);
+  }
+  std::vector<int> mark(n, -1);
+  for (int j = 0; j < n; ++j) {
+    std::vector<int>& rows = pattern[j];
+    mark[j] = j;
+    for (int r : below[j]) {
+      if (mark[r] != j) {
+        mark[r] = j;
+        rows.push_back(r);
+      }
+    }
+    for (int c : children[j]) {
+      for (int r : pattern[c]) {
+        if (mark[r] != j) {
+          mark[r] = j;
+          rows.push_back(r);
+        }
+      }
+    }
+    std::sort(rows.begin(), rows.end());
+  }
+  // Supernodes: column j + 1 joins j's when it is j's parent and its pattern is j's minus itself.
+  supernodes_.clear();
+  supernode_of_.assign(n, 0);
+  for (int j = 0; j < n; ++j) {
+    const bool joins =
+        j > 0 && parent[j - 1] == j && pattern[j - 1].size() == pattern[j].size() + 1;
+    if (!joins) {
+      Supernode s;
+      s.first = j;
+      supernodes_.push_back(s);
+    }
+    ++supernodes_.back().width;
+    supernode_of_[j] = static_cast<int>(supernodes_.size()) - 1;
+  }
+  rows_.clear();
+  long values = 0;
+  factor_nonzeros_ = 0;
+  for (Supernode& s : supernodes_) {
+    const int last = s.first + s.width - 1;
+    s.row_start = static_cast<long>(rows_.size());
+    s.value_start = values;
+    for (int c = 0; c < s.width; ++c)
+      rows_.push_back(s.first + c);
+    rows_.insert(rows_.end(), pattern[last].begin(), pattern[last].end());
+    s.rows = s.width + static_cast<int>(pattern[last].size());
+    values += static_cast<long>(s.rows) * s.width;
+    factor_nonzeros_ += static_cast<long>(s.rows) * s.width - s.width * (s.width - 1) / 2;
+  }
+  values_.assign(values, 0.0);
+  // The column copy for the solve: each column of each supernode, below its diagonal.
+  column_start_.assign(n + 1, 0);
+  inverse_diagonal_.assign(n, 0.0);
+  long entries = 0;
+  for (const Supernode& s : supernodes_) {
+    for (int c = 0; c < s.width; ++c) {
+      column_start_[s.first + c] = static_cast<int>(entries);
+      entries += s.rows - c - 1;
+    }
+  }
+  column_start_[n] = static_cast<int>(entries);
+  column_rows_.resize(entries);
+  column_source_.resize(entries);
+  for (const Supernode& s : supernodes_) {
+    for (int c = 0; c < s.width; ++c) {
+      long at = column_start_[s.first + c];
+      for (int r = c + 1; r < s.rows; ++r, ++at) {
+        column_rows_[at] = rows_[s.row_start + r];
+        column_source_[at] = s.value_start + static_cast<long>(c) * s.rows + r;
+      }
+    }
+  }
+  column_values_.assign(column_rows_.size(), 0.0);
+
+  // Where each stored value of Q lands in the blocks (its lower-triangle twin, once permuted).
+  std::vector<int> position(n, -1);
+  value_slot_.assign(Q.nonZeros(), -1);
+  std::vector<int> inverse(n);
+  for (int i = 0; i < n; ++i)
+    inverse[permutation_[i]] = i;
+  for (const Supernode& s : supernodes_) {
+    for (int r = 0; r < s.rows; ++r)
+      position[rows_[s.row_start + r]] = r;
+    for (int c = 0; c < s.width; ++c) {
+      const int column = inverse[s.first + c];  // the column of Q that becomes s.first + c
+      for (long k = Q.outerIndexPtr()[column]; k < Q.outerIndexPtr()[column + 1]; ++k) {
+        const int row = permutation_[Q.innerIndexPtr()[k]];
+        if (row < s.first + c) continue;  // upper triangle: its twin is counted instead
+        value_slot_[k] = s.value_start + static_cast<long>(c) * s.rows + position[row];
+      }
+    }
+    for (int r = 0; r < s.rows; ++r)
+      position[rows_[s.row_start + r]] = -1;
+  }
+
+  relative_.assign(n, -1);
+  link_head_.assign(supernodes_.size(), -1);
+  link_next_.assign(supernodes_.size(), -1);
+  cursor_.assign(supernodes_.size(), 0);
+  int tallest = 1;
+  for (const Supernode& s : supernodes_)
+    tallest = std::max(tallest, s.rows);
+  update_.resize(static_cast<std::size_t>(tallest) * tallest);
+  work_.assign(4 * static_cast<std::size_t>(n), 0.0);
+}
+
+bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
+  std::fill(values_.begin(), values_.end(), 0.0);
+  const double* q = Q.valuePtr();
+  for (std::size_t k = 0; k < value_slot_.size(); ++k) {
+    if (value_slot_[k] >= 0) values_[value_slot_[k]] += q[k];
+  }
+  std::fill(link_head_.begin(), link_head_.end(), -1);
+  const auto link = [&](int d, int target) {
+    link_next_[d] = link_head_[target];
+    link_head_[target] = d;
+  };
+  for (int s = 0; s < static_cast<int>(supernodes_.size()); ++s) {
+    const Supernode& node = supernodes_[s];
+    const int* rows = rows_.data() + node.row_start;
+    for (int r = 0; r < node.rows; ++r)
+      relative_[rows[r]] = r;
+    ColumnBlock block(values_.data() + node.value_start, node.rows, node.width,
+                      Eigen::OuterStride<>(node.rows));
+    // Left-looking: every earlier supernode with rows in this one's columns updates it.
+    int d = link_head_[s];
+    link_head_[s] = -1;
+    while (d >= 0) {
+      const int next_d = link_next_[d];
+      const Supernode& source = supernodes_[d];
+      const int* source_rows = rows_.data() + source.row_start;
+      const int p = cursor_[d];
+      int q_end = p;
+      while (q_end < source.rows && source_rows[q_end] < node.first + node.width)
+        ++q_end;
+      const int m = source.rows - p, k = q_end - p;
+      const ColumnBlock L(values_.data() + source.value_start, source.rows, source.width,
+                          Eigen::OuterStride<>(source.rows));
+      Eigen::Map<Eigen::MatrixXd> C(update_.data(), m, k);
+      C.noalias() = L.bottomRows(m) * L.middleRows(p, k).transpose();
+      for (int jj = 0; jj < k; ++jj) {
+        const int column = source_rows[p + jj] - node.first;
+        for (int ii = jj; ii < m; ++ii)
+          block(relative_[source_rows[p + ii]], column) -= C(ii, jj);
+      }
+      cursor_[d] = q_end;
+      if (q_end < source.rows) link(d, supernode_of_[source_rows[q_end]]);
+      d = next_d;
+    }
+    // The dense diagonal block, then the rows below it: B ← B L_diag⁻ᵀ.
+    using DiagonalRef = Eigen::Ref<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
+    DiagonalRef diagonal_block(block.topRows(node.width));
+    const Eigen::LLT<DiagonalRef> diagonal(diagonal_block);  // in place
+    if (diagonal.info() != Eigen::Success) return false;
+    if (node.rows > node.width) {
+      auto lower = block.topRows(node.width).triangularView<Eigen::Lower>();
+      lower.adjoint().solveInPlace<Eigen::OnTheRight>(block.bottomRows(node.rows - node.width));
+      cursor_[s] = node.width;
+      link(s, supernode_of_[rows[node.width]]);
+    }
+    for (int c = 0; c < node.width; ++c)
+      inverse_diagonal_[node.first + c] = 1.0 / block(c, c);
+  }
+  for (std::size_t k = 0; k < column_values_.size(); ++k)
+    column_values_[k] = values_[column_source_[k]];
   return true;
 }
 
@@ -49,8 +229,8 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
     row[1] = b(i, 1);
     row[2] = b(i, 2);
   }
-  // Forward: L z = P b, column by column; each column's value is used on all three coordinates
-  // while it is in a register.
+  // Forward: L z = P b, column by column; each column's value is used on all three
+  // coordinates while it is in a register.
   for (Eigen::Index j = 0; j < n; ++j) {
     double* wj = w + 4 * j;
     const double d = inverse_diagonal_[j];
@@ -59,8 +239,8 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
     wj[1] = z1;
     wj[2] = z2;
     for (int s = column_start_[j]; s < column_start_[j + 1]; ++s) {
-      double* wi = w + 4 * rows_[s];
-      const double v = values_[s];
+      double* wi = w + 4 * column_rows_[s];
+      const double v = column_values_[s];
       wi[0] -= v * z0;
       wi[1] -= v * z1;
       wi[2] -= v * z2;
@@ -71,8 +251,8 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
     double* wj = w + 4 * j;
     double s0 = wj[0], s1 = wj[1], s2 = wj[2];
     for (int s = column_start_[j]; s < column_start_[j + 1]; ++s) {
-      const double* wi = w + 4 * rows_[s];
-      const double v = values_[s];
+      const double* wi = w + 4 * column_rows_[s];
+      const double v = column_values_[s];
       s0 -= v * wi[0];
       s1 -= v * wi[1];
       s2 -= v * wi[2];

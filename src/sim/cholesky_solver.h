@@ -2,22 +2,25 @@
 #define WOBBLE_SIM_CHOLESKY_SOLVER_H
 
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 #include <vector>
 
 namespace wobble {
 
-// Sparse Cholesky factorization Q = Pᵀ L Lᵀ P (AMD ordering) with a solve for the three
-// coordinates of a #V by 3 right-hand side in one pass over L, where Eigen's solve makes one pass
-// per column. The solve is what every local-global iteration pays for; reading L once instead of
-// three times is most of the speed of Wobble's stepper (see the benchmark).
+// Supernodal sparse Cholesky factorization Q = Pᵀ L Lᵀ P (AMD ordering) with a solve for the
+// three coordinates of a #V by 3 right-hand side in one pass over L.
+//
+// Columns of L with the same pattern below the diagonal are grouped into supernodes and stored
+// as dense blocks, so the factorization works with dense products (left-looking). The solve uses
+// L copied out by columns, and treats x, y and z side by side: Eigen's solve on a #V by 3
+// right-hand side makes one pass over L per column; this one makes one pass in all.
 //
 // analyze once per sparsity pattern, factorize after every change of values, solve as often as
-// needed: it allocates nothing.
+// needed: solve allocates nothing.
 class CholeskySolver {
  public:
-  // Symbolic analysis (ordering and elimination tree) of the pattern of the symmetric positive
-  // definite Q; only its lower triangle is read.
+  // Ordering, elimination tree, the pattern of L and its supernodes, for the pattern of the
+  // symmetric positive definite Q (both triangles stored; only the lower one is read).
   void analyze(const Eigen::SparseMatrix<double>& Q);
   // Numeric factorization of Q, which must have the analyzed pattern. False if Q is not
   // positive definite.
@@ -25,19 +28,36 @@ class CholeskySolver {
   // x = Q⁻¹ b, b and x #V by 3. x is resized only if its shape differs.
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x);
 
-  // Nonzeros of L, the diagonal included: the memory one solve streams through, twice.
-  long factor_nonzeros() const {
-    return static_cast<long>(rows_.size() + inverse_diagonal_.size());
-  }
+  // Nonzeros of L, the diagonal included (each supernode's diagonal block counted whole).
+  long factor_nonzeros() const { return factor_nonzeros_; }
 
  private:
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt_;
-  std::vector<int> permutation_;  // row i of the original system is row permutation_[i] of L
-  // L below its diagonal, by columns: column j holds rows_[s], values_[s] for s in
-  // [column_start_[j], column_start_[j + 1]).
-  std::vector<int> column_start_, rows_;
-  std::vector<double> values_, inverse_diagonal_;
-  std::vector<double> work_;  // #V by 4 (x, y, z, padding): the three coordinates side by side
+  struct Supernode {
+    int first = 0;         // first column
+    int width = 0;         // number of columns
+    int rows = 0;          // rows of its block: its own columns, then the rows below
+    long row_start = 0;    // into rows_
+    long value_start = 0;  // into values_: rows × width, column-major
+  };
+
+  std::vector<int> permutation_;  // row i of Q is row permutation_[i] of L
+  std::vector<Supernode> supernodes_;
+  std::vector<int> rows_;          // every supernode's rows, in order
+  std::vector<int> supernode_of_;  // the supernode holding each column
+  std::vector<long> value_slot_;   // for each stored value of Q: where it goes, or -1
+  std::vector<double> values_;     // the blocks of L
+  // L by columns for the solve (narrow supernodes make the block form slower to solve with):
+  // column j's rows below the diagonal are column_rows_[s] for s in
+  // [column_start_[j], column_start_[j + 1]), with values column_values_[s].
+  std::vector<int> column_start_, column_rows_;
+  std::vector<long> column_source_;  // where each of those values sits in values_
+  std::vector<double> column_values_, inverse_diagonal_;
+  long factor_nonzeros_ = 0;
+
+  // Factorization scratch: relative row positions, update lists and the dense update.
+  std::vector<int> relative_, link_head_, link_next_, cursor_;
+  std::vector<double> update_;
+  std::vector<double> work_;  // solve scratch: #V by 4 (x, y, z, padding)
 };
 
 }  // namespace wobble
