@@ -21,22 +21,33 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
   for (int i = 0; i < n; ++i)
     permutation_[i] = ordering.permutationP().indices()(i);
 
-  // The permuted lower triangle's pattern, as rows below each column and columns left of each row.
-  std::vector<std::vector<int>> below(n), left(n);
+  // The permuted lower triangle's pattern by rows: for each row, the columns left of the
+  // diagonal (flat arrays, as CSR).
+  std::vector<int> left_start(n + 1, 0), left;
   for (int j = 0; j < n; ++j) {
     for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
       const int a = permutation_[it.row()], b = permutation_[j];
-      if (a > b) {
-        below[b].push_back(a);
-        left[a].push_back(b);
+      if (a > b) ++left_start[a + 1];
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    left_start[i + 1] += left_start[i];
+  left.resize(left_start[n]);
+  {
+    std::vector<int> next(n);
+    std::copy_n(left_start.begin(), n, next.begin());
+    for (int j = 0; j < n; ++j) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
+        const int a = permutation_[it.row()], b = permutation_[j];
+        if (a > b) left[next[a]++] = b;
       }
     }
   }
   // Elimination tree (Liu's algorithm with path compression).
   std::vector<int> parent(n, -1), ancestor(n, -1);
   for (int i = 0; i < n; ++i) {
-    for (int k : left[i]) {
-      int r = k;
+    for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
+      int r = left[s];
       while (ancestor[r] != -1 && ancestor[r] != i) {
         const int next = ancestor[r];
         ancestor[r] = i;
@@ -48,37 +59,42 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
       }
     }
   }
-  // The pattern of each column of L below the diagonal: its own entries and its children's.
-  std::vector<std::vector<int>> children(n), pattern(n);
-  for (int j = 0; j < n; ++j) {
-    if (parent[j] >= 0) children[parent[j]].push_back(j);
-  }
-  std::vector<int> mark(n, -1);
-  for (int j = 0; j < n; ++j) {
-    std::vector<int>& rows = pattern[j];
-    mark[j] = j;
-    for (int r : below[j]) {
-      if (mark[r] != j) {
-        mark[r] = j;
-        rows.push_back(r);
+  // The pattern of L below the diagonal, by columns. Row i of L is the subtree of the elimination
+  // tree reached from row i's entries of Q by walking up to i, so visiting the rows in order
+  // fills every column's list already sorted: first the counts, then the rows.
+  std::vector<int> mark(n, -1), pattern_start(n + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    mark[i] = i;
+    for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
+      for (int j = left[s]; mark[j] != i; j = parent[j]) {
+        mark[j] = i;
+        ++pattern_start[j + 1];
       }
     }
-    for (int c : children[j]) {
-      for (int r : pattern[c]) {
-        if (mark[r] != j) {
-          mark[r] = j;
-          rows.push_back(r);
+  }
+  for (int j = 0; j < n; ++j)
+    pattern_start[j + 1] += pattern_start[j];
+  std::vector<int> pattern_rows(pattern_start[n]);
+  {
+    std::vector<int> next(n);
+    std::copy_n(pattern_start.begin(), n, next.begin());
+    std::fill(mark.begin(), mark.end(), -1);
+    for (int i = 0; i < n; ++i) {
+      mark[i] = i;
+      for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
+        for (int j = left[s]; mark[j] != i; j = parent[j]) {
+          mark[j] = i;
+          pattern_rows[next[j]++] = i;
         }
       }
     }
-    std::sort(rows.begin(), rows.end());
   }
+  const auto pattern_size = [&](int j) { return pattern_start[j + 1] - pattern_start[j]; };
   // Supernodes: column j + 1 joins j's when it is j's parent and its pattern is j's minus itself.
   supernodes_.clear();
   supernode_of_.assign(n, 0);
   for (int j = 0; j < n; ++j) {
-    const bool joins =
-        j > 0 && parent[j - 1] == j && pattern[j - 1].size() == pattern[j].size() + 1;
+    const bool joins = j > 0 && parent[j - 1] == j && pattern_size(j - 1) == pattern_size(j) + 1;
     if (!joins) {
       Supernode s;
       s.first = j;
@@ -96,8 +112,9 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
     s.value_start = values;
     for (int c = 0; c < s.width; ++c)
       rows_.push_back(s.first + c);
-    rows_.insert(rows_.end(), pattern[last].begin(), pattern[last].end());
-    s.rows = s.width + static_cast<int>(pattern[last].size());
+    rows_.insert(rows_.end(), pattern_rows.begin() + pattern_start[last],
+                 pattern_rows.begin() + pattern_start[last + 1]);
+    s.rows = s.width + pattern_size(last);
     values += static_cast<long>(s.rows) * s.width;
     factor_nonzeros_ += static_cast<long>(s.rows) * s.width - s.width * (s.width - 1) / 2;
   }
