@@ -131,14 +131,10 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
   }
   column_start_[n] = static_cast<int>(entries);
   column_rows_.resize(entries);
-  column_source_.resize(entries);
   for (const Supernode& s : supernodes_) {
     for (int c = 0; c < s.width; ++c) {
-      long at = column_start_[s.first + c];
-      for (int r = c + 1; r < s.rows; ++r, ++at) {
-        column_rows_[at] = rows_[s.row_start + r];
-        column_source_[at] = s.value_start + static_cast<long>(c) * s.rows + r;
-      }
+      std::copy(rows_.begin() + s.row_start + c + 1, rows_.begin() + s.row_start + s.rows,
+                column_rows_.begin() + column_start_[s.first + c]);
     }
   }
   column_values_.assign(column_rows_.size(), 0.0);
@@ -232,8 +228,13 @@ bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
     for (int c = 0; c < node.width; ++c)
       inverse_diagonal_[node.first + c] = 1.0 / block(c, c);
   }
-  for (std::size_t k = 0; k < column_values_.size(); ++k)
-    column_values_[k] = values_[column_source_[k]];
+  // L by columns for the solve, in the order the supernodes and their columns come.
+  double* out = column_values_.data();
+  for (const Supernode& node : supernodes_) {
+    const double* block = values_.data() + node.value_start;
+    for (int c = 0; c < node.width; ++c)
+      out = std::copy(block + c * node.rows + c + 1, block + (c + 1) * node.rows, out);
+  }
   return true;
 }
 

@@ -50,7 +50,6 @@ class CholeskySolver {
   // column j's rows below the diagonal are column_rows_[s] for s in
   // [column_start_[j], column_start_[j + 1]), with values column_values_[s].
   std::vector<int> column_start_, column_rows_;
-  std::vector<long> column_source_;  // where each of those values sits in values_
   std::vector<double> column_values_, inverse_diagonal_;
   long factor_nonzeros_ = 0;
 
