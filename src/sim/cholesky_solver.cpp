@@ -164,10 +164,13 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
   link_head_.assign(supernodes_.size(), -1);
   link_next_.assign(supernodes_.size(), -1);
   cursor_.assign(supernodes_.size(), 0);
-  int tallest = 1;
-  for (const Supernode& s : supernodes_)
+  // An update is (rows of the source below its cursor) × (columns of the target).
+  int tallest = 1, widest = 1;
+  for (const Supernode& s : supernodes_) {
     tallest = std::max(tallest, s.rows);
-  update_.resize(static_cast<std::size_t>(tallest) * tallest);
+    widest = std::max(widest, s.width);
+  }
+  update_.resize(static_cast<std::size_t>(tallest) * widest);
   work_.assign(4 * static_cast<std::size_t>(n), 0.0);
 }
 
