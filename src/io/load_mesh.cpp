@@ -17,16 +17,6 @@ namespace wobble {
 
 namespace {
 
-std::string extension_of(const std::string& path) {
-  const std::size_t dot = path.rfind('.');
-  const std::size_t slash = path.rfind('/');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
-  std::string extension = path.substr(dot);
-  for (char& c : extension)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
 // Springs, boundary and volume weights of a tetrahedral mesh, without unused vertices (they would
 // have no mass and no spring, which makes the system singular).
 LoadedMesh volume_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
@@ -97,6 +87,16 @@ LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution) {
 }
 
 }  // namespace
+
+std::string extension_of(const std::string& path) {
+  const std::size_t dot = path.rfind('.');
+  const std::size_t slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string extension = path.substr(dot);
+  for (char& c : extension)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
 
 bool is_mesh_file(const std::string& path) {
   const std::string extension = extension_of(path);

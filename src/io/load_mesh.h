@@ -28,6 +28,9 @@ struct LoadedMesh {
 // volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
 LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12);
 
+// The extension of a file name, lower-cased, with its dot (".obj"), or "" if it has none.
+std::string extension_of(const std::string& path);
+
 // Whether `path` ends in an extension load_mesh reads.
 bool is_mesh_file(const std::string& path);
 

@@ -17,13 +17,6 @@ namespace wobble {
 
 namespace {
 
-std::string extension_of(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension)
-    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
-
 Scene bare_mesh_scene(const std::string& path, bool fill) {
   LoadedMesh mesh = load_mesh(path, fill);
   Scene scene;

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 
+#include "cloth_pixels.h"
 #include "io/png_image.h"
 #include "run_wobble.h"
 
@@ -14,14 +15,13 @@ using wobble::testing::TemporaryFolder;
 // No display at all, as on a server.
 const std::string no_display = "DISPLAY= WAYLAND_DISPLAY=";
 
-// Share of pixels whose colour is the cloth's front (orange: red well above green, green well
-// above blue).
+// Share of pixels with the colour of the cloth's front.
 double orange_share(const wobble::RgbaImage& image) {
   long orange = 0;
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width; ++x) {
       const unsigned char* p = image.pixel(x, y);
-      if (p[0] > p[1] + 30 && p[1] > p[2] + 20) ++orange;
+      if (wobble::testing::is_cloth_front(p)) ++orange;
     }
   }
   return static_cast<double>(orange) / (static_cast<double>(image.width) * image.height);
