@@ -103,6 +103,12 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
   app.add_flag("--chebyshev", command.chebyshev,
                "Chebyshev acceleration of the iterations (Wang 2015)");
+  std::vector<std::string> drags;
+  app.add_option("--drag", drags,
+                 "Drag a vertex: VERTEX:DX,DY,DZ@FRAME (over 30 frames) or @FRAME-LAST; "
+                 "repeatable")
+      ->take_all()
+      ->allow_extra_args(false);
   app.add_option("--width", width, "Window or image width in pixels (default 1280)");
   app.add_option("--height", height, "Window or image height in pixels (default 720)");
   app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");
@@ -159,6 +165,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");
+  for (const std::string& drag : drags)
+    command.drags.push_back(parse_drag(drag, CommandLine::max_frames));
   if (yaw) command.camera_yaw = number_between("--camera-yaw", *yaw, -360.0, 360.0);
   if (pitch) {
     command.camera_pitch = number_between("--camera-pitch", *pitch, -CommandLine::max_camera_pitch,

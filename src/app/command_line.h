@@ -4,6 +4,9 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "drag_script.h"
 
 namespace wobble {
 
@@ -19,7 +22,8 @@ struct CommandLine {
   std::optional<double> dt;
   std::optional<int> iterations;
   bool stats = false;
-  bool chebyshev = false;  // Chebyshev acceleration of the iterations
+  bool chebyshev = false;           // Chebyshev acceleration of the iterations
+  std::vector<ScriptedDrag> drags;  // --drag, in the order given
   // Images (both modes) and what they show.
   int width = 1280, height = 720;  // window or offscreen image size, pixels
   std::string screenshot;          // PNG of the frame after the last step; empty: none

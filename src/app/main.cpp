@@ -17,10 +17,10 @@ int main(int argc, char** argv) {
     if (command->headless) return wobble::run_headless(*command, std::cout, std::cerr);
     return wobble::run_window(*command, std::cerr);
   } catch (const wobble::InputError& error) {
-    std::cerr << "wobble: " << error.what() << "\n";
+    std::cerr << "wobble: " << wobble::one_line(error.what()) << "\n";
     return 2;
   } catch (const std::exception& error) {
-    std::cerr << "wobble: error: " << error.what() << "\n";
+    std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";
     return 1;
   }
 }

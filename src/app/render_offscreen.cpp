@@ -4,6 +4,8 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <stdexcept>
+#include <string>
 
 #include "platform/egl_context.h"
 #include "render/offscreen_target.h"
@@ -64,6 +66,12 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
       viewer.build_ui(timings, 1.0f);
     }
     viewer.advance();
+    // A rolled-back step stops the run: the frames so far stay written, nothing else is.
+    const StepStatus status = viewer.simulation().last_step_status();
+    if (status != StepStatus::ok) {
+      throw std::runtime_error("frame " + std::to_string(frame) + ": " +
+                               Simulation::describe(status));
+    }
     if (options.obj_sequence != nullptr) {
       options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
     }

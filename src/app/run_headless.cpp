@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "drag_script.h"
 #include "image_outputs.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
@@ -71,9 +72,6 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   render_offscreen(viewer, options, &outputs, &report);
 
   const Simulation& simulation = viewer.simulation();
-  if (!simulation.positions().allFinite()) {
-    throw std::runtime_error("the simulation produced non-finite positions; try a smaller --dt");
-  }
   if (!command.export_obj.empty()) {
     write_obj(command.export_obj, simulation.positions(), viewer.scene().network.F,
               viewer.scene().network.E);
@@ -104,6 +102,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   if (command.iterations) params.iterations = *command.iterations;
   if (command.chebyshev) params.chebyshev = true;
   Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
+  DragScript drags(command.drags, scene.network.V.rows());
 
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   std::vector<double> step_ms, local_ms, global_ms;
@@ -113,7 +112,14 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     global_ms.reserve(frames);
   }
   for (long frame = 0; frame < frames; ++frame) {
-    simulation.step();
+    drags.before_step(simulation, frame + 1);
+    const StepStatus status = simulation.step();
+    if (status != StepStatus::ok) {
+      // The positions are still those of the last good frame, but the run did not finish:
+      // report it, and write no final export.
+      throw std::runtime_error("frame " + std::to_string(frame + 1) + ": " +
+                               Simulation::describe(status));
+    }
     obj_sequence.write(frame + 1, simulation.positions(), scene.network);
     if (command.stats) {
       const StepTiming& timing = simulation.last_step_timing();
@@ -121,9 +127,6 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
       local_ms.push_back(timing.local_ms);
       global_ms.push_back(timing.global_ms);
     }
-  }
-  if (!simulation.positions().allFinite()) {
-    throw std::runtime_error("the simulation produced non-finite positions; try a smaller --dt");
   }
 
   if (!command.export_obj.empty()) {

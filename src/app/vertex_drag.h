@@ -29,6 +29,10 @@ class VertexDrag {
   int vertex() const { return vertex_; }
   bool holds_free_vertex() const { return active() && was_free_; }
 
+  // How far from the grab point a target may go, as a fraction of Simulation::jump_limit():
+  // ten times the shape's size, which also keeps every frame's move well inside the limit.
+  static constexpr double reach_in_jump_limits = 0.1;
+
  private:
   int vertex_ = -1;
   bool was_free_ = false;
@@ -37,6 +41,7 @@ class VertexDrag {
   // From the cursor's point on the plane to the vertex at the grab, so that grabbing a few pixels
   // off the vertex does not make it jump.
   Eigen::Vector3f offset_ = Eigen::Vector3f::Zero();
+  float reach_ = 0.0f;
 };
 
 }  // namespace wobble

@@ -47,6 +47,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.layers.wireframe = command.wireframe;
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
+  settings.drags = command.drags;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -75,6 +76,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   camera_.yaw = settings_yaw_.value_or(default_yaw);
   camera_.pitch = settings_pitch_.value_or(default_pitch);
   load(std::move(scene));
+  drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
 }
 
 Viewer::~Viewer() = default;
@@ -86,6 +88,8 @@ void Viewer::load(Scene scene) {
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
   drag_.cancel();
+  drag_script_ = DragScript();  // its vertex numbers belong to the first scene
+  step_warning_.clear();
   mode_ = Mode::idle;
   scene_ = std::move(scene);
   simulation_ = std::move(simulation);
@@ -197,6 +201,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
+  draw_step_warning(step_warning_, ui_scale);
 
   if (requests.scene_changed) {
     // A scene file that fails to load leaves the current scene running, with the reason shown.
@@ -229,8 +234,18 @@ void Viewer::apply_panel_settings() {
 }
 
 void Viewer::advance() {
-  if (!panel_.paused || step_requested_) simulation_->step();
+  if (panel_.paused && !step_requested_) return;
   step_requested_ = false;
+  const long frame = simulation_->steps_taken() + 1;
+  drag_script_.before_step(*simulation_, frame);
+  const StepStatus status = simulation_->step();
+  if (status == StepStatus::ok) {
+    step_warning_.clear();
+  } else {
+    panel_.paused = true;
+    step_warning_ =
+        "Paused at step " + std::to_string(frame) + ": " + Simulation::describe(status) + ".";
+  }
 }
 
 PanelStats Viewer::stats() const {
@@ -241,6 +256,7 @@ PanelStats Viewer::stats() const {
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
   stats.notes = scene_.notes;
+  stats.warning = step_warning_;
   return stats;
 }
 

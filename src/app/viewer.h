@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "command_line.h"
+#include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
 #include "platform/input_event.h"
@@ -27,6 +28,7 @@ struct ViewerSettings {
   bool chebyshev = false;  // turn Chebyshev acceleration on
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
+  std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
 };
 
 // The start-up settings a command line asks for.
@@ -54,7 +56,8 @@ class Viewer {
                      bool ui_wants_keyboard, const Eigen::Vector2f& window_size);
   // The panel and the help overlay (ImGui, between NewFrame and Render). Applies what changed.
   void build_ui(const PanelStats& timings, float ui_scale);
-  // One time step, unless paused.
+  // One time step, unless paused. A step the simulation rolls back pauses the viewer and sets
+  // step_warning().
   void advance();
   // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
   // `pixel_ratio` is framebuffer pixels per window unit.
@@ -62,6 +65,8 @@ class Viewer {
               float pixel_ratio);
 
   bool quit_requested() const { return quit_; }
+  // Why the last step was rolled back (shown in the view until the next good step), or empty.
+  const std::string& step_warning() const { return step_warning_; }
   const Simulation& simulation() const { return *simulation_; }
   const Scene& scene() const { return scene_; }
   const OrbitCamera& camera() const { return camera_; }
@@ -86,6 +91,8 @@ class Viewer {
   bool framing_new_scene_ = true;  // frame with room for the motion to come
   bool quit_ = false;
   bool step_requested_ = false;
+  std::string step_warning_;
+  DragScript drag_script_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;

@@ -89,6 +89,8 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::reset:
       if (drag_.active()) drag_.cancel();
       simulation_->reset();
+      drag_script_.restart();
+      step_warning_.clear();
       break;
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;

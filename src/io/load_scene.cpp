@@ -52,6 +52,12 @@ Scene load_scene(const std::string& source, bool fill) {
     throw InputError("'" + source + "': no such scene file or built-in scene (built-in: " + known +
                      ")");
   }
+  std::error_code ignored;
+  if (std::filesystem::is_directory(source, ignored)) {
+    throw InputError(source +
+                     ": is a folder, expected a scene file (.json) or a mesh (.obj, .mesh, "
+                     ".node or .ele)");
+  }
   if (extension_of(source) == ".json") {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled; set it in the scene");
     const nlohmann::json object = read_json_file(source);

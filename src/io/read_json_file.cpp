@@ -19,6 +19,9 @@ nlohmann::json read_json_file(const std::string& path) {
   buffer << in.rdbuf();
   if (!in) throw InputError(path + ": could not read the file");
   const std::string text = buffer.str();
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
+    throw InputError(path + ": the file is empty, expected a JSON object");
+  }
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& error) {

@@ -13,11 +13,16 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// `text` on one line: line breaks become spaces and trailing spaces go, so a message quoted from
-// a library (a parser's report, say) still fits the one-line rule.
+// `text` on one line: line breaks and tabs become spaces, other control characters '?', and
+// trailing spaces go, so a message quoting a library (a parser's report, say) or bytes of a
+// binary file still fits the one-line rule and cannot upset a terminal.
 inline std::string one_line(std::string text) {
   for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
+    if (c == '\n' || c == '\r' || c == '\t') {
+      c = ' ';
+    } else if ((c >= 0 && c < 0x20) || c == 0x7f) {
+      c = '?';
+    }
   }
   while (!text.empty() && text.back() == ' ')
     text.pop_back();

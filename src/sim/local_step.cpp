@@ -29,7 +29,9 @@ void LocalStep::apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd&
                       Eigen::MatrixXd& rhs) {
   const Eigen::Index springs = E_.rows();
   const Eigen::Index n = p.rows();
-#pragma omp parallel
+  // A small network is done before a second thread could start helping, and a thread that is
+  // waiting for a busy core would only hold the first one up.
+#pragma omp parallel if (springs >= min_springs_for_threads)
   {
 #pragma omp for schedule(static)
     for (Eigen::Index e = 0; e < springs; ++e) {

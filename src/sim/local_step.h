@@ -20,6 +20,9 @@ class LocalStep {
   // rhs = y + k Aᵀd(p); p, y and rhs #V by 3, rhs already of that shape.
   void apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y, Eigen::MatrixXd& rhs);
 
+  // Below this many springs apply() runs on one thread.
+  static constexpr long min_springs_for_threads = 2048;
+
  private:
   Eigen::MatrixXi E_;
   Eigen::VectorXd r_;

@@ -95,6 +95,9 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   }
 
   local_step_ = std::make_unique<LocalStep>(E, r_, network_.V);
+  const double diagonal =
+      n == 0 ? 0.0 : (network_.V.colwise().maxCoeff() - network_.V.colwise().minCoeff()).norm();
+  jump_limit_ = 100.0 * (diagonal > 0.0 ? diagonal : 1.0);  // a single vertex: 1 m
   chebyshev_ = ChebyshevAcceleration(n);
   solved_.resize(n, 3);
   previous_.resize(n, 3);
@@ -123,6 +126,7 @@ void Simulation::reset() {
   if (initial_velocity_.size() != 0) previous_ -= params_.dt * initial_velocity_;
   targets_ = network_.V;
   steps_taken_ = 0;
+  last_status_ = StepStatus::ok;
 
   std::vector<char> initial(pinned_.size(), 0);
   for (int i : initial_pins_)
@@ -141,7 +145,7 @@ void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd
   previous_ = previous;
 }
 
-void Simulation::step() {
+StepStatus Simulation::step() {
   const auto step_start = Clock::now();
   const double k = params_.k;
 
@@ -166,12 +170,47 @@ void Simulation::step() {
     if (observer_) observer_(iteration, next_);
   }
 
-  previous_.swap(current_);
-  current_.swap(next_);
-  ++steps_taken_;
+  last_status_ = check_step();
+  if (last_status_ == StepStatus::ok) {
+    previous_.swap(current_);
+    current_.swap(next_);
+    ++steps_taken_;
+  }
   timing_.local_ms = local_ms;
   timing_.global_ms = global_ms;
   timing_.total_ms = milliseconds_since(step_start);
+  return last_status_;
+}
+
+StepStatus Simulation::check_step() const {
+  // One pass over the new positions; a NaN fails every comparison, so test finiteness first.
+  const double limit2 = jump_limit_ * jump_limit_;
+  bool jumped = false;
+  for (Eigen::Index i = 0; i < next_.rows(); ++i) {
+    double distance2 = 0.0;
+    for (int c = 0; c < 3; ++c) {
+      const double p = next_(i, c);
+      if (!std::isfinite(p)) return StepStatus::not_finite;
+      const double away = p - (2.0 * current_(i, c) - previous_(i, c));
+      distance2 += away * away;
+    }
+    if (!(distance2 <= limit2)) jumped = true;
+  }
+  return jumped ? StepStatus::jumped : StepStatus::ok;
+}
+
+std::string Simulation::describe(StepStatus status) {
+  switch (status) {
+    case StepStatus::ok:
+      return "the step succeeded";
+    case StepStatus::not_finite:
+      return "the step produced non-finite positions and was rolled back; try a smaller dt or "
+             "more iterations";
+    case StepStatus::jumped:
+      return "the step moved a vertex more than 100 times the shape's size and was rolled back; "
+             "try a smaller dt or more iterations";
+  }
+  return "unknown step status";
 }
 
 void Simulation::compute_y() {

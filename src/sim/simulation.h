@@ -5,6 +5,7 @@
 #include <Eigen/Sparse>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "chebyshev.h"
@@ -43,6 +44,15 @@ struct StepTiming {
   double total_ms = 0.0;
 };
 
+// What became of a step. Anything but `ok` means the step was rolled back: the positions are
+// those before it, and it does not count in steps_taken().
+enum class StepStatus {
+  ok,
+  not_finite,  // a position became NaN or infinite
+  jumped,      // a vertex moved farther than Simulation::jump_limit() from where inertia and
+               // gravity alone would have taken it
+};
+
 // A mass-spring network advanced by the fast local-global method of Liu et al. 2013, with pins
 // whose targets can move. This is what the viewer and the command line drive, one step() a frame.
 //
@@ -74,8 +84,18 @@ class Simulation {
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
 
-  // Advance one time step of params().dt seconds.
-  void step();
+  // Advance one time step of params().dt seconds. A step that produces a non-finite position,
+  // or moves a vertex more than jump_limit() away from its inertial prediction 2pᵗ − pᵗ⁻ᐞᵗ, is
+  // rolled back: the state stays what it was, so nothing non-finite ever leaves the simulation.
+  // The caller decides what to do next (the viewer pauses; a headless run stops).
+  StepStatus step();
+  StepStatus last_step_status() const { return last_status_; }
+  // The largest move a step may make away from its inertial prediction: 100 times the diagonal
+  // of the rest shape's bounding box (m). No real step comes close: a dragged pin moves a few
+  // diagonals a frame at most, and free fall follows the prediction exactly.
+  double jump_limit() const { return jump_limit_; }
+  // One line for a user about a failed step, with what to try.
+  static std::string describe(StepStatus status);
   // Back to the initial state: rest positions, initial velocity, initial pins at rest targets.
   // Parameters (k, dt, iterations, gravity) keep their current values.
   void reset();
@@ -142,6 +162,7 @@ class Simulation {
   void refactorize();
   void calibrate_chebyshev();
   void compute_y();
+  StepStatus check_step() const;
 
   SpringNetwork network_;
   SimulationParams params_;
@@ -171,6 +192,8 @@ class Simulation {
   int symbolic_analyses_ = 0;
   int numeric_factorizations_ = 0;
   long steps_taken_ = 0;
+  double jump_limit_ = 0.0;
+  StepStatus last_status_ = StepStatus::ok;
 };
 
 }  // namespace wobble

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace wobble {
 
 namespace {
@@ -19,6 +21,8 @@ void section(const char* title) {
   ImGui::Separator();
   ImGui::TextDisabled("%s", title);
 }
+
+const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
 
 }  // namespace
 
@@ -53,6 +57,11 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   requests.frame_mesh = ImGui::Button("Frame");
   ImGui::SameLine();
   if (ImGui::Button("Help")) settings.show_help = !settings.show_help;
+  if (!stats.warning.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, warning_color);
+    ImGui::TextWrapped("%s", stats.warning.c_str());
+    ImGui::PopStyleColor();
+  }
 
   section("simulation");
   // Stiffness spans six decades, so its slider is logarithmic.
@@ -117,6 +126,23 @@ void draw_help_overlay(const std::vector<std::pair<std::string, std::string>>& b
     ImGui::EndTable();
   }
   ImGui::End();
+}
+
+void draw_step_warning(const std::string& warning, float ui_scale) {
+  if (warning.empty()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 10.0f * ui_scale), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(460.0f * ui_scale, io.DisplaySize.x - 20.0f), 0.0f),
+                           ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.35f, 0.08f, 0.05f, 0.92f));
+  ImGui::Begin("Simulation paused", nullptr,
+               ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::TextWrapped("%s", warning.c_str());
+  ImGui::TextDisabled("Change dt or iterations in the panel, then Play or Reset.");
+  ImGui::End();
+  ImGui::PopStyleColor();
 }
 
 }  // namespace wobble

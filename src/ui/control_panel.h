@@ -36,6 +36,7 @@ struct PanelStats {
   long steps = 0;
   double simulated_seconds = 0.0;
   std::vector<std::string> notes;  // what the scene loader chose for the user
+  std::string warning;             // why the simulation paused by itself, or empty
 };
 
 // Buttons pressed this frame.
@@ -50,6 +51,10 @@ struct PanelRequests {
 // ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
 PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
                                  const std::vector<std::string>& scene_names, float ui_scale);
+
+// A window at the top of the view saying why the simulation paused by itself; nothing when
+// `warning` is empty.
+void draw_step_warning(const std::string& warning, float ui_scale);
 
 // A window listing {input, action} pairs, open while `open` is true (its close button clears it).
 void draw_help_overlay(const std::vector<std::pair<std::string, std::string>>& bindings,

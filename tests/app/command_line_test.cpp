@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -106,6 +109,59 @@ TEST(CommandLine, ExportObjWritesTheSaggingCloth) {
   EXPECT_NEAR(highest, 1.2, 1e-6);
   EXPECT_LT(lowest, 0.6);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"cloth.obj"});
+}
+
+// Vertex `index` (0-based) of an OBJ file as Wobble writes it.
+Eigen::Vector3d obj_vertex(const std::string& path, int index) {
+  std::istringstream lines(read(path));
+  std::string line;
+  int seen = 0;
+  while (std::getline(lines, line)) {
+    if (line.rfind("v ", 0) != 0) continue;
+    if (seen++ == index) {
+      Eigen::Vector3d p;
+      std::istringstream(line.substr(2)) >> p.x() >> p.y() >> p.z();
+      return p;
+    }
+  }
+  ADD_FAILURE() << "no vertex " << index << " in " << path;
+  return Eigen::Vector3d::Zero();
+}
+
+TEST(CommandLine, DragHoldsAVertexOnItsScriptedPath) {
+  TemporaryFolder folder;
+  // Vertex 820 is in the middle of the built-in cloth, which starts flat at y = 1.2.
+  const Result rest =
+      run_wobble("cloth --headless --frames 1 --iterations 1 --dt 1e-9 --export-obj '" +
+                 folder.file("rest.obj") + "'");
+  ASSERT_EQ(rest.exit_code, 0) << rest.err;
+  const Eigen::Vector3d start = obj_vertex(folder.file("rest.obj"), 820);
+  const Result dragged = run_wobble(
+      "cloth --headless --frames 40 --iterations 10 --drag 820:0.1,0.3,-0.2@1-40 "
+      "--export-obj '" +
+      folder.file("dragged.obj") + "'");
+  ASSERT_EQ(dragged.exit_code, 0) << dragged.err;
+  const Eigen::Vector3d end = obj_vertex(folder.file("dragged.obj"), 820);
+  EXPECT_LT((end - start - Eigen::Vector3d(0.1, 0.3, -0.2)).norm(), 1e-5) << end.transpose();
+}
+
+TEST(CommandLine, AStepThatFailsExitsWith1AndWritesNoExport) {
+  TemporaryFolder folder;
+  const std::string objs = folder.file("objs");
+  const Result result =
+      run_wobble("cloth --headless --frames 5 --drag 0:1e5,0,0@3-3 --export-obj '" +
+                 folder.file("out.obj") + "' --export-obj-sequence '" + objs + "'");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(count_lines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("frame 3"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("rolled back"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("out.obj")));
+  // The two good frames were written, and nothing after them.
+  std::vector<std::string> frames;
+  for (const auto& entry : std::filesystem::directory_iterator(objs))
+    frames.push_back(entry.path().filename().string());
+  std::sort(frames.begin(), frames.end());
+  EXPECT_EQ(frames, (std::vector<std::string>{"frame_00001.obj", "frame_00002.obj"}));
 }
 
 TEST(CommandLine, ExportToAMissingFolderFailsBeforeSimulatingAndWritesNothing) {

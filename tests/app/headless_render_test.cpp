@@ -97,6 +97,25 @@ TEST(HeadlessRender, RecordWritesEveryFrameAndTheyMove) {
             wobble::read_png(folder.file("last.png")).pixels);
 }
 
+TEST(HeadlessRender, AStepThatFailsExitsWith1KeepingTheGoodFramesOnly) {
+  TemporaryFolder folder;
+  const std::string record = folder.file("frames");
+  const auto run = run_wobble(
+      "cloth --headless --frames 6 --width 64 --height 48 --drag 0:1e5,0,0@4-4 --record '" +
+          record + "' --screenshot '" + folder.file("last.png") + "'",
+      no_display);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  EXPECT_NE(run.err.find("frame 4"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("last.png")));
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(record))
+    names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"frame_00001.png", "frame_00002.png", "frame_00003.png"}));
+}
+
 TEST(HeadlessRender, UiAddsThePanelAndOnlyThePanel) {
   TemporaryFolder folder;
   for (const std::string flag : {"", "--ui"}) {

@@ -85,3 +85,23 @@ TEST(VertexDrag, MoveAndReleaseWithoutAGrabChangeNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(VertexDrag, ARayGrazingThePlaneKeepsTheTargetWithinReach) {
+  Fixture f;
+  wobble::VertexDrag drag;
+  const Eigen::Vector3d start = f.simulation->positions().row(0);
+  drag.grab(*f.simulation, 0, Fixture::down_at(start.x(), start.z()), f.looking_down);
+  // Almost parallel to the horizontal plane: it meets it some 5e6 m away.
+  const Ray grazing{Eigen::Vector3f(start.x(), start.y() + 5.0f, start.z()),
+                    Eigen::Vector3f(1.0f, -1e-6f, 0.0f).normalized()};
+  drag.move(*f.simulation, grazing);
+  const double reach = wobble::VertexDrag::reach_in_jump_limits * f.simulation->jump_limit();
+  const Eigen::Vector3d target = f.simulation->pin_target(0);
+  EXPECT_NEAR((target - start).norm(), reach, 1e-3 * reach);
+  EXPECT_GT(target.x() - start.x(), 0.99 * reach) << "still in the direction of the drag";
+  EXPECT_EQ(f.simulation->step(), wobble::StepStatus::ok);
+}
+
+}  // namespace

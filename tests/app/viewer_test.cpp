@@ -172,3 +172,37 @@ TEST(Viewer, ASceneCameraIsUsedAndTheCommandLineCanTurnIt) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Viewer, AFailedStepPausesWithAWarningAndResetClearsIt) {
+  wobble::ViewerSettings settings;
+  // At frame 2, fling a corner 100 km: far beyond the cloth's jump limit.
+  settings.drags = {wobble::parse_drag("0:1e5,0,0@2-2", 100)};
+  wobble::Viewer viewer(wobble::make_builtin_scene("cloth"), settings,
+                        wobble::builtin_scene_names());
+  viewer.advance();
+  ASSERT_EQ(viewer.simulation().steps_taken(), 1);
+  EXPECT_EQ(viewer.step_warning(), "");
+  const Eigen::MatrixXd after_one = viewer.simulation().positions();
+
+  viewer.advance();
+  EXPECT_EQ(viewer.simulation().last_step_status(), wobble::StepStatus::jumped);
+  EXPECT_EQ(viewer.simulation().steps_taken(), 1);
+  EXPECT_EQ(viewer.simulation().positions(), after_one) << "rolled back";
+  EXPECT_NE(viewer.step_warning().find("Paused at step 2"), std::string::npos)
+      << viewer.step_warning();
+  EXPECT_NE(viewer.step_warning().find("smaller dt"), std::string::npos);
+  EXPECT_EQ(viewer.stats().warning, viewer.step_warning());
+  viewer.advance();
+  EXPECT_EQ(viewer.simulation().steps_taken(), 1) << "paused";
+
+  InputEvent reset;
+  reset.type = InputEvent::Type::key_press;
+  reset.code = GLFW_KEY_R;
+  viewer.handle_events({reset}, false, false, window);
+  EXPECT_EQ(viewer.step_warning(), "");
+  EXPECT_EQ(viewer.simulation().steps_taken(), 0);
+}
+
+}  // namespace

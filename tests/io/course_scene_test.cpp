@@ -164,9 +164,11 @@ TEST_F(CourseScene, RefusesBadKeys) {
 TEST_F(CourseScene, MalformedJsonNamesItsLine) {
   const std::string message = error("{\n  \"obj\": \"meshes/sheet.obj\",\n  \"b\": [1,, 2],\n}\n");
   EXPECT_EQ(message.rfind(json_path() + ": line 3: malformed JSON: ", 0), 0u) << message;
-  EXPECT_EQ(error(""), json_path() + ": line 1: malformed JSON: " +
-                           "syntax error while parsing value - unexpected end of input; "
-                           "expected '[', '{', or a literal");
+  EXPECT_EQ(error(""), json_path() + ": the file is empty, expected a JSON object");
+  EXPECT_EQ(error(" \n\t\n"), json_path() + ": the file is empty, expected a JSON object");
+  EXPECT_EQ(error("{\n"), json_path() + ": line 2: malformed JSON: " +
+                              "syntax error while parsing object key - unexpected end of input; "
+                              "expected string literal");
 }
 
 TEST_F(CourseScene, OtherFilesAreNamed) {

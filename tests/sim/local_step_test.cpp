@@ -14,7 +14,7 @@ namespace {
 struct Fixture {
   Fixture() {
     wobble::ClothGridOptions options;
-    options.resolution = 12;
+    options.resolution = 24;  // enough springs for apply() to use threads
     cloth = wobble::make_cloth_grid(options);
     r.resize(cloth.E.rows());
     for (Eigen::Index e = 0; e < cloth.E.rows(); ++e)
@@ -55,6 +55,7 @@ TEST(LocalStep, CoincidentEndsPushApartAlongTheRestDirection) {
 #ifdef _OPENMP
 TEST(LocalStep, SameResultWithOneThreadOrTwo) {
   Fixture f;
+  ASSERT_GE(f.cloth.E.rows(), wobble::LocalStep::min_springs_for_threads);
   wobble::LocalStep local(f.cloth.E, f.r, f.cloth.V);
   Eigen::MatrixXd one(f.p.rows(), 3), two(f.p.rows(), 3);
   const int threads = omp_get_max_threads();

@@ -1,0 +1,237 @@
+// The catalogue of bad input: every case runs the real wobble executable headless, asking for an
+// OBJ export and a screenshot, and must end with exit code 2, one line on stderr that names the
+// file (or option) and the line or key and says what was expected, nothing on stdout, and no
+// file written, not even a partial or temporary one.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "run_wobble.h"
+
+namespace {
+
+using wobble::testing::Result;
+using wobble::testing::run_wobble;
+using wobble::testing::TemporaryFolder;
+
+struct BadInput {
+  const char* name;
+  // Files to create in a fresh folder: {name, content}.
+  std::vector<std::pair<std::string, std::string>> files;
+  // Arguments before the outputs; "{dir}" stands for the folder.
+  std::string arguments;
+  // Each must appear in the error line.
+  std::vector<std::string> expected;
+};
+
+std::string bytes_0_to_255() {
+  std::string bytes;
+  for (int repeat = 0; repeat < 4; ++repeat) {
+    for (int byte = 0; byte < 256; ++byte)
+      bytes.push_back(static_cast<char>(byte));
+  }
+  return bytes;
+}
+
+const char* const triangle_obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+const char* const tet_header = "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n";
+const char* const tet_vertices = "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n";
+
+std::string course(const std::string& extra) {
+  return "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 1" + extra + "}";
+}
+
+std::vector<BadInput> catalogue() {
+  const std::pair<std::string, std::string> tri{"tri.obj", triangle_obj};
+  return {
+      // Files that cannot be read.
+      {"missing_file", {}, "{dir}/nowhere.json", {"nowhere.json", "no such scene file"}},
+      {"folder_as_scene",
+       {{"folder.json/keep", ""}},
+       "{dir}/folder.json",
+       {"folder.json", "folder"}},
+      {"empty_file", {{"empty.json", ""}}, "{dir}/empty.json", {"empty.json", "empty"}},
+      {"binary_file",
+       {{"binary.json", bytes_0_to_255()}},
+       "{dir}/binary.json",
+       {"binary.json", "line 1", "malformed JSON"}},
+      // Bad JSON.
+      {"malformed_json",
+       {{"malformed.json", "{\n  \"mesh\": {\"generator\": \"cloth\",,}\n}"}},
+       "{dir}/malformed.json",
+       {"malformed.json", "line 2", "malformed JSON"}},
+      {"json_array", {{"array.json", "[1, 2, 3]"}}, "{dir}/array.json", {"array.json", "expected"}},
+      {"missing_required_key",
+       {{"nomesh.json", "{\"pins\": \"top\"}"}},
+       "{dir}/nomesh.json",
+       {"nomesh.json", "\"mesh\""}},
+      {"course_missing_k",
+       {tri, {"nok.json", "{\"obj\": \"tri.obj\", \"b\": [1]}"}},
+       "{dir}/nok.json",
+       {"nok.json", "`k`", "missing"}},
+      {"wrong_type",
+       {{"type.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": \"ten\"}}"}},
+       "{dir}/type.json",
+       {"type.json", "mesh.resolution", "whole number"}},
+      {"course_wrong_type",
+       {{"type.json", "{\"obj\": 5, \"b\": [1], \"k\": 10}"}},
+       "{dir}/type.json",
+       {"type.json", "`obj`", "expected"}},
+      // Bad parameters.
+      {"zero_k",
+       {{"k.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"k\": 0}}"}},
+       "{dir}/k.json",
+       {"k.json", "material.k", "positive"}},
+      {"course_negative_k",
+       {tri, {"k.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": -1}"}},
+       "{dir}/k.json",
+       {"k.json", "`k`", "positive"}},
+      {"course_zero_m", {tri, {"m.json", course(", \"m\": 0")}}, "{dir}/m.json", {"m.json", "`m`"}},
+      {"zero_dt",
+       {{"dt.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"dt\": 0}}"}},
+       "{dir}/dt.json",
+       {"dt.json", "simulation.dt", "positive"}},
+      {"negative_density",
+       {{"d.json", "{\"mesh\": {\"generator\": \"jelly\"}, \"material\": {\"density\": -2}}"}},
+       "{dir}/d.json",
+       {"d.json", "material.density", "positive"}},
+      // Bad pins.
+      {"course_pin_zero",
+       {tri, {"b.json", "{\"obj\": \"tri.obj\", \"b\": [0], \"k\": 10}"}},
+       "{dir}/b.json",
+       {"b.json", "`b`", "1-based"}},
+      {"course_pin_out_of_range",
+       {tri, {"b.json", "{\"obj\": \"tri.obj\", \"b\": [4], \"k\": 10}"}},
+       "{dir}/b.json",
+       {"b.json", "`b`", "1 to 3"}},
+      {"pin_out_of_range",
+       {{"pins.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"pins\": [99999]}"}},
+       "{dir}/pins.json",
+       {"pins.json", "pins", "99999"}},
+      // Course-only rules.
+      {"course_bc",
+       {tri, {"bc.json", course(", \"bc\": [1]")}},
+       "{dir}/bc.json",
+       {"bc.json", "`bc`"}},
+      // Bad OBJ and tet meshes.
+      {"obj_face_out_of_range",
+       {{"range.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n"}},
+       "{dir}/range.obj",
+       {"range.obj", "line 3", "expected 1 to 2"}},
+      {"obj_face_zero",
+       {{"zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"}},
+       "{dir}/zero.obj",
+       {"zero.obj", "line 4", "non-zero"}},
+      {"obj_non_numeric",
+       {{"text.obj", "v 0 0 0\nv 1 abc 0\nv 0 1 0\nf 1 2 3\n"}},
+       "{dir}/text.obj",
+       {"text.obj", "line 2", "'abc'", "finite number"}},
+      {"obj_nan", {{"nan.obj", "v 0 nan 0\n"}}, "{dir}/nan.obj", {"nan.obj", "line 1", "'nan'"}},
+      {"obj_infinite", {{"inf.obj", "v 0 0 1e999\n"}}, "{dir}/inf.obj", {"inf.obj", "line 1"}},
+      {"obj_no_vertices",
+       {{"none.obj", "# only a comment\n"}},
+       "{dir}/none.obj",
+       {"none.obj", "no vertices"}},
+      {"course_obj_bad_face",
+       {{"tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"}, {"c.json", course("")}},
+       "{dir}/c.json",
+       {"tri.obj", "line 4"}},
+      {"medit_tet_out_of_range",
+       {{"t.mesh", std::string(tet_header) + tet_vertices + "Tetrahedra\n1\n1 2 3 9 1\nEnd\n"}},
+       "{dir}/t.mesh",
+       {"t.mesh", "line 11", "1 to 4"}},
+      {"medit_non_numeric",
+       {{"t.mesh", std::string(tet_header) + "0 0 0 1\n1 x 0 1\n"}},
+       "{dir}/t.mesh",
+       {"t.mesh", "line 6", "'x'"}},
+      {"tetgen_out_of_range",
+       {{"t.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"},
+        {"t.ele", "1 4 0\n1 1 2 3 9\n"}},
+       "{dir}/t.ele",
+       {"t.ele", "line 2", "1 to 4"}},
+      {"unknown_file_kind", {{"scene.txt", "hello"}}, "{dir}/scene.txt", {"scene.txt", ".json"}},
+      // Bad command lines.
+      {"unknown_builtin", {}, "curtainz", {"curtainz", "built-in: cloth, jelly"}},
+      {"unknown_option", {}, "cloth --bogus", {"--bogus"}},
+      {"dt_zero", {}, "cloth --dt 0", {"--dt", "positive", "'0'"}},
+      {"dt_negative", {}, "cloth --dt -0.01", {"--dt", "'-0.01'"}},
+      {"dt_not_a_number", {}, "cloth --dt fast", {"--dt", "'fast'"}},
+      {"dt_nan", {}, "cloth --dt nan", {"--dt", "'nan'"}},
+      {"k_zero", {}, "cloth --k 0", {"--k", "'0'"}},
+      {"k_nan", {}, "cloth --k NaN", {"--k", "'NaN'"}},
+      {"iterations_zero", {}, "cloth --iterations 0", {"--iterations", "'0'"}},
+      {"iterations_fraction", {}, "cloth --iterations 2.5", {"--iterations", "'2.5'"}},
+      {"frames_negative", {}, "cloth --frames -4", {"--frames", "'-4'"}},
+      {"frames_nan", {}, "cloth --frames nan", {"--frames", "'nan'"}},
+      {"width_zero", {}, "cloth --width 0", {"--width", "'0'"}},
+      {"width_negative", {}, "cloth --width -640", {"--width", "'-640'"}},
+      {"width_not_a_number", {}, "cloth --width wide", {"--width", "'wide'"}},
+      {"drag_bad_form", {}, "cloth --drag 3:1,2", {"--drag", "DX,DY,DZ", "'3:1,2'"}},
+      {"drag_vertex_out_of_range",
+       {},
+       "cloth --drag 5000:0,0,1@10",
+       {"--drag", "5000", "1600 vertices"}},
+      // Sizes beyond sane limits: refused with the limit, before anything is allocated.
+      {"iterations_above_limit", {}, "cloth --iterations 20000", {"--iterations", "10000"}},
+      {"scene_iterations_above_limit",
+       {{"it.json",
+         "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"iterations\": 20000}}"}},
+       "{dir}/it.json",
+       {"it.json", "simulation.iterations", "10000"}},
+      {"width_above_limit", {}, "cloth --width 100000", {"--width", "16384"}},
+      {"frames_above_limit", {}, "cloth --frames 20000000", {"--frames", "10000000"}},
+      {"cloth_resolution_above_limit",
+       {{"big.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 5000}}"}},
+       "{dir}/big.json",
+       {"big.json", "mesh.resolution", "1000"}},
+  };
+}
+
+void PrintTo(const BadInput& input, std::ostream* out) {
+  *out << input.name << ": wobble " << input.arguments;
+}
+
+class Catalogue : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
+  const BadInput& input = GetParam();
+  TemporaryFolder folder;
+  for (const auto& [name, content] : input.files) {
+    std::filesystem::create_directories(folder.path() / std::filesystem::path(name).parent_path());
+    std::ofstream(folder.file(name), std::ios::binary) << content;
+  }
+  const std::vector<std::string> before = folder.entries();
+
+  std::string arguments = input.arguments;
+  const std::string dir = "{dir}";
+  for (std::size_t at = arguments.find(dir); at != std::string::npos; at = arguments.find(dir))
+    arguments.replace(at, dir.size(), folder.path().string());
+  if (arguments.find("--frames") == std::string::npos) arguments += " --frames 3";
+  const Result result =
+      run_wobble(arguments + " --headless --export-obj '" + folder.file("out.obj") +
+                 "' --screenshot '" + folder.file("out.png") + "'");
+
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_EQ(result.err.rfind("wobble: ", 0), 0u) << result.err;
+  for (const std::string& expected : input.expected)
+    EXPECT_NE(result.err.find(expected), std::string::npos) << expected << " in " << result.err;
+  EXPECT_EQ(result.out, "");
+  std::vector<std::string> after = folder.entries();
+  std::sort(after.begin(), after.end());
+  std::vector<std::string> expected_entries = before;
+  std::sort(expected_entries.begin(), expected_entries.end());
+  EXPECT_EQ(after, expected_entries) << "a file was written";
+}
+
+INSTANTIATE_TEST_SUITE_P(BadInput, Catalogue, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+
+}  // namespace
