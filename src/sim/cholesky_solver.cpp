@@ -243,49 +243,14 @@ bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
 
 void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
   const Eigen::Index n = static_cast<Eigen::Index>(permutation_.size());
-  double* w = work_.data();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    double* row = w + 4 * permutation_[i];
-    row[0] = b(i, 0);
-    row[1] = b(i, 1);
-    row[2] = b(i, 2);
-  }
-  // Forward: L z = P b, column by column; each column's value is used on all three
-  // coordinates while it is in a register.
-  for (Eigen::Index j = 0; j < n; ++j) {
-    double* wj = w + 4 * j;
-    const double d = inverse_diagonal_[j];
-    const double z0 = wj[0] * d, z1 = wj[1] * d, z2 = wj[2] * d;
-    wj[0] = z0;
-    wj[1] = z1;
-    wj[2] = z2;
-    for (int s = column_start_[j]; s < column_start_[j + 1]; ++s) {
-      double* wi = w + 4 * column_rows_[s];
-      const double v = column_values_[s];
-      wi[0] -= v * z0;
-      wi[1] -= v * z1;
-      wi[2] -= v * z2;
-    }
-  }
-  // Backward: Lᵀ u = z, from the last row up; row j of Lᵀ is column j of L.
-  for (Eigen::Index j = n - 1; j >= 0; --j) {
-    double* wj = w + 4 * j;
-    double s0 = wj[0], s1 = wj[1], s2 = wj[2];
-    for (int s = column_start_[j]; s < column_start_[j + 1]; ++s) {
-      const double* wi = w + 4 * column_rows_[s];
-      const double v = column_values_[s];
-      s0 -= v * wi[0];
-      s1 -= v * wi[1];
-      s2 -= v * wi[2];
-    }
-    const double d = inverse_diagonal_[j];
-    wj[0] = s0 * d;
-    wj[1] = s1 * d;
-    wj[2] = s2 * d;
-  }
+  Lane4* w = reinterpret_cast<Lane4*>(work_.data());
+  for (Eigen::Index i = 0; i < n; ++i)
+    w[permutation_[i]] = Lane4{b(i, 0), b(i, 1), b(i, 2), 0.0};
+  substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
+                   column_values_.data(), inverse_diagonal_.data(), w);
   if (x.rows() != n || x.cols() != 3) x.resize(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double* row = w + 4 * permutation_[i];
+    const Lane4& row = w[permutation_[i]];
     x(i, 0) = row[0];
     x(i, 1) = row[1];
     x(i, 2) = row[2];

@@ -5,6 +5,8 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "substitute_lanes.h"
+
 namespace wobble {
 
 // Supernodal sparse Cholesky factorization Q = Pᵀ L Lᵀ P (AMD ordering) with a solve for the
@@ -56,7 +58,7 @@ class CholeskySolver {
   // Factorization scratch: relative row positions, update lists and the dense update.
   std::vector<int> relative_, link_head_, link_next_, cursor_;
   std::vector<double> update_;
-  std::vector<double> work_;  // solve scratch: #V by 4 (x, y, z, padding)
+  std::vector<double> work_;  // solve scratch: #V by 4 (x, y, z, padding), seen as Lane4s
 };
 
 }  // namespace wobble

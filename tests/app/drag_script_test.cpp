@@ -66,9 +66,13 @@ TEST(DragScript, AFreeVertexIsHeldAlongTheWayAndLetGoAfter) {
       EXPECT_LT((simulation.pin_target(3) - expected).norm(), 1e-12) << "frame " << frame;
     }
     simulation.step();
-    if (held) EXPECT_NEAR(simulation.positions()(3, 1), start.y() + 0.1 * (frame - 1), 1e-6);
-    // Let go at the drag's speed, 0.1 m a frame upwards.
-    if (frame == 5) EXPECT_NEAR(simulation.velocities()(3, 1), 0.1 / params.dt, 1e-3);
+    if (held) {
+      EXPECT_NEAR(simulation.positions()(3, 1), start.y() + 0.1 * (frame - 1), 1e-6);
+    }
+    if (frame == 5) {
+      // Let go at the drag's speed, 0.1 m a frame upwards.
+      EXPECT_NEAR(simulation.velocities()(3, 1), 0.1 / params.dt, 1e-3);
+    }
   }
   EXPECT_EQ(simulation.pinned_vertices(), mesh.pins);
   // Free again: the springs have pulled it off the drag's end point.
