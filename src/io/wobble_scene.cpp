@@ -168,7 +168,9 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     for (const std::string& key : material.unread())
       unknown.push_back(key);
   } else {
-    JsonFields none(path, nlohmann::json::object());
+    // JsonFields keeps a reference to its object, so the empty one must outlive it.
+    const nlohmann::json empty = nlohmann::json::object();
+    JsonFields none(path, empty);
     set_masses(none, shape.mesh);
   }
   scene.network = std::move(shape.mesh.network);
