@@ -174,4 +174,17 @@ TEST(WobbleScene, LoadWobbleSceneRefusesWhatIsNotAWobbleScene) {
   }
 }
 
+// Found by fuzz_wobble_scene (nlohmann's assertion, kept on in the fuzz build): a pin band with
+// neither "below" nor "above" looked up "above" in a const object that lacks it, which is
+// undefined behaviour.
+TEST(WobbleScene, PinBandWithoutBelowOrAboveIsRefused) {
+  for (const std::string band : {R"({"ab1e308ove": 0.1})", R"({"below": 0.1, "above": 0.2})",
+                                 R"({"below": -1})", R"({"above": "high"})"}) {
+    const std::string message = error_of(
+        R"({"mesh": {"generator": "cloth", "resolution": 3}, "pins": [0, "top", )" + band + "]}");
+    EXPECT_NE(message.find("scene.json: pins: expected a vertex index, \"top\""), std::string::npos)
+        << band << " -> " << message;
+  }
+}
+
 }  // namespace
