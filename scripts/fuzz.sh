@@ -32,11 +32,14 @@ declare -A dictionary=(
   [fuzz_obj]=obj.dict
   [fuzz_medit_mesh]=medit_mesh.dict
 )
+# A harness that crashes cannot remove its private folder, so the folders go here, cleared after
+# each harness, rather than into /tmp.
+export TMPDIR="$PWD/build-fuzz/fuzz/tmp"
 findings=()
 summary=()
 for harness in fuzz_course_scene fuzz_wobble_scene fuzz_obj fuzz_medit_mesh; do
   work="build-fuzz/fuzz/$harness"
-  mkdir -p "$work/corpus" "$work/findings"
+  mkdir -p "$work/corpus" "$work/findings" "$TMPDIR"
   cp -n "tests/fuzz/corpus/$harness/"* "$work/corpus/"
   log="$work/last-run.log"
   echo "wobble: fuzzing $harness for ${seconds}s (log: $log)" >&2
@@ -47,6 +50,7 @@ for harness in fuzz_course_scene fuzz_wobble_scene fuzz_obj fuzz_medit_mesh; do
     -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
     -dict="tests/fuzz/${dictionary[$harness]}" -artifact_prefix="$work/findings/" \
     "$work/corpus" </dev/null >"$log" 2>&1 || status=$?
+  rm -rf "$TMPDIR"/wobble-fuzz-*
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
   speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -n 1)
   written=$(sed -n 's/.*Test unit written to \(.*\)$/\1/p' "$log" |

@@ -44,12 +44,14 @@ void write_bytes(const std::string& path, const char* data, std::size_t size) {
 class Folder {
  public:
   Folder() {
-    char name[] = "/tmp/wobble-fuzz-XXXXXX";
-    if (mkdtemp(name) == nullptr) {
+    const char* base = std::getenv("TMPDIR");
+    std::string pattern =
+        std::string(base != nullptr && *base != '\0' ? base : "/tmp") + "/wobble-fuzz-XXXXXX";
+    if (mkdtemp(pattern.data()) == nullptr) {
       std::perror("wobble fuzz: mkdtemp");
       std::abort();
     }
-    path_ = name;
+    path_ = pattern;
     const std::pair<const char*, const char*> fixtures[] = {
         {"mesh.obj", kSurface}, {"mesh.mesh", kMedit},     {"mesh.node", kNode},
         {"mesh.ele", kEle},     {"texture.png", kTexture},

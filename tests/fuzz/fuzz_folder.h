@@ -9,9 +9,11 @@
 namespace wobble::fuzz {
 
 // The private folder the harnesses write their inputs into: made once per process with mkdtemp
-// under /tmp, holding small valid files a scene can refer to by name (mesh.obj, a closed
-// tetrahedron surface with vt; mesh.mesh, mesh.node and mesh.ele, one tetrahedron; texture.png),
-// and removed with everything in it when the process exits.
+// under $TMPDIR (default /tmp), holding small valid files a scene can refer to by name (mesh.obj, a
+// closed tetrahedron surface with vt; mesh.mesh, mesh.node and mesh.ele, one tetrahedron;
+// texture.png), and removed with everything in it when the process exits normally (a crashing
+// process leaves it behind, which is why scripts/fuzz.sh points TMPDIR into build-fuzz/ and clears
+// it).
 const std::string& fuzz_folder();
 
 // Write `size` bytes to fuzz_folder()/name, replacing any earlier file, and return its path.
