@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Install the Debian packages Wobble needs, but only those that are missing: a machine that has
-# them all is left untouched and nothing is downloaded. Sourced by run.sh and test.sh.
+# them all is left untouched and nothing is downloaded. Sourced by run.sh, test.sh and fuzz.sh.
 set -euo pipefail
 
 # What building and running wobble needs.
@@ -19,10 +19,16 @@ test_packages=(
   xvfb xauth
 )
 
-# ensure_packages run|test
+# What scripts/fuzz.sh needs on top: clang and its libFuzzer and sanitizer runtimes.
+fuzz_packages=(
+  clang libclang-rt-14-dev
+)
+
+# ensure_packages run|test|fuzz
 ensure_packages() {
   local wanted=("${run_packages[@]}")
   [ "${1:-run}" = test ] && wanted+=("${test_packages[@]}")
+  [ "${1:-run}" = fuzz ] && wanted+=("${fuzz_packages[@]}")
   local missing=()
   for package in "${wanted[@]}"; do
     if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed'; then

@@ -17,6 +17,8 @@ class JsonFields {
  public:
   // `object` must outlive this. `path` is the key path of the object ("" at the top).
   JsonFields(const std::string& file, const nlohmann::json& object, std::string path = "");
+  // A temporary object would be gone before the first key is read.
+  JsonFields(const std::string& file, nlohmann::json&& object, std::string path = "") = delete;
 
   bool has(const std::string& key) const;
   // The child object at `key` (InputError if it is not an object).

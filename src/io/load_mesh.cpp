@@ -77,6 +77,10 @@ LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution) {
   } else {
     mesh.kind = LoadedMesh::Kind::surface;
     mesh.network.m = voronoi_masses(obj.V, triangles);
+    if (!(mesh.network.m.sum() > 0.0)) {
+      throw InputError(path + ": every face has zero area, so no vertex gets a mass; expected " +
+                       "faces whose corners are not all on one line");
+    }
     // A vertex on no face (only on l lines) has no area; give it the mean so it has a mass.
     const double mean = mesh.network.m.sum() / static_cast<double>(mesh.network.m.size());
     for (Eigen::Index i = 0; i < mesh.network.m.size(); ++i) {

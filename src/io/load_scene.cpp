@@ -33,7 +33,11 @@ Scene bare_mesh_scene(const std::string& path, bool fill) {
                         " of " + path);
   scene.network = std::move(mesh.network);
   if (mesh.uv.rows() == scene.network.V.rows()) scene.look.uv = mesh.uv;
-  validate_spring_network(scene.network);
+  try {
+    validate_spring_network(scene.network);
+  } catch (const InputError& error) {
+    throw InputError(path + ": " + error.what());
+  }
   return scene;
 }
 

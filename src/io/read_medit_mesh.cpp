@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 #include "sim/tet_mesh.h"
 
 namespace wobble {
@@ -109,9 +110,13 @@ class Words {
     return value;
   }
 
-  long count(const std::string& keyword) {
+  long count(const std::string& keyword, long limit = INT_MAX) {
     const long n = integer("the number of " + keyword);
     if (n < 0) fail("expected a non-negative number of " + keyword + ", got " + std::to_string(n));
+    if (n > limit) {
+      fail("expected at most " + with_thousands_separators(limit) + " " + keyword +
+           " (Wobble's limit), got " + std::to_string(n));
+    }
     return n;
   }
 
@@ -159,7 +164,7 @@ TetMeshFile read_medit_mesh(const std::string& path) {
     } else if (same_keyword(keyword, "Vertices")) {
       if (have_vertices) words.fail("expected one Vertices section, found a second");
       have_vertices = true;
-      const long n = words.count("Vertices");
+      const long n = words.count("Vertices", max_input_vertices);
       for (long i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c)
           coordinates.push_back(words.number("a coordinate in " + row_name("Vertices", i)));
@@ -168,7 +173,7 @@ TetMeshFile read_medit_mesh(const std::string& path) {
     } else if (same_keyword(keyword, "Tetrahedra")) {
       if (have_tetrahedra) words.fail("expected one Tetrahedra section, found a second");
       have_tetrahedra = true;
-      const long n = words.count("Tetrahedra");
+      const long n = words.count("Tetrahedra", max_input_tetrahedra);
       for (long t = 0; t < n; ++t) {
         for (int c = 0; c < 4; ++c) {
           corners.push_back(

@@ -25,8 +25,9 @@ namespace wobble {
 //
 // Throws InputError, with a one-line message "PATH: line L: expected ...", when the file cannot
 // be read, a keyword is unknown, a number is malformed or not finite, a section ends early, a
-// section appears twice, an index is 0 or above the vertex count, there is no Vertices section
-// or no tetrahedron, or a tetrahedron is degenerate: a repeated corner or zero volume (its
+// section appears twice, a count is above Wobble's limits (10,000,000 vertices, 60,000,000
+// tetrahedra; sim/input_limits.h), an index is 0 or above the vertex count, there is no Vertices
+// section or no tetrahedron, or a tetrahedron is degenerate: a repeated corner or zero volume (its
 // corners coplanar to rounding, |volume| <= 1e-12 × its longest edge³), which would give its
 // corners no mass and its faces no orientation.
 //

@@ -18,11 +18,11 @@ const char* const expected_pins =
 void add_band(JsonFields& fields, const std::string& key, const nlohmann::json& band,
               const Eigen::MatrixXd& V, std::set<int>& pins) {
   const bool below = band.contains("below");
-  const nlohmann::json& height = below ? band["below"] : band["above"];
-  if (band.size() != 1 || (!below && !band.contains("above")) || !height.is_number() ||
-      !(height.get<double>() >= 0.0)) {
-    fields.fail(key, expected_pins);
-  }
+  // Only a key that is there may be looked up: operator[] of a const object has no entry to
+  // return for a missing one (undefined behaviour; nlohmann asserts).
+  if (band.size() != 1 || (!below && !band.contains("above"))) fields.fail(key, expected_pins);
+  const nlohmann::json& height = band.at(below ? "below" : "above");
+  if (!height.is_number() || !(height.get<double>() >= 0.0)) fields.fail(key, expected_pins);
   const double h = height.get<double>();
   const double low = V.col(1).minCoeff(), high = V.col(1).maxCoeff();
   for (Eigen::Index i = 0; i < V.rows(); ++i) {

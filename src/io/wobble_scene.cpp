@@ -135,6 +135,9 @@ bool is_wobble_scene(const nlohmann::json& object) {
 }
 
 Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
+  if (!is_wobble_scene(object)) {
+    throw InputError(path + ": not a Wobble scene, expected a JSON object with a \"mesh\"");
+  }
   JsonFields top(path, object);
   std::vector<std::string> unknown;
   Scene scene;
@@ -252,7 +255,11 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
       list += (list.empty() ? "" : ", ") + key;
     scene.notes.push_back(path + ": unknown keys ignored: " + list);
   }
-  validate_spring_network(scene.network);
+  try {
+    validate_spring_network(scene.network);
+  } catch (const InputError& error) {
+    throw InputError(path + ": " + error.what());
+  }
   return scene;
 }
 

@@ -13,7 +13,8 @@ bool is_wobble_scene(const nlohmann::json& object);
 
 // Build the scene a Wobble scene file describes (the README documents the format). `path` names
 // the file in messages and anchors relative paths. Unknown keys do not stop loading: they become
-// a note naming them. Throws InputError naming the file, the key and what was expected.
+// a note naming them. Throws InputError naming the file, the key and what was expected (or,
+// when `object` is not a JSON object with a "mesh", saying so).
 Scene load_wobble_scene(const std::string& path, const nlohmann::json& object);
 
 }  // namespace wobble

@@ -84,4 +84,14 @@ TEST(LoadScene, UnknownFilesAreRefusedByName) {
   EXPECT_NE(message.find("notes.txt: unknown kind of file"), std::string::npos) << message;
 }
 
+// Found by fuzz_obj: a surface whose faces all have zero area gave every vertex the mean mass,
+// 0, and the error from the spring network's check named no file.
+TEST(LoadScene, ObjWhoseFacesHaveNoAreaIsRefusedByName) {
+  TemporaryFolder folder;
+  const std::string path = folder.file("line.obj");
+  std::ofstream(path) << "f 1 2 3\nv 0 0 8\nv 0 0 5\nv 0 0 5\n";
+  EXPECT_EQ(error_of(path), path + ": every face has zero area, so no vertex gets a mass; " +
+                                "expected faces whose corners are not all on one line");
+}
+
 }  // namespace
