@@ -14,10 +14,12 @@ WOBBLE_LANE_CLONES void substitute_lanes(int n, const int* start, const int* row
   // Forward: column j's value is final once the columns left of it are done; it then updates
   // the rows below. The updates of one column go to distinct rows, so they do not wait on each
   // other.
+  // (Lane4 may alias anything, so the loop bounds are read once, before w is written.)
   for (int j = 0; j < n; ++j) {
     const Lane4 z = w[j] * inverse_diagonal[j];
     w[j] = z;
-    for (int s = start[j]; s < start[j + 1]; ++s)
+    const int end = start[j + 1];
+    for (int s = start[j]; s < end; ++s)
       w[rows[s]] -= values[s] * z;
   }
   // Backward: row j of Lᵀ is column j of L, so each entry is a dot product down a column. Two
