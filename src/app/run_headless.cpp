@@ -46,6 +46,8 @@ nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& sce
       {"k", params.k},
       {"dt", params.dt},
       {"precompute_ms", simulation.precompute_ms()},
+      {"factor_nonzeros", simulation.factor_nonzeros()},
+      {"single_precision_solve", simulation.solves_in_single_precision()},
       {"step_ms_median", median(step_ms)},
       {"step_ms_min", step_ms.empty() ? 0.0 : *std::min_element(step_ms.begin(), step_ms.end())},
       {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},

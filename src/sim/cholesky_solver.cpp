@@ -137,7 +137,9 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
                 column_rows_.begin() + column_start_[s.first + c]);
     }
   }
-  column_values_.assign(column_rows_.size(), 0.0);
+  single_ = factor_nonzeros_ > single_precision_above_;
+  column_values_.assign(single_ ? 0 : column_rows_.size(), 0.0);
+  column_values_single_.assign(single_ ? column_rows_.size() : 0, 0.0f);
 
   // Where each stored value of Q lands in the blocks (its lower-triangle twin, once permuted).
   std::vector<int> position(n, -1);
@@ -232,11 +234,20 @@ bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
       inverse_diagonal_[node.first + c] = 1.0 / block(c, c);
   }
   // L by columns for the solve, in the order the supernodes and their columns come.
+  // (Rounded to float for a large factor: see solves_in_single_precision.)
   double* out = column_values_.data();
+  float* out_single = column_values_single_.data();
   for (const Supernode& node : supernodes_) {
     const double* block = values_.data() + node.value_start;
-    for (int c = 0; c < node.width; ++c)
-      out = std::copy(block + c * node.rows + c + 1, block + (c + 1) * node.rows, out);
+    for (int c = 0; c < node.width; ++c) {
+      const double* first = block + c * node.rows + c + 1;
+      const double* last = block + (c + 1) * node.rows;
+      if (single_) {
+        out_single = std::copy(first, last, out_single);
+      } else {
+        out = std::copy(first, last, out);
+      }
+    }
   }
   return true;
 }
@@ -246,8 +257,13 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
   Lane4* w = reinterpret_cast<Lane4*>(work_.data());
   for (Eigen::Index i = 0; i < n; ++i)
     w[permutation_[i]] = Lane4{b(i, 0), b(i, 1), b(i, 2), 0.0};
-  substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
-                   column_values_.data(), inverse_diagonal_.data(), w);
+  if (single_) {
+    substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
+                     column_values_single_.data(), inverse_diagonal_.data(), w);
+  } else {
+    substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
+                     column_values_.data(), inverse_diagonal_.data(), w);
+  }
   if (x.rows() != n || x.cols() != 3) x.resize(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
     const Lane4& row = w[permutation_[i]];

@@ -112,6 +112,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   pin_count_ = static_cast<int>(initial_pins_.size());
   update_external_forces();
 
+  solver_.set_single_precision_above(params_.single_precision_solve_above);
   solver_.analyze(Q_);
   ++symbolic_analyses_;
   refactorize();

@@ -30,6 +30,10 @@ struct SimulationParams {
   // Chebyshev semi-iterative acceleration of the iterations (Wang 2015). Off by default, and for
   // the course's scenes, whose positions must match the reference.
   bool chebyshev = false;
+  // A Cholesky factor with more nonzeros than this is read in single precision by the solve
+  // (see CholeskySolver::set_single_precision_above): only the largest scenes, whose factor no
+  // longer fits in cache. Course scenes never get near it.
+  long single_precision_solve_above = CholeskySolver::default_single_precision_above;
 };
 
 // Throws InputError unless k and dt are positive and finite, iterations within 1 to
@@ -154,6 +158,8 @@ class Simulation {
   int numeric_factorizations() const { return numeric_factorizations_; }
   // Nonzeros of the Cholesky factor L of Q, its diagonal included.
   long factor_nonzeros() const { return solver_.factor_nonzeros(); }
+  // Whether the solve reads the factor's values rounded to float (a large factor).
+  bool solves_in_single_precision() const { return solver_.solves_in_single_precision(); }
 
  private:
   void check_vertex(int i, const char* what) const;

@@ -18,6 +18,9 @@ typedef double Lane4 __attribute__((vector_size(32), aligned(8), may_alias));
 // bit: the file is compiled without contracting a·b + c into FMA.
 void substitute_lanes(int n, const int* start, const int* rows, const double* values,
                       const double* inverse_diagonal, Lane4* w);
+// The same with L's values below the diagonal rounded to float; the arithmetic is double.
+void substitute_lanes(int n, const int* start, const int* rows, const float* values,
+                      const double* inverse_diagonal, Lane4* w);
 
 }  // namespace wobble
 

@@ -45,6 +45,28 @@ TEST(CholeskySolver, SolvesAllThreeCoordinatesLikeEigen) {
   EXPECT_GT(solver.factor_nonzeros(), Q.rows());
 }
 
+TEST(CholeskySolver, ALargeFactorIsReadInSinglePrecisionToAboutFloatAccuracy) {
+  const Eigen::SparseMatrix<double> Q = cloth_system(400.0, 1e10);
+  Eigen::MatrixXd b = Eigen::MatrixXd::Random(Q.rows(), 3);
+  b.row(0) *= 1e10;  // a pin's target, as the simulation weights it
+  wobble::CholeskySolver exact, single;
+  exact.analyze(Q);
+  ASSERT_TRUE(exact.factorize(Q));
+  EXPECT_FALSE(exact.solves_in_single_precision()) << "a small factor stays double";
+  single.set_single_precision_above(0);
+  single.analyze(Q);
+  ASSERT_TRUE(single.factorize(Q));
+  ASSERT_TRUE(single.solves_in_single_precision());
+  Eigen::MatrixXd x_exact, x_single;
+  exact.solve(b, x_exact);
+  single.solve(b, x_single);
+  const double error = (x_single - x_exact).norm() / x_exact.norm();
+  EXPECT_LT(error, 1e-6);
+  EXPECT_GT(error, 1e-12) << "the values were not rounded";
+  // The pinned row still sits on its target.
+  EXPECT_NEAR(x_single(0, 0), x_exact(0, 0), 1e-6 * std::abs(x_exact(0, 0)));
+}
+
 TEST(CholeskySolver, RefactorizesNewValuesOnTheSamePattern) {
   wobble::CholeskySolver solver;
   const Eigen::SparseMatrix<double> soft = cloth_system(10.0, 1e10);
