@@ -18,10 +18,10 @@ using wobble::Simulation;
 using wobble::benchmark::BenchmarkScene;
 using wobble::benchmark::ReferenceStepper;
 
-// How many steps to time: enough for a stable median, few enough that 256×256 stays quick.
+// How many steps to time: enough for a stable mean, few enough that 256×256 stays quick.
 int steps_for(const BenchmarkScene& scene) {
   const long n = scene.scene.network.V.rows();
-  return n > 30000 ? 3 : n > 10000 ? 6 : n > 5000 ? 12 : 30;
+  return n > 30000 ? 6 : n > 10000 ? 8 : n > 5000 ? 12 : 30;
 }
 
 Simulation& simulation_for(const BenchmarkScene& scene) {
