@@ -7,6 +7,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "parse_number.h"
 #include "scene_catalog.h"
 #include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
@@ -24,16 +25,6 @@ std::string number_text(double value) {
   std::ostringstream text;
   text << value;
   return text.str();
-}
-
-// The whole of `text` as a number of type T, or nothing if any of it is not part of one.
-template <typename T>
-std::optional<T> parse_number(const std::string& text) {
-  T value{};
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
-  return value;
 }
 
 double positive_number(const char* option, const std::string& text, double limit) {

@@ -1,25 +1,12 @@
 #include "drag_script.h"
 
-#include <charconv>
 #include <cmath>
 #include <optional>
 
+#include "parse_number.h"
 #include "sim/input_error.h"
 
 namespace wobble {
-
-namespace {
-
-template <typename T>
-std::optional<T> whole_text_as(const std::string& text) {
-  T value{};
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
-  return value;
-}
-
-}  // namespace
 
 ScriptedDrag parse_drag(const std::string& text, long max_frame) {
   const auto refuse = [&text](const std::string& why) {
@@ -33,7 +20,7 @@ ScriptedDrag parse_drag(const std::string& text, long max_frame) {
   }
   ScriptedDrag drag;
   drag.text = text;
-  const std::optional<int> vertex = whole_text_as<int>(text.substr(0, colon));
+  const std::optional<int> vertex = parse_number<int>(text.substr(0, colon));
   if (!vertex || *vertex < 0) throw refuse("VERTEX a vertex index from 0");
   drag.vertex = *vertex;
 
@@ -42,7 +29,7 @@ ScriptedDrag parse_drag(const std::string& text, long max_frame) {
   for (int c = 0; c < 3; ++c) {
     const std::size_t comma = c < 2 ? offset.find(',', begin) : offset.size();
     if (comma == std::string::npos) throw refuse("three offsets DX,DY,DZ in metres");
-    const std::optional<double> value = whole_text_as<double>(offset.substr(begin, comma - begin));
+    const std::optional<double> value = parse_number<double>(offset.substr(begin, comma - begin));
     if (!value || !std::isfinite(*value) || std::abs(*value) > ScriptedDrag::max_offset) {
       throw refuse("offsets DX,DY,DZ that are numbers of at most 1e6 m");
     }
@@ -53,7 +40,7 @@ ScriptedDrag parse_drag(const std::string& text, long max_frame) {
 
   const std::string frames = text.substr(at + 1);
   const std::size_t dash = frames.find('-');
-  const std::optional<long> first = whole_text_as<long>(frames.substr(0, dash));
+  const std::optional<long> first = parse_number<long>(frames.substr(0, dash));
   if (!first || *first < 1 || *first > max_frame) {
     throw refuse("FRAME a frame from 1 to " + std::to_string(max_frame));
   }
@@ -61,7 +48,7 @@ ScriptedDrag parse_drag(const std::string& text, long max_frame) {
   if (dash == std::string::npos) {
     drag.last_frame = *first + ScriptedDrag::default_frames - 1;
   } else {
-    const std::optional<long> last = whole_text_as<long>(frames.substr(dash + 1));
+    const std::optional<long> last = parse_number<long>(frames.substr(dash + 1));
     if (!last || *last < *first || *last > max_frame) {
       throw refuse("LAST a frame from FRAME to " + std::to_string(max_frame));
     }

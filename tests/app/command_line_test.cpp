@@ -157,11 +157,8 @@ TEST(CommandLine, AStepThatFailsExitsWith1AndWritesNoExport) {
   EXPECT_NE(result.err.find("rolled back"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(folder.file("out.obj")));
   // The two good frames were written, and nothing after them.
-  std::vector<std::string> frames;
-  for (const auto& entry : std::filesystem::directory_iterator(objs))
-    frames.push_back(entry.path().filename().string());
-  std::sort(frames.begin(), frames.end());
-  EXPECT_EQ(frames, (std::vector<std::string>{"frame_00001.obj", "frame_00002.obj"}));
+  EXPECT_EQ(wobble::testing::sorted_names(objs),
+            (std::vector<std::string>{"frame_00001.obj", "frame_00002.obj"}));
 }
 
 TEST(CommandLine, ExportToAMissingFolderFailsBeforeSimulatingAndWritesNothing) {

@@ -108,11 +108,7 @@ TEST(HeadlessRender, AStepThatFailsExitsWith1KeepingTheGoodFramesOnly) {
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
   EXPECT_NE(run.err.find("frame 4"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(folder.file("last.png")));
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(record))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  EXPECT_EQ(names,
+  EXPECT_EQ(wobble::testing::sorted_names(record),
             (std::vector<std::string>{"frame_00001.png", "frame_00002.png", "frame_00003.png"}));
 }
 
