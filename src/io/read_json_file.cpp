@@ -1,10 +1,8 @@
 #include "read_json_file.h"
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 
+#include "read_text_file.h"
 #include "sim/input_error.h"
 
 namespace wobble {
@@ -44,15 +42,7 @@ class FirstError : public nlohmann::json_sax<nlohmann::json> {
 }  // namespace
 
 nlohmann::json read_json_file(const std::string& path) {
-  std::error_code ignored;
-  if (!std::filesystem::is_regular_file(path, ignored)) {
-    throw InputError(path + ": no such file, expected a scene (JSON)");
-  }
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in) throw InputError(path + ": could not read the file");
-  const std::string text = buffer.str();
+  const std::string text = read_text_file(path, "a scene (JSON)");
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError(path + ": the file is empty, expected a JSON object");
   }

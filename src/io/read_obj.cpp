@@ -5,11 +5,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "read_text_file.h"
 #include "sim/input_error.h"
 
 namespace wobble {
@@ -172,15 +171,7 @@ int resolve(int raw, int before, int count, const std::string& what, const std::
 }  // namespace
 
 ObjMesh read_obj(const std::string& path) {
-  std::error_code ignored;
-  if (!std::filesystem::is_regular_file(path, ignored)) {
-    throw InputError(path + ": no such file, expected an OBJ mesh");
-  }
-  std::ifstream file(path, std::ios::binary);
-  std::stringstream contents;
-  contents << file.rdbuf();
-  if (!file) throw InputError(path + ": could not read the file");
-  const Statements statements = check_statements(path, contents.str());
+  const Statements statements = check_statements(path, read_text_file(path, "an OBJ mesh"));
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;
