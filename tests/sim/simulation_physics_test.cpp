@@ -14,12 +14,7 @@ namespace {
 using wobble::Simulation;
 using wobble::SimulationParams;
 
-SimulationParams test_params() {
-  SimulationParams params;
-  params.k = 200.0;
-  params.dt = 1.0 / 60.0;
-  return params;
-}
+using wobble::testing::test_params;
 
 TEST(SimulationPhysics, MeshAtRestWithoutGravityStaysAtRest) {
   for (const auto& mesh : wobble::testing::all_test_meshes()) {

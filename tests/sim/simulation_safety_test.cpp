@@ -12,9 +12,7 @@ using wobble::SimulationParams;
 using wobble::StepStatus;
 
 SimulationParams plain_params() {
-  SimulationParams params;
-  params.k = 200.0;
-  params.dt = 1.0 / 60.0;
+  SimulationParams params = wobble::testing::test_params();
   params.iterations = 20;
   return params;
 }

@@ -16,13 +16,7 @@ using wobble::Simulation;
 using wobble::SimulationParams;
 using wobble::testing::all_test_meshes;
 
-SimulationParams test_params() {
-  SimulationParams params;
-  params.k = 200.0;
-  params.dt = 1.0 / 60.0;
-  params.iterations = 50;
-  return params;
-}
+using wobble::testing::test_params;
 
 TEST(Simulation, WithTargetsAtRestMatchesTheSeedSparseStep) {
   for (const auto& mesh : all_test_meshes()) {

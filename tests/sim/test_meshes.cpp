@@ -5,6 +5,14 @@
 
 namespace wobble::testing {
 
+SimulationParams test_params() {
+  SimulationParams params;
+  params.k = 200.0;
+  params.dt = 1.0 / 60.0;
+  params.iterations = 50;
+  return params;
+}
+
 TestMesh chain_mesh(int links) {
   TestMesh mesh;
   mesh.name = "chain";

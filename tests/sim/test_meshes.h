@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/simulation.h"
 #include "sim/spring_network.h"
 
 namespace wobble::testing {
@@ -24,6 +25,10 @@ TestMesh grid_mesh();
 TestMesh tet_block_mesh();
 // The three above.
 std::vector<TestMesh> all_test_meshes();
+
+// The parameters the simulation tests share: k = 200 N/m, dt = 1/60 s, 50 iterations, gravity
+// 9.81 m/s² down y.
+SimulationParams test_params();
 
 // f_ext = m g with g = 9.81 m/s² down y: #V by 3.
 Eigen::MatrixXd gravity_forces(const Eigen::VectorXd& m);
