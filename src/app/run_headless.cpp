@@ -42,6 +42,7 @@ nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& sce
       {"pinned", simulation.pin_count()},
       {"iterations", params.iterations},
       {"chebyshev", params.chebyshev},
+      {"chebyshev_rho", simulation.chebyshev_spectral_radius()},
       {"frames", frames},
       {"k", params.k},
       {"dt", params.dt},

@@ -159,6 +159,7 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
   scene.params.iterations = course_iterations;
   scene.params.gravity = Eigen::Vector3d(0.0, course_gravity, 0.0);
   scene.params.gravity_model = GravityModel::force_per_vertex;
+  scene.params.first_iterate = FirstIterate::current_positions;
 
   scene.look.uv = mesh.uv;
   scene.look.texture = texture;

@@ -152,7 +152,7 @@ StepStatus Simulation::step() {
 
   compute_y();
 
-  next_ = current_;
+  start_iterate();
   if (params_.chebyshev) chebyshev_.start(next_);
   double local_ms = 0.0, global_ms = 0.0;
   for (int iteration = 0; iteration < params_.iterations; ++iteration) {
@@ -225,14 +225,23 @@ void Simulation::compute_y() {
   }
 }
 
+void Simulation::start_iterate() {
+  if (params_.first_iterate == FirstIterate::inertial_prediction) {
+    next_ = 2.0 * current_ - previous_;
+  } else {
+    next_ = current_;
+  }
+}
+
 void Simulation::calibrate_chebyshev() {
   // The paper's calibration: plain iterations of one step, from the current state, watching the
-  // updates shrink. Nothing of the state changes.
-  constexpr int calibration_iterations = 40;
+  // updates shrink. Nothing of the state changes. The ratio of updates settles slowly on a soft
+  // cloth: from iterations 20–40 it reads ρ ≈ 0.97 where the error shrinks by 0.985–0.99 per
+  // iteration, and a ρ that low gives away most of the gain; from 50–100 it reads 0.98–0.99.
   compute_y();
   std::vector<double> update_norms;
-  next_ = current_;
-  for (int iteration = 0; iteration < calibration_iterations; ++iteration) {
+  start_iterate();
+  for (int iteration = 0; iteration < chebyshev_calibration_iterations; ++iteration) {
     local_step_->apply(next_, params_.k, y_, rhs_);
     solver_.solve(rhs_, solved_);
     update_norms.push_back((solved_ - next_).norm());

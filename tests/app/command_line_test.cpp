@@ -86,7 +86,7 @@ TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
 TEST(CommandLine, ExportObjWritesTheSaggingCloth) {
   TemporaryFolder folder;
   const std::string path = folder.file("cloth.obj");
-  const Result result = run_wobble("cloth --headless --frames 60 --export-obj '" + path + "'");
+  const Result result = run_wobble("cloth --headless --frames 30 --export-obj '" + path + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::istringstream lines(read(path));
   std::string line;
@@ -105,7 +105,8 @@ TEST(CommandLine, ExportObjWritesTheSaggingCloth) {
   }
   EXPECT_EQ(vertices, 1600);
   EXPECT_EQ(faces, 2 * 39 * 39);
-  // It started flat at y = 1.2 and hangs from its pins there; after 1 s it has swung far down.
+  // It started flat at y = 1.2 and hangs from its pins there; after half a second it is at the
+  // bottom of its first swing.
   EXPECT_NEAR(highest, 1.2, 1e-6);
   EXPECT_LT(lowest, 0.6);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"cloth.obj"});
@@ -187,6 +188,18 @@ TEST(CommandLine, StatsIsOneJsonObjectOnTheLastLine) {
   }
   EXPECT_LE(stats.at("step_ms_min").get<double>(), stats.at("step_ms_median").get<double>());
   EXPECT_LE(stats.at("step_ms_median").get<double>(), stats.at("step_ms_max").get<double>());
+  EXPECT_EQ(stats.at("chebyshev"), false);
+  EXPECT_EQ(stats.at("chebyshev_rho"), 0.0);
+}
+
+TEST(CommandLine, StatsGivesTheEstimatedSpectralRadiusWithChebyshev) {
+  const Result result = run_wobble("jelly --headless --frames 2 --chebyshev --stats");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json stats = nlohmann::json::parse(last_line(result.out));
+  EXPECT_EQ(stats.at("chebyshev"), true);
+  // The jelly's plain iterations shrink their updates by about 0.94 each.
+  EXPECT_GT(stats.at("chebyshev_rho").get<double>(), 0.8);
+  EXPECT_LT(stats.at("chebyshev_rho").get<double>(), 0.999);
 }
 
 TEST(CommandLine, HeadlessRunsAreDeterministic) {

@@ -10,13 +10,13 @@ namespace {
 using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
-TEST(WindowSmoke, OpensRunsSixtyFramesAndShowsTheClothAndPanel) {
+TEST(WindowSmoke, OpensRunsThirtyFramesAndShowsTheClothAndPanel) {
   ASSERT_EQ(std::system("command -v xvfb-run >/dev/null"), 0)
       << "xvfb-run is missing: scripts/test.sh installs it (package xvfb)";
   TemporaryFolder folder;
   const std::string shot = folder.file("window.png");
   // xvfb-run's screen is large enough for the 1280×720 window.
-  const auto run = run_wobble("cloth --frames 60 --screenshot '" + shot + "'",
+  const auto run = run_wobble("cloth --frames 30 --screenshot '" + shot + "'",
                               "xvfb-run -a -s '-screen 0 1600x1000x24'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const wobble::RgbaImage image = wobble::read_png(shot);

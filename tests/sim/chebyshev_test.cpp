@@ -19,16 +19,19 @@ TEST(Chebyshev, SpectralRadiusIsTheSettledRatioOfUpdates) {
 }
 
 // One step of `iterations` from the cloth's state after 20 frames; returns the error against
-// 400 plain iterations, relative to the error of the starting guess.
-double step_error(bool chebyshev, int iterations) {
-  const wobble::Scene scene = wobble::make_builtin_scene("cloth");
+// the converged step (3000 plain iterations: 400 left plain runs visibly short of it), relative
+// to ‖pᵗ − q*‖.
+double step_error(bool chebyshev, int iterations,
+                  wobble::FirstIterate first = wobble::FirstIterate::inertial_prediction) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  scene.params.first_iterate = first;
   wobble::Simulation simulation(scene.network, scene.pins, scene.params);
   simulation.set_iterations(10);
   for (int frame = 0; frame < 20; ++frame)
     simulation.step();
   const Eigen::MatrixXd current = simulation.positions(),
                         previous = simulation.previous_positions();
-  simulation.set_iterations(400);
+  simulation.set_iterations(3000);
   simulation.step();
   const Eigen::MatrixXd converged = simulation.positions();
   simulation.set_state(current, previous);
@@ -38,24 +41,41 @@ double step_error(bool chebyshev, int iterations) {
   return (simulation.positions() - converged).norm() / (current - converged).norm();
 }
 
-TEST(Chebyshev, FourAcceleratedIterationsBeatTenPlainOnes) {
+TEST(Chebyshev, SixAcceleratedIterationsBeatTenPlainOnes) {
+  // Both start from the inertial prediction, which leaves little for the first iterations to do;
+  // the acceleration pays off from about the fifth (0.063 against 0.068 here), and more with
+  // every iteration after.
   const double plain = step_error(false, 10);
-  const double accelerated = step_error(true, 4);
-  std::cout << "  error after 10 plain iterations " << plain << ", after 4 accelerated "
+  const double accelerated = step_error(true, 6);
+  std::cout << "  error after 10 plain iterations " << plain << ", after 6 accelerated "
             << accelerated << "\n";
   EXPECT_LT(accelerated, plain);
 }
 
+TEST(FirstIterate, TheInertialPredictionStartsCloserAndEndsAtTheSameStep) {
+  // The state after 20 frames differs with the start (fewer iterations settle differently), so
+  // each is measured against its own converged step.
+  using wobble::FirstIterate;
+  const double from_current = step_error(false, 10, FirstIterate::current_positions);
+  const double from_inertia = step_error(false, 10, FirstIterate::inertial_prediction);
+  std::cout << "  error after 10 plain iterations: from p^t " << from_current
+            << ", from the inertial prediction " << from_inertia << "\n";
+  EXPECT_LT(from_inertia, 0.5 * from_current);
+  // This soft cloth converges slowly either way (0.028 left from p^t after 1500 iterations).
+  EXPECT_LT(step_error(false, 1500, FirstIterate::current_positions), 0.05);
+  EXPECT_LT(step_error(false, 1500, FirstIterate::inertial_prediction), 0.05);
+}
+
 TEST(Chebyshev, ConvergesToTheSameStep) {
   // Acceleration changes how fast the iterations get there, not where they go: with enough
-  // iterations both approach the 400-iteration answer, the accelerated ones faster.
+  // iterations both approach the converged step, the accelerated ones faster.
   const double plain = step_error(false, 200), accelerated = step_error(true, 200);
   std::cout << "  error after 200 iterations: plain " << plain << ", accelerated " << accelerated
             << "\n";
-  // This soft cloth converges slowly (10 plain iterations leave 60% of the error): the accelerated
+  // This soft cloth converges slowly (200 plain iterations leave 3% of the error): the accelerated
   // run must be clearly closer, and close.
-  EXPECT_LT(accelerated, 0.75 * plain);
-  EXPECT_LT(accelerated, 0.1);
+  EXPECT_LT(accelerated, 0.6 * plain);
+  EXPECT_LT(accelerated, 0.02);
 }
 
 TEST(Chebyshev, EstimatesRhoOnceWhenTurnedOn) {
