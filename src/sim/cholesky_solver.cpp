@@ -119,27 +119,57 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
     factor_nonzeros_ += static_cast<long>(s.rows) * s.width - s.width * (s.width - 1) / 2;
   }
   values_.assign(values, 0.0);
-  // The column copy for the solve: each column of each supernode, below its diagonal.
+  // The copy of L for the solve. A supernode at least block_solve_min_width wide is solved as a
+  // block: its columns keep only their rows among its own columns, and its rows below are read
+  // row by row for all its columns at once. Every other column keeps all its rows below the
+  // diagonal.
+  solve_blocks_.clear();
   column_start_.assign(n + 1, 0);
   inverse_diagonal_.assign(n, 0.0);
-  long entries = 0;
+  long entries = 0, block_entries = 0, block_row_count = 0;
   for (const Supernode& s : supernodes_) {
+    const bool block = s.width >= block_solve_min_width && s.rows > s.width;
     for (int c = 0; c < s.width; ++c) {
       column_start_[s.first + c] = static_cast<int>(entries);
-      entries += s.rows - c - 1;
+      entries += (block ? s.width : s.rows) - c - 1;
+    }
+    if (block) {
+      SolveBlock b;
+      b.first = s.first;
+      b.width = s.width;
+      b.below = s.rows - s.width;
+      b.row_start = block_row_count;
+      b.value_start = block_entries;
+      solve_blocks_.push_back(b);
+      block_row_count += b.below;
+      block_entries += static_cast<long>(b.below) * b.width;
     }
   }
   column_start_[n] = static_cast<int>(entries);
   column_rows_.resize(entries);
-  for (const Supernode& s : supernodes_) {
-    for (int c = 0; c < s.width; ++c) {
-      std::copy(rows_.begin() + s.row_start + c + 1, rows_.begin() + s.row_start + s.rows,
-                column_rows_.begin() + column_start_[s.first + c]);
+  block_rows_.resize(block_row_count);
+  {
+    std::size_t next_block = 0;
+    for (const Supernode& s : supernodes_) {
+      const bool block =
+          next_block < solve_blocks_.size() && solve_blocks_[next_block].first == s.first;
+      const int kept = block ? s.width : s.rows;
+      for (int c = 0; c < s.width; ++c) {
+        std::copy(rows_.begin() + s.row_start + c + 1, rows_.begin() + s.row_start + kept,
+                  column_rows_.begin() + column_start_[s.first + c]);
+      }
+      if (block) {
+        const SolveBlock& b = solve_blocks_[next_block++];
+        std::copy(rows_.begin() + s.row_start + s.width, rows_.begin() + s.row_start + s.rows,
+                  block_rows_.begin() + b.row_start);
+      }
     }
   }
   single_ = factor_nonzeros_ > single_precision_above_;
   column_values_.assign(single_ ? 0 : column_rows_.size(), 0.0);
   column_values_single_.assign(single_ ? column_rows_.size() : 0, 0.0f);
+  block_values_.assign(single_ ? 0 : block_entries, 0.0);
+  block_values_single_.assign(single_ ? block_entries : 0, 0.0f);
 
   // Where each stored value of Q lands in the blocks (its lower-triangle twin, once permuted).
   std::vector<int> position(n, -1);
@@ -233,23 +263,37 @@ bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
     for (int c = 0; c < node.width; ++c)
       inverse_diagonal_[node.first + c] = 1.0 / block(c, c);
   }
-  // L by columns for the solve, in the order the supernodes and their columns come.
-  // (Rounded to float for a large factor: see solves_in_single_precision.)
-  double* out = column_values_.data();
-  float* out_single = column_values_single_.data();
+  // L for the solve, in the order the supernodes and their columns come: by columns, and the
+  // rows below a block row by row. (Rounded to float for a large factor: see
+  // solves_in_single_precision.)
+  if (single_) {
+    copy_for_solve(column_values_single_.data(), block_values_single_.data());
+  } else {
+    copy_for_solve(column_values_.data(), block_values_.data());
+  }
+  return true;
+}
+
+template <typename Value>
+void CholeskySolver::copy_for_solve(Value* columns, Value* blocks) const {
+  std::size_t next_block = 0;
   for (const Supernode& node : supernodes_) {
     const double* block = values_.data() + node.value_start;
+    const bool is_block =
+        next_block < solve_blocks_.size() && solve_blocks_[next_block].first == node.first;
+    const int kept = is_block ? node.width : node.rows;
     for (int c = 0; c < node.width; ++c) {
-      const double* first = block + c * node.rows + c + 1;
-      const double* last = block + (c + 1) * node.rows;
-      if (single_) {
-        out_single = std::copy(first, last, out_single);
-      } else {
-        out = std::copy(first, last, out);
+      columns = std::copy(block + c * node.rows + c + 1, block + c * node.rows + kept, columns);
+    }
+    if (is_block) {
+      const SolveBlock& b = solve_blocks_[next_block++];
+      Value* out = blocks + b.value_start;
+      for (int i = 0; i < b.below; ++i) {
+        for (int c = 0; c < node.width; ++c)
+          *out++ = static_cast<Value>(block[c * node.rows + node.width + i]);
       }
     }
   }
-  return true;
 }
 
 void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
@@ -258,11 +302,9 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
   for (Eigen::Index i = 0; i < n; ++i)
     w[permutation_[i]] = Lane4{b(i, 0), b(i, 1), b(i, 2), 0.0};
   if (single_) {
-    substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
-                     column_values_single_.data(), inverse_diagonal_.data(), w);
+    substitute_lanes(solve_factor(column_values_single_.data(), block_values_single_.data()), w);
   } else {
-    substitute_lanes(static_cast<int>(n), column_start_.data(), column_rows_.data(),
-                     column_values_.data(), inverse_diagonal_.data(), w);
+    substitute_lanes(solve_factor(column_values_.data(), block_values_.data()), w);
   }
   if (x.rows() != n || x.cols() != 3) x.resize(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -271,6 +313,21 @@ void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
     x(i, 1) = row[1];
     x(i, 2) = row[2];
   }
+}
+
+template <typename Value>
+SolveFactor<Value> CholeskySolver::solve_factor(const Value* columns, const Value* blocks) const {
+  SolveFactor<Value> f;
+  f.n = static_cast<int>(permutation_.size());
+  f.start = column_start_.data();
+  f.rows = column_rows_.data();
+  f.values = columns;
+  f.inverse_diagonal = inverse_diagonal_.data();
+  f.block_count = static_cast<int>(solve_blocks_.size());
+  f.blocks = solve_blocks_.data();
+  f.block_rows = block_rows_.data();
+  f.block_values = blocks;
+  return f;
 }
 
 }  // namespace wobble
