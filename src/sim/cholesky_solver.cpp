@@ -10,6 +10,26 @@ namespace {
 
 using ColumnBlock = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
 
+// Column counts of L (entries below the diagonal), from the rows of Q's lower triangle (row i's
+// columns left of the diagonal at left[left_start[i]...]) and the elimination tree. Row i of L
+// is the subtree of the tree reached from row i's entries of Q by walking up towards i: each
+// column passed on the way has an entry in row i.
+std::vector<int> column_counts(const std::vector<int>& left_start, const std::vector<int>& left,
+                               const std::vector<int>& parent) {
+  const int n = static_cast<int>(parent.size());
+  std::vector<int> mark(n, -1), count(n, 0);
+  for (int i = 0; i < n; ++i) {
+    mark[i] = i;
+    for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
+      for (int j = left[s]; mark[j] != i; j = parent[j]) {
+        mark[j] = i;
+        ++count[j];
+      }
+    }
+  }
+  return count;
+}
+
 }  // namespace
 
 void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
@@ -59,42 +79,13 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
       }
     }
   }
-  // The pattern of L below the diagonal, by columns. Row i of L is the subtree of the elimination
-  // tree reached from row i's entries of Q by walking up to i, so visiting the rows in order
-  // fills every column's list already sorted: first the counts, then the rows.
-  std::vector<int> mark(n, -1), pattern_start(n + 1, 0);
-  for (int i = 0; i < n; ++i) {
-    mark[i] = i;
-    for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
-      for (int j = left[s]; mark[j] != i; j = parent[j]) {
-        mark[j] = i;
-        ++pattern_start[j + 1];
-      }
-    }
-  }
-  for (int j = 0; j < n; ++j)
-    pattern_start[j + 1] += pattern_start[j];
-  std::vector<int> pattern_rows(pattern_start[n]);
-  {
-    std::vector<int> next(n);
-    std::copy_n(pattern_start.begin(), n, next.begin());
-    std::fill(mark.begin(), mark.end(), -1);
-    for (int i = 0; i < n; ++i) {
-      mark[i] = i;
-      for (int s = left_start[i]; s < left_start[i + 1]; ++s) {
-        for (int j = left[s]; mark[j] != i; j = parent[j]) {
-          mark[j] = i;
-          pattern_rows[next[j]++] = i;
-        }
-      }
-    }
-  }
-  const auto pattern_size = [&](int j) { return pattern_start[j + 1] - pattern_start[j]; };
-  // Supernodes: column j + 1 joins j's when it is j's parent and its pattern is j's minus itself.
+  const std::vector<int> count = column_counts(left_start, left, parent);
+  // Supernodes: column j + 1 joins j's when it is j's parent and its pattern is j's minus itself
+  // (it holds that pattern, so equal counts mean equal patterns).
   supernodes_.clear();
   supernode_of_.assign(n, 0);
   for (int j = 0; j < n; ++j) {
-    const bool joins = j > 0 && parent[j - 1] == j && pattern_size(j - 1) == pattern_size(j) + 1;
+    const bool joins = j > 0 && parent[j - 1] == j && count[j - 1] == count[j] + 1;
     if (!joins) {
       Supernode s;
       s.first = j;
@@ -103,18 +94,63 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
     ++supernodes_.back().width;
     supernode_of_[j] = static_cast<int>(supernodes_.size()) - 1;
   }
+  // Each supernode's rows below its columns, without listing any column's whole pattern: a
+  // column's pattern is its entries of Q below the diagonal and its children's patterns, less
+  // the rows above it. So a supernode's rows are those of its columns in Q and of its child
+  // supernodes, past its last column; children come first in the order, so theirs are ready.
+  std::vector<int> below_start(n + 1, 0), below(left.size());  // Q's lower triangle by columns
+  for (int i = 0; i < n; ++i) {
+    for (int s = left_start[i]; s < left_start[i + 1]; ++s)
+      ++below_start[left[s] + 1];
+  }
+  for (int j = 0; j < n; ++j)
+    below_start[j + 1] += below_start[j];
+  {
+    std::vector<int> next(n);
+    std::copy_n(below_start.begin(), n, next.begin());
+    for (int i = 0; i < n; ++i) {
+      for (int s = left_start[i]; s < left_start[i + 1]; ++s)
+        below[next[left[s]]++] = i;
+    }
+  }
+  const int supernode_count = static_cast<int>(supernodes_.size());
+  std::vector<int> child_head(supernode_count, -1), child_next(supernode_count, -1);
+  for (int t = supernode_count - 1; t >= 0; --t) {
+    const int up = parent[supernodes_[t].first + supernodes_[t].width - 1];
+    if (up < 0) continue;
+    child_next[t] = child_head[supernode_of_[up]];
+    child_head[supernode_of_[up]] = t;
+  }
+  std::vector<int> mark(n, -1), gathered;
   rows_.clear();
   long values = 0;
   factor_nonzeros_ = 0;
-  for (Supernode& s : supernodes_) {
+  for (int index = 0; index < supernode_count; ++index) {
+    Supernode& s = supernodes_[index];
     const int last = s.first + s.width - 1;
+    gathered.clear();
+    const auto gather = [&](int row) {
+      if (row > last && mark[row] != index) {
+        mark[row] = index;
+        gathered.push_back(row);
+      }
+    };
+    for (int c = s.first; c <= last; ++c) {
+      for (int k = below_start[c]; k < below_start[c + 1]; ++k)
+        gather(below[k]);
+    }
+    for (int t = child_head[index]; t >= 0; t = child_next[t]) {
+      const Supernode& child = supernodes_[t];
+      for (long k = child.row_start + child.width; k < child.row_start + child.rows; ++k)
+        gather(rows_[k]);
+    }
+    std::sort(gathered.begin(), gathered.end());
     s.row_start = static_cast<long>(rows_.size());
     s.value_start = values;
     for (int c = 0; c < s.width; ++c)
       rows_.push_back(s.first + c);
-    rows_.insert(rows_.end(), pattern_rows.begin() + pattern_start[last],
-                 pattern_rows.begin() + pattern_start[last + 1]);
-    s.rows = s.width + pattern_size(last);
+    rows_.insert(rows_.end(), gathered.begin(), gathered.end());
+    s.rows = s.width + static_cast<int>(gathered.size());
     values += static_cast<long>(s.rows) * s.width;
     factor_nonzeros_ += static_cast<long>(s.rows) * s.width - s.width * (s.width - 1) / 2;
   }

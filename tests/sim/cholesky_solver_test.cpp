@@ -8,11 +8,24 @@
 
 namespace {
 
-// Q = k AᵀA + M/Δt² + w CᵀC for a small cloth, as the simulation builds it.
-Eigen::SparseMatrix<double> cloth_system(double k, double pin_weight) {
+// Q = k AᵀA + M/Δt² + w CᵀC for a small cloth, as the simulation builds it; with `extra`, a
+// second cloth of that resolution and a vertex without springs follow, unconnected to it.
+Eigen::SparseMatrix<double> cloth_system(double k, double pin_weight, int resolution = 9,
+                                         int extra = 0) {
   wobble::ClothGridOptions options;
-  options.resolution = 9;
-  const wobble::SpringNetwork cloth = wobble::make_cloth_grid(options);
+  options.resolution = resolution;
+  wobble::SpringNetwork cloth = wobble::make_cloth_grid(options);
+  if (extra > 0) {
+    options.resolution = extra;
+    const wobble::SpringNetwork second = wobble::make_cloth_grid(options);
+    const Eigen::Index n = cloth.V.rows(), m = second.V.rows(), e = cloth.E.rows();
+    cloth.m.conservativeResize(n + m + 1);
+    cloth.m.segment(n, m) = second.m;
+    cloth.m(n + m) = cloth.m(0);
+    cloth.V.conservativeResize(n + m + 1, 3);
+    cloth.E.conservativeResize(e + second.E.rows(), 2);
+    cloth.E.bottomRows(second.E.rows()) = second.E.array() + static_cast<int>(n);
+  }
   std::vector<Eigen::Triplet<double>> entries;
   for (Eigen::Index i = 0; i < cloth.V.rows(); ++i)
     entries.emplace_back(i, i, cloth.m(i) * 3600.0);
@@ -43,6 +56,24 @@ TEST(CholeskySolver, SolvesAllThreeCoordinatesLikeEigen) {
   EXPECT_LE((x - expected).norm(), 1e-12 * expected.norm());
   EXPECT_LE((Q * x - b).norm(), 1e-6 * b.norm());  // w = 1e10 makes Q ill-conditioned
   EXPECT_GT(solver.factor_nonzeros(), Q.rows());
+}
+
+TEST(CholeskySolver, FindsEigensFactorPatternAndSolvesLikeItOnAForest) {
+  // A 40×40 cloth has supernodes wide enough for every path of the block solve; with a second
+  // cloth and a lone vertex the elimination tree is a forest.
+  const Eigen::SparseMatrix<double> Q = cloth_system(400.0, 1e10, 40, 12);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(Q.rows(), 3);
+  wobble::CholeskySolver solver;
+  solver.analyze(Q);
+  ASSERT_TRUE(solver.factorize(Q));
+  Eigen::MatrixXd x;
+  solver.solve(b, x);
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> eigen(Q);
+  // The same AMD ordering: the supernodal pattern must hold exactly L's nonzeros, no more.
+  const Eigen::SparseMatrix<double> L = eigen.matrixL();
+  EXPECT_EQ(solver.factor_nonzeros(), L.nonZeros());
+  const Eigen::MatrixXd expected = eigen.solve(b);
+  EXPECT_LE((x - expected).norm(), 1e-11 * expected.norm());
 }
 
 TEST(CholeskySolver, ALargeFactorIsReadInSinglePrecisionToAboutFloatAccuracy) {
