@@ -1,7 +1,7 @@
 #include "cholesky_solver.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/SparseCholesky>
+#include <Eigen/OrderingMethods>
 #include <algorithm>
 
 namespace wobble {
@@ -34,12 +34,14 @@ std::vector<int> column_counts(const std::vector<int>& left_start, const std::ve
 
 void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
   const int n = static_cast<int>(Q.rows());
-  // The fill-reducing ordering: Eigen's AMD, as SimplicialLLT would use it.
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> ordering;
-  ordering.analyzePattern(Q);
+  // The fill-reducing ordering: Eigen's AMD, as SimplicialLLT would use it, without the
+  // symbolic factorization SimplicialLLT::analyzePattern would do after it. AMD gives the
+  // elimination order; row i of Q becomes row permutation_[i] of L.
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  Eigen::AMDOrdering<int>()(Q, order);
   permutation_.resize(n);
-  for (int i = 0; i < n; ++i)
-    permutation_[i] = ordering.permutationP().indices()(i);
+  for (int k = 0; k < n; ++k)
+    permutation_[order.indices()(k)] = k;
 
   // The permuted lower triangle's pattern by rows: for each row, the columns left of the
   // diagonal (flat arrays, as CSR).

@@ -25,6 +25,58 @@ void check_vertex_matrix(const Eigen::MatrixXd& positions, Eigen::Index n, const
   }
 }
 
+// AᵀA for the springs E (no spring from a vertex to itself): +1 at (i,i) and (j,j) and -1 at
+// (i,j) and (j,i) for every spring, springs repeated summing up. Every diagonal entry is stored,
+// zero for a vertex without springs, so that masses and pins only ever change values: one
+// symbolic analysis serves every later factorization. Built column by column straight into
+// compressed storage (setFromTriplets on the 1.6 million triplets of the 256×256 cloth took
+// 40–50 ms).
+Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::Index n) {
+  // Each column's entries, unsorted: the diagonal first, then one -1 per spring.
+  std::vector<int> start(n + 1, 0);
+  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+    ++start[E(e, 0) + 1];
+    ++start[E(e, 1) + 1];
+  }
+  for (Eigen::Index i = 0; i < n; ++i)
+    start[i + 1] += start[i] + 1;
+  std::vector<int> rows(start[n]), next(start.begin(), start.end() - 1);
+  std::vector<double> diagonal(n, 0.0);
+  for (Eigen::Index i = 0; i < n; ++i)
+    rows[next[i]++] = static_cast<int>(i);
+  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+    const int i = E(e, 0), j = E(e, 1);
+    rows[next[i]++] = j;
+    rows[next[j]++] = i;
+    diagonal[i] += 1.0;
+    diagonal[j] += 1.0;
+  }
+  // Sorted, repeats merged, into the matrix's own arrays.
+  Eigen::SparseMatrix<double> L(n, n);
+  L.resizeNonZeros(start[n]);
+  int* outer = L.outerIndexPtr();
+  int* inner = L.innerIndexPtr();
+  double* value = L.valuePtr();
+  int stored = 0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    outer[i] = stored;
+    std::sort(rows.begin() + start[i], rows.begin() + start[i + 1]);
+    for (int s = start[i]; s < start[i + 1]; ++s) {
+      const int row = rows[s];
+      const double v = row == i ? diagonal[i] : -1.0;
+      if (stored > outer[i] && inner[stored - 1] == row) {
+        value[stored - 1] += v;
+      } else {
+        inner[stored] = row;
+        value[stored++] = v;
+      }
+    }
+  }
+  outer[n] = stored;
+  L.resizeNonZeros(stored);
+  return L;
+}
+
 }  // namespace
 
 void validate_simulation_params(const SimulationParams& params) {
@@ -68,23 +120,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
     r_(e) = (network_.V.row(E(e, 0)) - network_.V.row(E(e, 1))).norm();
   }
 
-  // AᵀA has +1 at (i,i) and (j,j) and -1 at (i,j) and (j,i) for every spring. An explicit zero
-  // on every diagonal keeps vertices without springs in the pattern, so that masses and pins
-  // only ever change values: one symbolic analysis serves every later factorization.
-  std::vector<Eigen::Triplet<double>> ijv;
-  ijv.reserve(4 * E.rows() + n);
-  for (Eigen::Index i = 0; i < n; ++i)
-    ijv.emplace_back(i, i, 0.0);
-  for (Eigen::Index e = 0; e < E.rows(); ++e) {
-    const int i = E(e, 0), j = E(e, 1);
-    ijv.emplace_back(i, i, 1.0);
-    ijv.emplace_back(j, j, 1.0);
-    ijv.emplace_back(i, j, -1.0);
-    ijv.emplace_back(j, i, -1.0);
-  }
-  laplacian_.resize(n, n);
-  laplacian_.setFromTriplets(ijv.begin(), ijv.end());
-  laplacian_.makeCompressed();
+  laplacian_ = spring_laplacian(E, n);
   Q_ = laplacian_;
   diagonal_slot_.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
