@@ -45,10 +45,17 @@ class CholeskySolver {
   // ms): curtain 7.2 with no blocks, 4.5 from width 3, 4.9 from width 8; 128×128 cloth 22, 13
   // and 16; 256×256 158, 98 and 93 (within the noise of each other).
   static constexpr int block_solve_min_width = 3;
+  // A factor with more nonzeros is factorized on two threads (OpenMP), each taking a set of
+  // subtrees of the elimination tree, then the rest on one. The result does not depend on it.
+  static constexpr long parallel_factorization_above = 200'000;
 
  private:
   template <typename Value>
   void copy_for_solve(Value* columns, Value* blocks) const;
+  // Fills parts_ from the elimination tree (parent of each column).
+  void split_for_threads(const std::vector<int>& parent);
+  // Factorizes supernode s with thread `thread`'s scratch. False if not positive definite.
+  bool factorize_supernode(int s, int thread);
   template <typename Value>
   SolveFactor<Value> solve_factor(const Value* columns, const Value* blocks) const;
 
@@ -81,9 +88,16 @@ class CholeskySolver {
   long single_precision_above_ = default_single_precision_above;
   bool single_ = false;
 
-  // Factorization scratch: relative row positions, update lists and the dense update.
-  std::vector<int> relative_, link_head_, link_next_, cursor_;
-  std::vector<double> update_;
+  // Factorization: the supernodes each of two threads takes (subtrees, closed under
+  // descendants), then those left for one thread afterwards, all in increasing order.
+  std::vector<int> parts_[3];
+  // Per thread: relative row positions, the heads of the update lists, the dense update.
+  struct Scratch {
+    std::vector<int> relative, link_head;
+    std::vector<double> update;
+  };
+  Scratch scratch_[2];
+  std::vector<int> link_next_, cursor_;  // by supernode: next in its list, rows already used
   std::vector<double> work_;  // solve scratch: #V by 4 (x, y, z, padding), seen as Lane4s
 };
 
