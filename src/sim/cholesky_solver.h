@@ -13,9 +13,11 @@ namespace wobble {
 // three coordinates of a #V by 3 right-hand side in one pass over L.
 //
 // Columns of L with the same pattern below the diagonal are grouped into supernodes and stored
-// as dense blocks, so the factorization works with dense products (left-looking). The solve uses
-// L copied out by columns, and treats x, y and z side by side: Eigen's solve on a #V by 3
-// right-hand side makes one pass over L per column; this one makes one pass in all.
+// as dense blocks, so the factorization works with dense products (left-looking; a large factor
+// on two threads). The solve uses a copy of L laid out for it (by columns, and the rows below
+// each supernode at least block_solve_min_width wide row by row), and treats x, y and z side by
+// side: Eigen's solve on a #V by 3 right-hand side makes one pass over L per column; this one
+// makes one pass in all.
 //
 // analyze once per sparsity pattern, factorize after every change of values, solve as often as
 // needed: solve allocates nothing.
@@ -30,7 +32,7 @@ class CholeskySolver {
   // x = Q⁻¹ b, b and x #V by 3. x is resized only if its shape differs.
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x);
 
-  // Nonzeros of L, the diagonal included (each supernode's diagonal block counted whole).
+  // Nonzeros of L, the diagonal included: exactly those of Eigen's L with the same ordering.
   long factor_nonzeros() const { return factor_nonzeros_; }
 
   // A factor with more nonzeros than this no longer fits in cache, and the solve is bound by
