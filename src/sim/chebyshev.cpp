@@ -29,15 +29,18 @@ void ChebyshevAcceleration::start(const Eigen::MatrixXd& q0) {
 
 void ChebyshevAcceleration::accelerate(int iteration, const Eigen::MatrixXd& solved,
                                        Eigen::MatrixXd& q) {
-  const double rho2 = rho_ * rho_;
+  // Chebyshev polynomials on [0, ρ]: the paper's recurrence with σ = ρ/(2 − ρ) in place of ρ,
+  // and every step stretched by 2/(2 − ρ) (see the class comment).
+  const double sigma = rho_ / (2.0 - rho_), stretch = 2.0 / (2.0 - rho_);
+  const double sigma2 = sigma * sigma;
   if (iteration < delay_) {
     omega_ = 1.0;
   } else if (iteration == delay_) {
-    omega_ = 2.0 / (2.0 - rho2);
+    omega_ = 2.0 / (2.0 - sigma2);
   } else {
-    omega_ = 4.0 / (4.0 - rho2 * omega_);
+    omega_ = 4.0 / (4.0 - sigma2 * omega_);
   }
-  scratch_ = omega_ * (gamma_ * (solved - q) + q - older_) + older_;
+  scratch_ = omega_ * (gamma_ * stretch * (solved - q) + q - older_) + older_;
   older_.swap(q);
   q.swap(scratch_);
 }
