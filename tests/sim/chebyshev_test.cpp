@@ -42,9 +42,9 @@ double step_error(bool chebyshev, int iterations,
 }
 
 TEST(Chebyshev, SixAcceleratedIterationsBeatTenPlainOnes) {
-  // Both start from the inertial prediction, which leaves little for the first iterations to do;
-  // the acceleration pays off from about the fifth (0.063 against 0.068 here), and more with
-  // every iteration after.
+  // Both start from the inertial prediction, which leaves little for the first iterations to do.
+  // Here 6 accelerated iterations leave 0.048 of the error and 10 plain ones 0.068: a margin
+  // that a broken recurrence or a wrong ρ loses.
   const double plain = step_error(false, 10);
   const double accelerated = step_error(true, 6);
   std::cout << "  error after 10 plain iterations " << plain << ", after 6 accelerated "
