@@ -35,32 +35,34 @@ Point measure(Simulation& simulation, const Eigen::MatrixXd& current,
   return {best, error};
 }
 
-// The step from `simulation`'s state, converged by `iterations` plain iterations.
-Eigen::MatrixXd converged_step(Simulation& simulation, int iterations) {
+// The positions one step of `iterations` from `simulation`'s state gives; the state and the
+// iteration count are left as they were.
+Eigen::MatrixXd step_from_here(Simulation& simulation, int iterations) {
   const Eigen::MatrixXd current = simulation.positions();
   const Eigen::MatrixXd previous = simulation.previous_positions();
   const int kept = simulation.params().iterations;
-  const bool accelerated = simulation.params().chebyshev;
-  simulation.set_chebyshev(false);
   simulation.set_iterations(iterations);
   simulation.step();
-  Eigen::MatrixXd converged = simulation.positions();
+  Eigen::MatrixXd next = simulation.positions();
   simulation.set_state(current, previous);
   simulation.set_iterations(kept);
+  return next;
+}
+
+// The step from `simulation`'s state, converged by `iterations` plain iterations.
+Eigen::MatrixXd converged_step(Simulation& simulation, int iterations) {
+  const bool accelerated = simulation.params().chebyshev;
+  simulation.set_chebyshev(false);
+  Eigen::MatrixXd converged = step_from_here(simulation, iterations);
   simulation.set_chebyshev(accelerated);
   return converged;
 }
 
 // The error of one step of `iterations` from the simulation's state, against `converged` and
-// relative to ‖pᵗ − q*‖. Leaves the state as it was.
+// relative to ‖pᵗ − q*‖.
 double step_error(Simulation& simulation, const Eigen::MatrixXd& converged, int iterations) {
-  const Eigen::MatrixXd current = simulation.positions();
-  const Eigen::MatrixXd previous = simulation.previous_positions();
-  simulation.set_iterations(iterations);
-  simulation.step();
-  const double error = (simulation.positions() - converged).norm() / (current - converged).norm();
-  simulation.set_state(current, previous);
-  return error;
+  return (step_from_here(simulation, iterations) - converged).norm() /
+         (simulation.positions() - converged).norm();
 }
 
 // Over a fall of 120 frames (10 plain iterations a step), at every 10th step: how many
@@ -79,7 +81,6 @@ void print_fall_summary(const BenchmarkScene& scene) {
     while (n < 10 && step_error(simulation, converged, n) > plain)
       ++n;
     simulation.set_chebyshev(false);
-    simulation.set_iterations(10);
     needed.push_back(n);
   }
   std::printf(
