@@ -30,6 +30,31 @@ std::vector<int> column_counts(const std::vector<int>& left_start, const std::ve
   return count;
 }
 
+// The pattern of Q's lower triangle once permuted (entry (i, j) of Q at (permutation[i],
+// permutation[j])), as flat lists (like CSR): by rows, each row's columns left of the diagonal;
+// or by columns, each column's rows below it. In no particular order within a list.
+void permuted_lower_triangle(const Eigen::SparseMatrix<double>& Q,
+                             const std::vector<int>& permutation, bool by_rows,
+                             std::vector<int>& start, std::vector<int>& entries) {
+  const int n = static_cast<int>(Q.rows());
+  const auto visit = [&](auto&& entry) {
+    for (int j = 0; j < n; ++j) {
+      for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
+        const int a = permutation[it.row()], b = permutation[j];
+        if (a > b) by_rows ? entry(a, b) : entry(b, a);
+      }
+    }
+  };
+  start.assign(n + 1, 0);
+  visit([&](int list, int) { ++start[list + 1]; });
+  for (int i = 0; i < n; ++i)
+    start[i + 1] += start[i];
+  entries.resize(start[n]);
+  std::vector<int> next(n);
+  std::copy_n(start.begin(), n, next.begin());
+  visit([&](int list, int value) { entries[next[list]++] = value; });
+}
+
 }  // namespace
 
 void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
@@ -44,27 +69,9 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
     permutation_[order.indices()(k)] = k;
 
   // The permuted lower triangle's pattern by rows: for each row, the columns left of the
-  // diagonal (flat arrays, as CSR).
-  std::vector<int> left_start(n + 1, 0), left;
-  for (int j = 0; j < n; ++j) {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
-      const int a = permutation_[it.row()], b = permutation_[j];
-      if (a > b) ++left_start[a + 1];
-    }
-  }
-  for (int i = 0; i < n; ++i)
-    left_start[i + 1] += left_start[i];
-  left.resize(left_start[n]);
-  {
-    std::vector<int> next(n);
-    std::copy_n(left_start.begin(), n, next.begin());
-    for (int j = 0; j < n; ++j) {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(Q, j); it; ++it) {
-        const int a = permutation_[it.row()], b = permutation_[j];
-        if (a > b) left[next[a]++] = b;
-      }
-    }
-  }
+  // diagonal.
+  std::vector<int> left_start, left;
+  permuted_lower_triangle(Q, permutation_, true, left_start, left);
   // Elimination tree (Liu's algorithm with path compression).
   std::vector<int> parent(n, -1), ancestor(n, -1);
   for (int i = 0; i < n; ++i) {
@@ -100,21 +107,8 @@ void CholeskySolver::analyze(const Eigen::SparseMatrix<double>& Q) {
   // column's pattern is its entries of Q below the diagonal and its children's patterns, less
   // the rows above it. So a supernode's rows are those of its columns in Q and of its child
   // supernodes, past its last column; children come first in the order, so theirs are ready.
-  std::vector<int> below_start(n + 1, 0), below(left.size());  // Q's lower triangle by columns
-  for (int i = 0; i < n; ++i) {
-    for (int s = left_start[i]; s < left_start[i + 1]; ++s)
-      ++below_start[left[s] + 1];
-  }
-  for (int j = 0; j < n; ++j)
-    below_start[j + 1] += below_start[j];
-  {
-    std::vector<int> next(n);
-    std::copy_n(below_start.begin(), n, next.begin());
-    for (int i = 0; i < n; ++i) {
-      for (int s = left_start[i]; s < left_start[i + 1]; ++s)
-        below[next[left[s]]++] = i;
-    }
-  }
+  std::vector<int> below_start, below;  // Q's lower triangle by columns
+  permuted_lower_triangle(Q, permutation_, false, below_start, below);
   const int supernode_count = static_cast<int>(supernodes_.size());
   std::vector<int> child_head(supernode_count, -1), child_next(supernode_count, -1);
   for (int t = supernode_count - 1; t >= 0; --t) {
