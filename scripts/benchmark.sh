@@ -2,9 +2,17 @@
 # Install what is missing, build, and time Wobble's stepper against the plain reference on the
 # curtain, 128x128 and 256x256 cloths and the jelly; ends with one table and the Chebyshev curve.
 # Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain).
+#
+# bash scripts/benchmark.sh --busy-neighbour [--rounds N] [SCENE ...]
+#   instead times every shipped scene's step quiet and beside a busy process that the benchmark
+#   starts and stops itself, in turn, and prints both columns and their ratio.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
 ensure_packages test
 build_wobble -DWOBBLE_BUILD_TESTS=ON
+if [ "${1:-}" = --busy-neighbour ]; then
+  shift
+  exec build/tests/wobble_busy_neighbour "$@"
+fi
 exec build/tests/wobble_benchmark "$@"

@@ -251,18 +251,18 @@ bool CholeskySolver::factorize(const Eigen::SparseMatrix<double>& Q) {
     std::fill(scratch.link_head.begin(), scratch.link_head.end(), -1);
   // Two disjoint sets of subtrees side by side (each needs only its own descendants), then the
   // rest, which they both update, on one thread.
+  // Each part has its own scratch, so whichever thread takes it, the result is the same; the
+  // caller takes both if no helper wakes in time.
   bool ok[2] = {true, true};
-#if defined(_OPENMP)
-#pragma omp parallel for num_threads(2) schedule(static, 1) if (!parts_[1].empty())
-#endif
-  for (int part = 0; part < 2; ++part) {
+  auto factorize_part = [&](int part) {
     for (int s : parts_[part]) {
       if (!factorize_supernode(s, part)) {
         ok[part] = false;
-        break;
+        return;
       }
     }
-  }
+  };
+  pool_->run(parts_[1].empty() ? 1 : 2, factorize_part);
   if (!ok[0] || !ok[1]) return false;
   for (int s : parts_[2]) {
     if (!factorize_supernode(s, 0)) return false;
@@ -341,8 +341,8 @@ void CholeskySolver::split_for_threads(const std::vector<int>& parent) {
     parts_[owner[s]].push_back(s);
 }
 
-bool CholeskySolver::factorize_supernode(int s, int thread) {
-  Scratch& mine = scratch_[thread];
+bool CholeskySolver::factorize_supernode(int s, int part) {
+  Scratch& mine = scratch_[part];
   const auto link = [&](int d, int target) {
     link_next_[d] = mine.link_head[target];
     mine.link_head[target] = d;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "substitute_lanes.h"
+#include "worker_pool.h"
 
 namespace wobble {
 
@@ -29,6 +30,8 @@ class CholeskySolver {
   // Numeric factorization of Q, which must have the analyzed pattern. False if Q is not
   // positive definite.
   bool factorize(const Eigen::SparseMatrix<double>& Q);
+  // The threads factorize may use (by default the shared pool).
+  void set_pool(WorkerPool& pool) { pool_ = &pool; }
   // x = Q⁻¹ b, b and x #V by 3. x is resized only if its shape differs.
   void solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x);
 
@@ -47,8 +50,9 @@ class CholeskySolver {
   // ms): curtain 7.2 with no blocks, 4.5 from width 3, 4.9 from width 8; 128×128 cloth 22, 13
   // and 16; 256×256 158, 98 and 93 (within the noise of each other).
   static constexpr int block_solve_min_width = 3;
-  // A factor with more nonzeros is factorized on two threads (OpenMP), each taking a set of
-  // subtrees of the elimination tree, then the rest on one. The result does not depend on it.
+  // A factor with more nonzeros is factorized in two parts side by side on the pool's threads,
+  // each a set of subtrees of the elimination tree, then the rest on the caller. The result does
+  // not depend on which thread takes which part.
   static constexpr long parallel_factorization_above = 200'000;
 
  private:
@@ -56,8 +60,8 @@ class CholeskySolver {
   void copy_for_solve(Value* columns, Value* blocks) const;
   // Fills parts_ from the elimination tree (parent of each column).
   void split_for_threads(const std::vector<int>& parent);
-  // Factorizes supernode s with thread `thread`'s scratch. False if not positive definite.
-  bool factorize_supernode(int s, int thread);
+  // Factorizes supernode s with part `part`'s scratch. False if not positive definite.
+  bool factorize_supernode(int s, int part);
   template <typename Value>
   SolveFactor<Value> solve_factor(const Value* columns, const Value* blocks) const;
 
@@ -93,7 +97,7 @@ class CholeskySolver {
   // Factorization: the supernodes each of two threads takes (subtrees, closed under
   // descendants), then those left for one thread afterwards, all in increasing order.
   std::vector<int> parts_[3];
-  // Per thread: relative row positions, the heads of the update lists, the dense update.
+  // Per part: relative row positions, the heads of the update lists, the dense update.
   struct Scratch {
     std::vector<int> relative, link_head;
     std::vector<double> update;
@@ -101,6 +105,7 @@ class CholeskySolver {
   Scratch scratch_[2];
   std::vector<int> link_next_, cursor_;  // by supernode: next in its list, rows already used
   std::vector<double> work_;  // solve scratch: #V by 4 (x, y, z, padding), seen as Lane4s
+  WorkerPool* pool_ = &WorkerPool::shared();
 };
 
 }  // namespace wobble

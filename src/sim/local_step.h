@@ -4,24 +4,29 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "worker_pool.h"
+
 namespace wobble {
 
 // The local step fused with the product k Aᵀd (A the #E by #V signed incidence matrix):
 //   d_e = r_e (p_i − p_j)/‖p_i − p_j‖ for every spring e = [i j], then rhs = y + k Aᵀd,
-// so neither A nor d is formed as a sparse product. The springs are split across threads
-// (OpenMP), then each vertex gathers its springs in a fixed order, so the result does not depend
-// on the number of threads. Allocates nothing after construction.
+// so neither A nor d is formed as a sparse product. A large network's springs are split across
+// the threads of a WorkerPool, then each vertex gathers its springs in a fixed order, so the
+// result does not depend on the number of threads. Allocates nothing after construction.
 class LocalStep {
  public:
   // E  #E by 2 springs; r  #E rest lengths; V  #V by 3 rest positions (for the direction of a
-  // spring whose ends meet).
-  LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const Eigen::MatrixXd& V);
+  // spring whose ends meet); pool  the threads it may use.
+  LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const Eigen::MatrixXd& V,
+            WorkerPool& pool = WorkerPool::shared());
 
   // rhs = y + k Aᵀd(p); p, y and rhs #V by 3, rhs already of that shape.
   void apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y, Eigen::MatrixXd& rhs);
 
-  // Below this many springs apply() runs on one thread.
+  // Below this many springs apply() runs on the calling thread alone: waking a helper costs
+  // more than it saves (measured: see the README's Performance section).
   static constexpr long min_springs_for_threads = 2048;
+  static constexpr int pieces_per_thread = 4;
 
  private:
   Eigen::MatrixXi E_;
@@ -31,6 +36,7 @@ class LocalStep {
   // Vertex i's springs are incident_[s] for s in [incident_start_[i], incident_start_[i+1]);
   // a non-negative entry e means i is the spring's first end (+d_e), ~e its second (−d_e).
   std::vector<int> incident_start_, incident_;
+  WorkerPool* pool_;
 };
 
 }  // namespace wobble
