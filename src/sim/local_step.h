@@ -27,16 +27,20 @@ class LocalStep {
   // more than it saves (measured: see the README's Performance section).
   static constexpr long min_springs_for_threads = 2048;
   static constexpr int pieces_per_thread = 4;
+  // How often each of its two loops was shared with the pool's helpers or kept on the caller.
+  const SharingPayoff& spring_payoff() const { return spring_payoff_; }
+  const SharingPayoff& vertex_payoff() const { return vertex_payoff_; }
 
  private:
   Eigen::MatrixXi E_;
   Eigen::VectorXd r_;
   Eigen::MatrixXd rest_direction_;  // #E by 3: r_e times the unit rest vector
-  Eigen::MatrixXd d_;               // #E by 3: this iteration's directions
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> d_;  // #E by 3: this iteration's k d
   // Vertex i's springs are incident_[s] for s in [incident_start_[i], incident_start_[i+1]);
   // a non-negative entry e means i is the spring's first end (+d_e), ~e its second (−d_e).
   std::vector<int> incident_start_, incident_;
   WorkerPool* pool_;
+  SharingPayoff spring_payoff_, vertex_payoff_;
 };
 
 }  // namespace wobble

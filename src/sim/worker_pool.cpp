@@ -10,10 +10,14 @@ namespace wobble {
 
 namespace {
 
-// How long a thread polls before it sleeps: about 256 pause instructions (a few microseconds),
-// enough to catch the local step's second loop, which starts right after its first, and far too
-// short to matter to another program on the same core.
+// How long the caller polls for a helper's last task before it sleeps: about 256 pause
+// instructions, a few microseconds.
 constexpr int poll_rounds = 256;
+// A helper polls for the next job for twice the recent gap between jobs, at least
+// min_poll_seconds (enough to catch the local step's second loop, which starts right after its
+// first), and only while that gap is under max_poll_seconds: waking a sleeping thread takes some
+// 20 to 50 µs, which matters between iterations 100 µs apart and not between ones 2 ms apart.
+constexpr double min_poll_seconds = 5e-6, max_poll_seconds = 300e-6;
 
 inline void cpu_pause() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -23,7 +27,38 @@ inline void cpu_pause() {
 #endif
 }
 
+double seconds_between(std::chrono::steady_clock::time_point start,
+                       std::chrono::steady_clock::time_point end) {
+  return std::chrono::duration<double>(end - start).count();
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return seconds_between(start, std::chrono::steady_clock::now());
+}
+
 }  // namespace
+
+bool SharingPayoff::next_is_shared() const {
+  if (shared_seconds_ == 0.0) return true;
+  if (alone_seconds_ == 0.0) return false;
+  // A margin, so that sharing that gains next to nothing is left alone.
+  const bool faster = shared_seconds_ < 0.95 * alone_seconds_;
+  return (shared_runs_ + runs_on_caller_) % explore_every == 0 ? !faster : faster;
+}
+
+bool SharingPayoff::try_sharing() {
+  const bool share = next_is_shared();
+  ++(share ? shared_runs_ : runs_on_caller_);
+  return share;
+}
+
+void SharingPayoff::record(bool shared, double wall_seconds) {
+  double& average = shared ? shared_seconds_ : alone_seconds_;
+  // A run that was interrupted (another program took the core for a while) counts at most
+  // twice the average, so one stall cannot flip the choice for long.
+  average =
+      average == 0.0 ? wall_seconds : 0.8 * average + 0.2 * std::min(wall_seconds, 2.0 * average);
+}
 
 int usable_processors() {
 #if defined(__linux__)
@@ -76,13 +111,41 @@ void WorkerPool::finish_task(int count) {
   }
 }
 
-void WorkerPool::run_erased(int count, Call call, void* context) {
+void WorkerPool::run_erased(int count, Call call, void* context, SharingPayoff* payoff) {
   if (count <= 0) return;
-  if (helpers_.empty() || count == 1) {
+  std::lock_guard<std::mutex> one_caller(caller_mutex_);
+  const auto start = std::chrono::steady_clock::now();
+  // The gaps between runs set how long helpers poll before they sleep. A slowly decaying
+  // maximum: the local step's gaps alternate between next to nothing (its second loop) and a
+  // global step's length, and a poll must outlast the longer one.
+  gap_seconds_ = std::max(seconds_between(last_run_end_, start), 0.875 * gap_seconds_);
+  poll_budget_seconds_.store(gap_seconds_ < max_poll_seconds
+                                 ? std::max(2.0 * gap_seconds_, min_poll_seconds)
+                                 : min_poll_seconds,
+                             std::memory_order_relaxed);
+  const bool share = !helpers_.empty() && count > 1 && (!payoff || payoff->try_sharing());
+  if (share) {
+    run_shared(count, call, context);
+  } else {
     for (int i = 0; i < count; ++i)
       call(context, i);
-    return;
   }
+  last_run_end_ = std::chrono::steady_clock::now();
+  if (payoff) {
+    payoff->record(share, seconds_between(start, last_run_end_));
+    // A shared run coming after one on the caller alone: have the helpers poll for it now, so
+    // that what it measures is sharing, not waking sleeping threads.
+    if (!share && !helpers_.empty() && payoff->next_is_shared()) {
+      {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++wake_calls_;
+      }
+      wake_.notify_all();
+    }
+  }
+}
+
+void WorkerPool::run_shared(int count, Call call, void* context) {
   std::uint64_t generation;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -110,17 +173,24 @@ void WorkerPool::run_erased(int count, Call call, void* context) {
 }
 
 void WorkerPool::helper_loop() {
-  std::uint64_t seen = 0;
+  std::uint64_t seen = 0, seen_wake_calls = 0;
   for (;;) {
-    for (int round = 0; round < poll_rounds; ++round) {
-      if (published_generation_.load(std::memory_order_acquire) != seen) break;
+    // Poll for the next job while jobs have lately come that soon after each other (the local
+    // step's iterations), then sleep until a job or a call to poll comes.
+    const auto poll_start = std::chrono::steady_clock::now();
+    const double poll_seconds = poll_budget_seconds_.load(std::memory_order_relaxed);
+    for (int round = 1; published_generation_.load(std::memory_order_acquire) == seen; ++round) {
+      if (round % 64 == 0 && seconds_since(poll_start) >= poll_seconds) break;
       cpu_pause();
     }
     Job job;
     {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      wake_.wait(lock,
+                 [&] { return stop_ || generation_ != seen || wake_calls_ != seen_wake_calls; });
       if (stop_) return;
+      seen_wake_calls = wake_calls_;
+      if (generation_ == seen) continue;  // called to poll: no job yet
       seen = generation_;
       job = job_;
     }

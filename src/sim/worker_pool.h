@@ -2,6 +2,7 @@
 #define WOBBLE_SIM_WORKER_POOL_H
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -15,11 +16,42 @@ namespace wobble {
 // every task that no helper has taken yet. So a helper that has no core to run on delays nothing
 // (the caller does its share), and a step on a machine whose other core is taken by another
 // program costs about what it costs on one thread, not the many times more that busy-waiting
-// barriers cost there (issue 13: OpenMP's step crawled beside any busy process).
+// barriers cost there.
 //
 // run(count, task) calls task(i) once for every i in [0, count), on the caller and any helpers
 // that wake in time, and returns when all calls have returned. Tasks must not throw and must not
-// call run on the same pool. run allocates nothing; the helpers start in the constructor.
+// call run on the same pool; runs from several threads take turns. run allocates nothing; the
+// helpers start in the constructor.
+//
+// Between runs a helper polls for the next one for a while before it sleeps, but only while runs
+// come close together (under 300 µs apart: the local step's iterations on a mid-sized cloth),
+// because waking a thread costs tens of microseconds; and a loop whose sharing does not pay is
+// kept on the caller (SharingPayoff), so its helpers sleep.
+class WorkerPool;
+
+// Whether sharing one loop with the pool's helpers pays off, learned from the loop's own runs:
+// a moving average of its wall time shared and of its wall time on the caller alone. Each run
+// takes the faster way, and every explore_every-th run the other one, to keep both averages
+// current. So on a quiet machine a large loop is shared; when every core is taken (a helper
+// would wake late, or take the caller's core) it stays on the caller, and helpers sleep.
+// Results never depend on it.
+class SharingPayoff {
+ public:
+  static constexpr int explore_every = 16;
+  // Runs shared since construction, and runs kept on the caller; for benchmarks and tests.
+  long shared_runs() const { return shared_runs_; }
+  long runs_on_caller() const { return runs_on_caller_; }
+
+ private:
+  friend class WorkerPool;
+  // Whether the next run is to be shared; try_sharing also counts it.
+  bool next_is_shared() const;
+  bool try_sharing();
+  void record(bool shared, double wall_seconds);
+  double shared_seconds_ = 0.0, alone_seconds_ = 0.0;  // moving averages; 0: not measured yet
+  long shared_runs_ = 0, runs_on_caller_ = 0;
+};
+
 class WorkerPool {
  public:
   // threads  the caller plus threads − 1 helpers (1: everything runs on the caller).
@@ -35,10 +67,12 @@ class WorkerPool {
 
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
 
+  // With a payoff, the run is shared only while sharing this loop pays (see SharingPayoff).
   template <typename Task>
-  void run(int count, Task& task) {
+  void run(int count, Task& task, SharingPayoff* payoff = nullptr) {
     run_erased(
-        count, [](void* context, int index) { (*static_cast<Task*>(context))(index); }, &task);
+        count, [](void* context, int index) { (*static_cast<Task*>(context))(index); }, &task,
+        payoff);
   }
 
  private:
@@ -48,7 +82,8 @@ class WorkerPool {
     void* context = nullptr;
     int count = 0;
   };
-  void run_erased(int count, Call call, void* context);
+  void run_erased(int count, Call call, void* context, SharingPayoff* payoff);
+  void run_shared(int count, Call call, void* context);
   void helper_loop();
   // Takes the next task of generation `generation`, if that job is still the current one and
   // has tasks left.
@@ -56,18 +91,24 @@ class WorkerPool {
   void finish_task(int count);
 
   std::vector<std::thread> helpers_;
+  std::mutex caller_mutex_;  // one run at a time, whichever thread calls
   std::mutex mutex_;
   std::condition_variable wake_;      // helpers wait here for a new job
   std::condition_variable finished_;  // the caller waits here for the last task
   Job job_;                           // guarded by mutex_
   std::uint64_t generation_ = 0;      // guarded by mutex_; one per run
   bool stop_ = false;                 // guarded by mutex_
+  std::uint64_t wake_calls_ = 0;      // guarded by mutex_; a call to poll for a coming job
   // generation_ for helpers that look without the lock between two close jobs.
   std::atomic<std::uint64_t> published_generation_{0};
   // The generation in the high 32 bits and the next task in the low ones, so that a helper
   // still holding an old job can never take a task of a newer one.
   std::atomic<std::uint64_t> next_task_{0};
   std::atomic<int> done_{0};
+  // How long an idle helper polls before it sleeps, from the recent gaps between runs.
+  std::atomic<double> poll_budget_seconds_{0.0};
+  std::chrono::steady_clock::time_point last_run_end_;  // guarded by caller_mutex_
+  double gap_seconds_ = 0.0;                            // guarded by caller_mutex_
 };
 
 // Processors this process may run on (its CPU affinity), at least 1.
