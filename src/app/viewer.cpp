@@ -108,6 +108,17 @@ void Viewer::load(Scene scene) {
   panel_.chebyshev = scene_.params.chebyshev;
 
   const SpringNetwork& network = scene_.network;
+  // Springs without faces (a chain, a net) draw no surface, so without their springs and
+  // vertices the view would show only the pins: they are shown as the course's viewer shows
+  // them, and the user can still turn them off. What was chosen for meshes with faces is kept
+  // for the next one.
+  if (!faceless_) {
+    chosen_springs_ = panel_.springs;
+    chosen_points_ = panel_.points;
+  }
+  faceless_ = network.F.rows() == 0;
+  panel_.springs = faceless_ || chosen_springs_;
+  panel_.points = faceless_ || chosen_points_;
   triangles_.resize(3 * network.F.rows());
   for (Eigen::Index f = 0; f < network.F.rows(); ++f) {
     for (int k = 0; k < 3; ++k)
@@ -311,14 +322,18 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.normals = normals_.data();
   frame.marks = marks_.data();
   renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width,
+                  framebuffer_height, pixel_ratio);
+}
+
+ViewLayers Viewer::layers() const {
   ViewLayers layers;
   layers.surface = panel_.surface;
   layers.wireframe = panel_.wireframe;
   layers.springs = panel_.springs;
   layers.points = panel_.points;
   layers.ground = panel_.ground;
-  renderer_->draw(view_, projection_, camera_eye(camera_), layers, framebuffer_width,
-                  framebuffer_height, pixel_ratio);
+  return layers;
 }
 
 }  // namespace wobble

@@ -45,6 +45,12 @@ class Viewer {
   Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources);
   ~Viewer();
 
+  // Replace the scene (what the scene picker does). Throws, leaving the viewer as it was, when
+  // the scene's texture cannot be read or its simulation cannot be built. A mesh without faces
+  // starts with its springs and vertices shown, since there is no surface to see; the layers
+  // chosen for meshes with faces come back with the next mesh that has them.
+  void load(Scene scene);
+
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();
   // Free the renderer's GL objects while their context is still current.
@@ -72,9 +78,10 @@ class Viewer {
   const OrbitCamera& camera() const { return camera_; }
   // Panel figures that do not come from the wall clock.
   PanelStats stats() const;
+  // The layers render() draws, as the panel's checkboxes show them.
+  ViewLayers layers() const;
 
  private:
-  void load(Scene scene);
   void apply(ViewerCommand command);
   void apply_panel_settings();
   void update_vertex_arrays();
@@ -85,6 +92,10 @@ class Viewer {
   std::unique_ptr<Simulation> simulation_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
   PanelSettings panel_;
+  // Whether the scene has no faces, and the springs and points layers chosen for scenes with
+  // faces while such a scene shows both.
+  bool faceless_ = false;
+  bool chosen_springs_ = false, chosen_points_ = false;
   OrbitCamera camera_;
   std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line
   bool frame_on_next_render_ = true;

@@ -19,7 +19,9 @@ namespace wobble {
 //   "bc"   boundary conditions: not supported, refused
 //
 // Other keys are ignored. The reference program's rules, which the Scene carries out:
-//   springs    every pair of vertices of each face, once (see face_springs); `l` lines too
+//   springs    every pair of vertices of the faces of 3 or more vertices, once; every
+//              two-vertex face as written, a repeated one being a second spring (the course's
+//              E = F); `l` segments like two-vertex faces (see face_springs)
 //   masses     "m" if given, else each vertex's lumped Voronoi area (see voronoi_masses) of the
 //              fan-triangulated faces; a vertex in no triangle then has no mass and the scene
 //              is refused, asking for "m"

@@ -18,8 +18,9 @@ struct LoadedMesh {
 };
 
 // Read a mesh file by its extension:
-//   .obj          springs between every two vertices of each face (l lines: one spring), render
-//                 faces fan-triangulated, weights = lumped Voronoi areas; with `fill`, the closed
+//   .obj          springs as face_springs builds them (every two vertices of each larger face
+//                 once; each two-vertex face and `l` segment as written), render faces
+//                 fan-triangulated, weights = lumped Voronoi areas; with `fill`, the closed
 //                 surface is filled with tetrahedra (voxel grid of `fill_resolution` cells along
 //                 its longest side) and simulated as a volume
 //   .mesh         MEDIT tetrahedra

@@ -32,19 +32,26 @@ void check_face(const std::vector<int>& face, std::size_t f) {
 }  // namespace
 
 Eigen::MatrixXi face_springs(const std::vector<std::vector<int>>& faces) {
-  std::vector<std::pair<int, int>> pairs;
+  std::vector<std::pair<int, int>> pairs, written;
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const std::vector<int>& face = faces[f];
     check_face(face, f);
+    if (face.size() == 2) {
+      written.emplace_back(face[0], face[1]);
+      continue;
+    }
     for (std::size_t a = 0; a < face.size(); ++a) {
       for (std::size_t b = a + 1; b < face.size(); ++b)
         pairs.emplace_back(std::min(face[a], face[b]), std::max(face[a], face[b]));
     }
   }
-  // Sorting then dropping repeats is what makes a pair shared by two faces one spring, and makes
-  // the spring order independent of the face order.
+  // Sorting then dropping repeats is what makes a pair shared by two polygons one spring, and
+  // makes their order independent of the face order. Two-vertex faces are the course's spring
+  // list as written (E = F when every face has two vertices), so they are neither sorted nor
+  // merged: a repeated one is a second spring there too.
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  pairs.insert(pairs.end(), written.begin(), written.end());
 
   Eigen::MatrixXi E(static_cast<Eigen::Index>(pairs.size()), 2);
   for (std::size_t e = 0; e < pairs.size(); ++e) {

@@ -1,7 +1,11 @@
 // --headless with images: EGL rendering with no display, as CI machines run it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <iostream>
+#include <string>
+#include <utility>
 
 #include "cloth_pixels.h"
 #include "io/png_image.h"
@@ -134,6 +138,67 @@ TEST(HeadlessRender, UiAddsThePanelAndOnlyThePanel) {
   }
   EXPECT_GT(inside, 20000) << "the panel is missing";
   EXPECT_EQ(outside, 0);
+}
+
+// Two runs: without layer options, and asking for the springs and points.
+const std::pair<std::string, std::string> plain_and_asked[] = {{"plain.png", ""},
+                                                               {"asked.png", "--springs --points"}};
+
+// Pixels of the springs layer: its blue-green blended over the background (green at least 25
+// above red), which neither the background, the ground grid, the pins nor the points have.
+bool is_spring(const unsigned char* p) {
+  return p[1] > p[0] + 25;
+}
+// Pixels of the free vertices' points: light grey (0.92), brighter than the grid and background.
+bool is_point(const unsigned char* p) {
+  return p[0] > 200 && p[1] > 200 && p[2] > 200;
+}
+
+TEST(HeadlessRender, ASpringOnlyCourseSceneShowsItsSpringsAndMassesWithoutAsking) {
+  TemporaryFolder folder;
+  const std::string rope = std::string(WOBBLE_ASSETS_DIR) + "/course/rope.json";
+  for (const auto& [name, layers] : plain_and_asked) {
+    const auto run = run_wobble("'" + rope + "' --headless --frames 30 --width 640 --height 480 " +
+                                    layers + " --screenshot '" + folder.file(name) + "'",
+                                no_display);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  const wobble::RgbaImage plain = wobble::read_png(folder.file("plain.png"));
+  const wobble::RgbaImage asked = wobble::read_png(folder.file("asked.png"));
+  EXPECT_TRUE(plain.pixels == asked.pixels) << "the layers must be on without --springs --points";
+
+  // The rope is drawn along its length, not only its two pins: spring pixels in many columns,
+  // and the ten free masses as points. (Before, only the pins showed: none of either.)
+  long springs = 0, points = 0;
+  int first_column = plain.width, last_column = -1;
+  for (int y = 0; y < plain.height; ++y) {
+    for (int x = 0; x < plain.width; ++x) {
+      if (is_point(plain.pixel(x, y))) ++points;
+      if (!is_spring(plain.pixel(x, y))) continue;
+      ++springs;
+      first_column = std::min(first_column, x);
+      last_column = std::max(last_column, x);
+    }
+  }
+  std::cout << "[ rope ] " << springs << " spring pixels in columns " << first_column << " to "
+            << last_column << ", " << points << " point pixels\n";
+  EXPECT_GT(springs, 200);
+  EXPECT_GT(last_column - first_column, plain.width / 4) << "springs along the whole rope";
+  EXPECT_GE(points, 10);
+}
+
+TEST(HeadlessRender, AMeshWithFacesStillStartsWithItsSurfaceOnly) {
+  TemporaryFolder folder;
+  const std::string banner = std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json";
+  for (const auto& [name, layers] : plain_and_asked) {
+    const auto run = run_wobble("'" + banner + "' --headless --frames 5 --width 160 --height 120 " +
+                                    layers + " --screenshot '" + folder.file(name) + "'",
+                                no_display);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+  }
+  EXPECT_FALSE(wobble::read_png(folder.file("plain.png")).pixels ==
+               wobble::read_png(folder.file("asked.png")).pixels)
+      << "--springs --points must still add the layers to a mesh with faces";
 }
 
 TEST(HeadlessRender, BadImageRequestsAreRefusedBeforeAnyWork) {

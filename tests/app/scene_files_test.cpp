@@ -23,6 +23,7 @@ TEST(SceneFiles, EveryShippedSceneAndMeshOpensHeadless) {
   }
   EXPECT_GE(sources.size(), 5u);
   sources.push_back(assets + "/course/banner.json");  // course format, with a texture
+  sources.push_back(assets + "/course/rope.json");    // course format, springs only
   sources.push_back(assets + "/meshes/blob.obj");     // a bare OBJ
   sources.push_back(assets + "/meshes/jelly_cube.mesh");
   sources.push_back(assets + "/meshes/column.node");

@@ -7,7 +7,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <fstream>
+
+#include "../io/temporary_folder.h"
 #include "app/picking.h"
+#include "io/load_scene.h"
 
 namespace {
 
@@ -203,6 +207,76 @@ TEST(Viewer, AFailedStepPausesWithAWarningAndResetClearsIt) {
   viewer.handle_events({reset}, false, false, window);
   EXPECT_EQ(viewer.step_warning(), "");
   EXPECT_EQ(viewer.simulation().steps_taken(), 0);
+}
+
+}  // namespace
+
+namespace {
+
+// Springs without faces as each loader makes them: a course scene of two-vertex faces, a bare
+// OBJ of `l` lines, and a Wobble scene whose OBJ has no triangles. Returns their paths.
+std::vector<std::string> faceless_scene_files(const wobble::testing::TemporaryFolder& folder) {
+  const std::string chain = "v 0 1 0\nv 0.2 1 0\nv 0.4 1 0\nv 0.6 1 0\n";
+  std::ofstream(folder.file("chain.obj")) << chain << "f 1 2\nf 2 3\nf 3 4\n";
+  std::ofstream(folder.file("course.json")) << R"({"obj": "chain.obj", "b": [1], "k": 50, "m": 1})";
+  std::ofstream(folder.file("lines.obj")) << chain << "l 1 2 3 4\n";
+  std::ofstream(folder.file("wobble.json")) << R"({"mesh": {"file": "lines.obj"}, "pins": 0})";
+  return {folder.file("course.json"), folder.file("lines.obj"), folder.file("wobble.json")};
+}
+
+void press(wobble::Viewer& viewer, int key) {
+  InputEvent event;
+  event.type = InputEvent::Type::key_press;
+  event.code = key;
+  viewer.handle_events({event}, false, false, window);
+}
+
+TEST(Viewer, AMeshWithoutFacesShowsItsSpringsAndVertices) {
+  wobble::testing::TemporaryFolder folder;
+  for (const std::string& file : faceless_scene_files(folder)) {
+    SCOPED_TRACE(file);
+    const wobble::Viewer viewer(wobble::load_scene(file), wobble::ViewerSettings(), {});
+    ASSERT_EQ(viewer.scene().network.F.rows(), 0);
+    ASSERT_GT(viewer.scene().network.E.rows(), 0);
+    EXPECT_TRUE(viewer.layers().springs);
+    EXPECT_TRUE(viewer.layers().points);
+  }
+  // A mesh with faces keeps the plain defaults: surface only.
+  const wobble::Viewer cloth(wobble::make_builtin_scene("cloth"), wobble::ViewerSettings(), {});
+  EXPECT_FALSE(cloth.layers().springs);
+  EXPECT_FALSE(cloth.layers().points);
+  EXPECT_TRUE(cloth.layers().surface);
+}
+
+TEST(Viewer, TheUserCanHideThemAndAMeshWithFacesGetsItsOwnLayersBack) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string chain = faceless_scene_files(folder)[0];
+  wobble::ViewerSettings settings;
+  settings.layers.points = true;  // as --points asks
+  wobble::Viewer viewer(wobble::load_scene(chain), settings, {});
+  ASSERT_TRUE(viewer.layers().springs);
+  press(viewer, GLFW_KEY_L);
+  press(viewer, GLFW_KEY_P);
+  EXPECT_FALSE(viewer.layers().springs);
+  EXPECT_FALSE(viewer.layers().points);
+
+  // The cloth gets what the command line chose, not what was toggled for the chain ...
+  viewer.load(wobble::make_builtin_scene("cloth"));
+  EXPECT_FALSE(viewer.layers().springs);
+  EXPECT_TRUE(viewer.layers().points);
+  // ... a chain again shows both ...
+  press(viewer, GLFW_KEY_L);  // springs on, for meshes with faces
+  viewer.load(wobble::load_scene(chain));
+  EXPECT_TRUE(viewer.layers().springs);
+  EXPECT_TRUE(viewer.layers().points);
+  // ... and the next mesh with faces has what was chosen for the cloth.
+  viewer.load(wobble::make_builtin_scene("jelly"));
+  EXPECT_TRUE(viewer.layers().springs);
+  EXPECT_TRUE(viewer.layers().points);
+  press(viewer, GLFW_KEY_P);
+  viewer.load(wobble::make_builtin_scene("cloth"));
+  EXPECT_TRUE(viewer.layers().springs);
+  EXPECT_FALSE(viewer.layers().points);
 }
 
 }  // namespace

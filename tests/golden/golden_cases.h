@@ -48,6 +48,8 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"cloth_ui", "cloth --frames 30 --ui --width 640 --height 400"},
       // A course-format scene with a PNG texture mapped through the OBJ's vt.
       {"course_banner_texture", "@ASSETS@/course/banner.json --frames 20 --width 320 --height 240"},
+      // A course-format scene of springs without faces: its springs and masses show by default.
+      {"course_rope_springs", "@ASSETS@/course/rope.json --frames 30 --width 320 --height 240"},
   };
   return cases;
 }

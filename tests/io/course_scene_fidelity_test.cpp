@@ -90,6 +90,21 @@ std::vector<CourseCase> course_cases() {
     truss.vertices = {{0, 0, 0}, {0.4, 0, 0}, {0.2, 0, 0.35}, {0.2, 0.3, 0.1}, {0.6, 0.35, 0.3}};
     cases.push_back(truss);
   }
+  {  // A hanging chain of two-vertex faces whose second spring is written twice: the course's
+     // E = F makes it two springs, twice as stiff as the others.
+    CourseCase chain{"repeated_spring", {}, {}, {}, {1}, 40.0, 0.1};
+    chain.faces = {{1, 2}, {2, 3}, {3, 4}, {2, 3}, {4, 5}, {5, 6}};
+    for (int i = 0; i < 6; ++i)
+      chain.vertices.emplace_back(0.15 * i, -0.02 * i, 0.01 * (i % 2));
+    cases.push_back(chain);
+  }
+  {  // Polylines whose segment 2–3 is written twice (once each way) beside a triangle sharing it:
+     // Wobble takes every `l` segment as written, like a two-vertex face.
+    CourseCase lines{"repeated_line_segment", {}, {{1, 2, 3}}, {{3, 4, 5}, {3, 2}}, {1}, 60.0, 0.2};
+    lines.vertices = {
+        {0, 0, 0}, {0.3, 0, 0}, {0.2, 0.05, 0.25}, {0.5, -0.05, 0.35}, {0.8, -0.1, 0.3}};
+    cases.push_back(lines);
+  }
   return cases;
 }
 
@@ -118,25 +133,65 @@ std::string write_case(const CourseCase& c, const wobble::testing::TemporaryFold
   return folder.file(c.name + ".json");
 }
 
-// Every pair of vertices of every face, and each segment of every line, 0-based and sorted.
-Eigen::MatrixXi brute_force_springs(const CourseCase& c) {
+// The springs by the course's rules, built by brute force: every pair of vertices of the faces
+// of 3 or more vertices once, sorted (the course's igl::edges); then every two-vertex face and
+// every `l` segment as written, repeats kept (the course's E = F). 0-based.
+Eigen::MatrixXi course_springs(const CourseCase& c) {
   std::set<std::pair<int, int>> pairs;
+  std::vector<std::pair<int, int>> written;
   for (const auto& face : c.faces) {
+    if (face.size() == 2) written.emplace_back(face[0] - 1, face[1] - 1);
     for (int a : face) {
       for (int b : face) {
-        if (a < b) pairs.insert({a - 1, b - 1});
+        if (a < b && face.size() > 2) pairs.insert({a - 1, b - 1});
       }
     }
   }
   for (const auto& line : c.lines) {
     for (std::size_t i = 1; i < line.size(); ++i)
-      pairs.insert({std::min(line[i - 1], line[i]) - 1, std::max(line[i - 1], line[i]) - 1});
+      written.emplace_back(line[i - 1] - 1, line[i] - 1);
   }
-  Eigen::MatrixXi E(static_cast<Eigen::Index>(pairs.size()), 2);
+  Eigen::MatrixXi E(static_cast<Eigen::Index>(pairs.size() + written.size()), 2);
   Eigen::Index e = 0;
   for (const auto& [a, b] : pairs)
     E.row(e++) << a, b;
+  for (const auto& [a, b] : written)
+    E.row(e++) << a, b;
   return E;
+}
+
+// The same springs with every pair once: what Wobble did before it kept repeated springs.
+Eigen::MatrixXi merged_springs(const Eigen::MatrixXi& E) {
+  std::set<std::pair<int, int>> pairs;
+  for (Eigen::Index e = 0; e < E.rows(); ++e)
+    pairs.insert({std::min(E(e, 0), E(e, 1)), std::max(E(e, 0), E(e, 1))});
+  Eigen::MatrixXi merged(static_cast<Eigen::Index>(pairs.size()), 2);
+  Eigen::Index e = 0;
+  for (const auto& [a, b] : pairs)
+    merged.row(e++) << a, b;
+  return merged;
+}
+
+// `frames` steps of the dense seed from rest, with the course's gravity (9.8 down y on every
+// vertex, not m·g); every frame's positions.
+std::vector<Eigen::MatrixXd> seed_frames(const Eigen::MatrixXd& V, const Eigen::MatrixXi& E,
+                                         double k, const Eigen::VectorXd& m,
+                                         const Eigen::VectorXi& b) {
+  const Eigen::MatrixXd fext = Eigen::RowVector3d(0, -9.8, 0).replicate(V.rows(), 1);
+  Eigen::VectorXd r;
+  Eigen::MatrixXd M, A, C;
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  EXPECT_TRUE(fast_mass_springs_precomputation_dense(V, E, k, m, b, course_dt, r, M, A, C, llt));
+  std::vector<Eigen::MatrixXd> positions;
+  Eigen::MatrixXd previous = V, current = V, next;
+  for (int frame = 0; frame < frames; ++frame) {
+    fast_mass_springs_step_dense(V, E, k, b, course_dt, fext, r, M, A, C, llt, previous, current,
+                                 next);
+    previous = current;
+    current = next;
+    positions.push_back(current);
+  }
+  return positions;
 }
 
 double area(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
@@ -187,7 +242,7 @@ TEST(CourseSceneFidelity, SimulationMatchesTheDenseSeedFrameByFrame) {
     Eigen::MatrixXd V(n, 3);
     for (Eigen::Index i = 0; i < n; ++i)
       V.row(i) = c.vertices[i];
-    const Eigen::MatrixXi E = brute_force_springs(c);
+    const Eigen::MatrixXi E = course_springs(c);
     int obtuse = 0;
     const Eigen::VectorXd m =
         c.m ? Eigen::VectorXd::Constant(n, *c.m).eval() : geometric_masses(c, obtuse);
@@ -202,30 +257,34 @@ TEST(CourseSceneFidelity, SimulationMatchesTheDenseSeedFrameByFrame) {
     Eigen::VectorXi b(static_cast<Eigen::Index>(c.pins.size()));
     for (Eigen::Index i = 0; i < b.size(); ++i)
       b(i) = c.pins[static_cast<std::size_t>(i)] - 1;
-    // The course's gravity: 9.8 down y on every vertex, not m·g.
-    const Eigen::MatrixXd fext = Eigen::RowVector3d(0, -9.8, 0).replicate(n, 1);
-    Eigen::VectorXd r;
-    Eigen::MatrixXd M, A, C;
-    Eigen::LLT<Eigen::MatrixXd> llt;
-    ASSERT_TRUE(
-        fast_mass_springs_precomputation_dense(V, E, c.k, m, b, course_dt, r, M, A, C, llt));
-    Eigen::MatrixXd previous = V, current = V, next;
+    const std::vector<Eigen::MatrixXd> seed = seed_frames(V, E, c.k, m, b);
+    ASSERT_EQ(seed.size(), static_cast<std::size_t>(frames));
 
     wobble::Simulation simulation(scene.network, scene.pins, scene.params, scene.initial_velocity);
     const double diagonal = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
     double worst = 0.0;
     for (int frame = 0; frame < frames; ++frame) {
-      fast_mass_springs_step_dense(V, E, c.k, b, course_dt, fext, r, M, A, C, llt, previous,
-                                   current, next);
-      previous = current;
-      current = next;
       simulation.step();
-      worst = std::max(worst, (simulation.positions() - current).cwiseAbs().maxCoeff() / diagonal);
+      worst =
+          std::max(worst, (simulation.positions() - seed[frame]).cwiseAbs().maxCoeff() / diagonal);
     }
+    const Eigen::MatrixXd& current = seed.back();
     // The scene must actually move, or matching would prove nothing: more than 1% of its size.
     EXPECT_GT((current - V).cwiseAbs().maxCoeff(), 0.01 * diagonal);
     // Sparse and dense Cholesky solve the same system: their difference is rounding, ~1e-12.
     EXPECT_LE(worst, 1e-6);
+
+    // Where a pair is repeated, the repeat must matter: the seed with every pair once moves
+    // measurably otherwise, far beyond the 1e-6 above, so merging the repeat fails this test.
+    const Eigen::MatrixXi merged = merged_springs(E);
+    if (merged.rows() < E.rows()) {
+      const Eigen::MatrixXd once = seed_frames(V, merged, c.k, m, b).back();
+      const double apart = (once - current).cwiseAbs().maxCoeff() / diagonal;
+      EXPECT_GT(apart, 1e-3);
+      std::cout << "[ fidelity ] " << c.name << ": " << E.rows() - merged.rows()
+                << " repeated springs; merging them moves the last frame by " << std::scientific
+                << std::setprecision(2) << apart << std::defaultfloat << " of the diagonal\n";
+    }
     std::cout << "[ fidelity ] " << c.name << ": " << n << " vertices, " << E.rows() << " springs, "
               << frames << " frames, max |p_wobble - p_seed| / diagonal = " << std::scientific
               << std::setprecision(2) << worst << std::defaultfloat << "\n";

@@ -31,7 +31,7 @@ TEST(FaceSprings, QuadGivesFourEdgesAndBothDiagonals) {
 }
 
 TEST(FaceSprings, PolygonOfNGivesEveryPairOnce) {
-  for (int n = 2; n <= 9; ++n) {
+  for (int n = 3; n <= 9; ++n) {  // n = 2 is a spring as written (below)
     std::vector<int> face;
     for (int i = 0; i < n; ++i)
       face.push_back(10 - i);  // any order: the springs come out sorted
@@ -48,12 +48,23 @@ TEST(FaceSprings, PairSharedByTwoFacesIsOneSpring) {
   EXPECT_EQ(rows(E), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}, {1, 3}, {2, 3}}));
 }
 
-TEST(FaceSprings, TwoVertexFacesAreOneSpringEach) {
-  const Eigen::MatrixXi E = wobble::face_springs({{3, 1}, {1, 3}, {0, 2}});
-  EXPECT_EQ(rows(E), (std::vector<std::pair<int, int>>{{0, 2}, {1, 3}}));
+TEST(FaceSprings, TwoVertexFacesAreTheSpringListAsWritten) {
+  // The course's E = F: file order, each face's own order, and a repeat (either way round) is a
+  // second spring.
+  const Faces faces = {{3, 1}, {1, 3}, {0, 2}, {3, 1}};
+  EXPECT_EQ(rows(wobble::face_springs(faces)),
+            (std::vector<std::pair<int, int>>{{3, 1}, {1, 3}, {0, 2}, {3, 1}}));
 }
 
-TEST(FaceSprings, OrderDoesNotDependOnTheFaceOrder) {
+TEST(FaceSprings, TwoVertexFacesBesidePolygonsAreAddedAsWrittenAfterThePolygonsPairs) {
+  // The triangle's edge 0–1 once from the triangle, then the two-vertex faces as written,
+  // including 1–0 which repeats that edge: a spring of its own, as a two-vertex face always is.
+  const Faces faces = {{4, 2}, {0, 1, 2}, {1, 0}, {2, 3}};
+  EXPECT_EQ(rows(wobble::face_springs(faces)),
+            (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}, {4, 2}, {1, 0}, {2, 3}}));
+}
+
+TEST(FaceSprings, PolygonPairsOrderDoesNotDependOnTheFaceOrder) {
   const Faces faces = {{0, 1, 2, 3}, {3, 2, 4}, {4, 5}, {5, 6, 7, 8, 9}};
   const Faces reversed(faces.rbegin(), faces.rend());
   EXPECT_EQ(wobble::face_springs(faces), wobble::face_springs(reversed));
