@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #if defined(__linux__)
+#include <fcntl.h>
 #include <sched.h>
+#include <unistd.h>
 #endif
 
 namespace wobble {
@@ -24,6 +26,36 @@ inline void cpu_pause() {
   __builtin_ia32_pause();
 #elif defined(__aarch64__)
   asm volatile("yield");
+#endif
+}
+
+// How often the caller looks whether another program wants the processors.
+constexpr double contention_check_seconds = 0.02;
+
+// Threads runnable on the whole machine right now (the 4th field of /proc/loadavg, "R/total"),
+// or -1 where that cannot be read. Reads into the stack: no allocation.
+int runnable_threads() {
+#if defined(__linux__)
+  const int file = open("/proc/loadavg", O_RDONLY | O_CLOEXEC);
+  if (file < 0) return -1;
+  char text[128];
+  const ssize_t size = read(file, text, sizeof(text) - 1);
+  close(file);
+  if (size <= 0) return -1;
+  text[size] = '\0';
+  const char* at = text;
+  for (int field = 0; field < 3; ++field) {
+    while (*at && *at != ' ')
+      ++at;
+    while (*at == ' ')
+      ++at;
+  }
+  int runnable = 0;
+  for (; *at >= '0' && *at <= '9'; ++at)
+    runnable = 10 * runnable + (*at - '0');
+  return *at == '/' ? runnable : -1;
+#else
+  return -1;
 #endif
 }
 
@@ -69,7 +101,7 @@ int usable_processors() {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-WorkerPool::WorkerPool(int threads) {
+WorkerPool::WorkerPool(int threads) : usable_processors_(usable_processors()) {
   for (int t = 1; t < threads; ++t)
     helpers_.emplace_back([this] { helper_loop(); });
 }
@@ -119,7 +151,15 @@ void WorkerPool::run_erased(int count, Call call, void* context, SharingPayoff* 
   // maximum: the local step's gaps alternate between next to nothing (its second loop) and a
   // global step's length, and a poll must outlast the longer one.
   gap_seconds_ = std::max(seconds_between(last_run_end_, start), 0.875 * gap_seconds_);
-  poll_budget_seconds_.store(gap_seconds_ < max_poll_seconds
+  // A polling helper with no core of its own takes turns with the caller, and slows what the
+  // caller does between runs (the global step): poll only while a core is free.
+  if (seconds_between(last_contention_check_, start) >= contention_check_seconds) {
+    last_contention_check_ = start;
+    const int runnable = runnable_threads();
+    const int others = runnable - 1 - polling_helpers_.load(std::memory_order_relaxed);
+    contended_ = runnable >= 0 && others + threads() > usable_processors_;
+  }
+  poll_budget_seconds_.store(!contended_ && gap_seconds_ < max_poll_seconds
                                  ? std::max(2.0 * gap_seconds_, min_poll_seconds)
                                  : min_poll_seconds,
                              std::memory_order_relaxed);
@@ -179,10 +219,12 @@ void WorkerPool::helper_loop() {
     // step's iterations), then sleep until a job or a call to poll comes.
     const auto poll_start = std::chrono::steady_clock::now();
     const double poll_seconds = poll_budget_seconds_.load(std::memory_order_relaxed);
+    polling_helpers_.fetch_add(1, std::memory_order_relaxed);
     for (int round = 1; published_generation_.load(std::memory_order_acquire) == seen; ++round) {
       if (round % 64 == 0 && seconds_since(poll_start) >= poll_seconds) break;
       cpu_pause();
     }
+    polling_helpers_.fetch_sub(1, std::memory_order_relaxed);
     Job job;
     {
       std::unique_lock<std::mutex> lock(mutex_);

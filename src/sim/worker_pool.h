@@ -109,6 +109,11 @@ class WorkerPool {
   std::atomic<double> poll_budget_seconds_{0.0};
   std::chrono::steady_clock::time_point last_run_end_;  // guarded by caller_mutex_
   double gap_seconds_ = 0.0;                            // guarded by caller_mutex_
+  // Whether, at the last look, other threads wanted every core this pool could poll on.
+  std::chrono::steady_clock::time_point last_contention_check_;  // guarded by caller_mutex_
+  bool contended_ = false;                                       // guarded by caller_mutex_
+  std::atomic<int> polling_helpers_{0};
+  const int usable_processors_;
 };
 
 // Processors this process may run on (its CPU affinity), at least 1.
