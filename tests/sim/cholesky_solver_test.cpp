@@ -92,6 +92,27 @@ TEST(CholeskySolver, ALargeFactorIsReadInSinglePrecisionToAboutFloatAccuracy) {
   EXPECT_NEAR(x_single(0, 0), x_exact(0, 0), 1e-6 * std::abs(x_exact(0, 0)));
 }
 
+TEST(CholeskySolver, TheSameBitsOnOneThreadOrSeveral) {
+  // A factor large enough to be factorized in two parts side by side.
+  const Eigen::SparseMatrix<double> Q = cloth_system(400.0, 1e10, 70);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(Q.rows(), 3);
+  wobble::WorkerPool one_thread(1), three_threads(3);
+  wobble::CholeskySolver alone, shared;
+  alone.set_pool(one_thread);
+  shared.set_pool(three_threads);
+  alone.analyze(Q);
+  shared.analyze(Q);
+  ASSERT_GT(shared.factor_nonzeros(), wobble::CholeskySolver::parallel_factorization_above);
+  ASSERT_TRUE(alone.factorize(Q));
+  Eigen::MatrixXd expected, x;
+  alone.solve(b, expected);
+  for (int repeat = 0; repeat < 10; ++repeat) {
+    ASSERT_TRUE(shared.factorize(Q));
+    shared.solve(b, x);
+    ASSERT_EQ(x, expected) << "repeat " << repeat;
+  }
+}
+
 TEST(CholeskySolver, RefactorizesNewValuesOnTheSamePattern) {
   wobble::CholeskySolver solver;
   const Eigen::SparseMatrix<double> soft = cloth_system(10.0, 1e10);
