@@ -11,22 +11,23 @@
 
 namespace wobble {
 
-// A few helper threads for the stepper's parallel loops, built so that a busy machine costs
-// little: an idle helper sleeps (it never spins waiting for work), and the calling thread does
-// every task that no helper has taken yet. So a helper that has no core to run on delays nothing
-// (the caller does its share), and a step on a machine whose other core is taken by another
-// program costs about what it costs on one thread, not the many times more that busy-waiting
-// barriers cost there.
+// A few helper threads for the stepper's parallel loops, built for a machine whose cores are
+// not all free (a browser, a screen share or a build beside Wobble):
+// - the calling thread takes part, and does every task that no helper has started, so a helper
+//   that has no core to run on delays nothing; the caller waits only for a task a helper is
+//   running, and then asleep, so that a helper which lost its core can have the caller's;
+// - between runs a helper polls for the next one only while runs come under 300 µs apart (the
+//   local step's iterations on a mid-sized cloth: waking a sleeping thread costs tens of
+//   microseconds) and while no other program wants the cores (the runnable threads in
+//   /proc/loadavg, looked at every 20 ms); otherwise it sleeps;
+// - a loop whose sharing does not pay is kept on the caller (SharingPayoff).
+// Busy-waiting barriers (OpenMP's) instead made every thread spin while waiting for one with
+// no core: beside one busy process a step took many times what it takes on one thread.
 //
 // run(count, task) calls task(i) once for every i in [0, count), on the caller and any helpers
 // that wake in time, and returns when all calls have returned. Tasks must not throw and must not
 // call run on the same pool; runs from several threads take turns. run allocates nothing; the
 // helpers start in the constructor.
-//
-// Between runs a helper polls for the next one for a while before it sleeps, but only while runs
-// come close together (under 300 µs apart: the local step's iterations on a mid-sized cloth),
-// because waking a thread costs tens of microseconds; and a loop whose sharing does not pay is
-// kept on the caller (SharingPayoff), so its helpers sleep.
 class WorkerPool;
 
 // Whether sharing one loop with the pool's helpers pays off, learned from the loop's own runs:
