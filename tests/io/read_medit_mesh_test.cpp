@@ -136,7 +136,10 @@ TEST(ReadMeditMesh, MissingFileIsAnInputErrorNamingIt) {
     wobble::read_medit_mesh(path);
     ADD_FAILURE() << "read a missing file";
   } catch (const wobble::InputError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind(path + ": cannot open", 0), 0u) << error.what();
+    EXPECT_EQ(
+        std::string(error.what()).rfind(path + ": no such file, expected a MEDIT .mesh file", 0),
+        0u)
+        << error.what();
   }
 }
 

@@ -125,7 +125,7 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
       {R"({"mesh": {"generator": "cloth"}, "pins": [1.5]})", "pins: expected a vertex index"},
       {R"({"mesh": {"file": "missing.obj"}})", "missing.obj"},
       {R"({"mesh": {"generator": "cloth"}, "appearance": {"texture": "none.png"}})",
-       "appearance.texture: no such file"},
+       "none.png': no such file, expected a PNG texture"},
       {R"({"mesh": {"generator": "cloth"}, "appearance": {"front_color": [2, 0, 0]}})",
        "appearance.front_color: expected a colour"},
       {R"({"mesh": {"generator": "cloth"}, "camera": {"position": [0, 0, 1]}})",
