@@ -14,7 +14,7 @@ namespace wobble {
 constexpr std::uintmax_t mebibytes = 1024 * 1024;
 
 constexpr FileKind scene_json_file{"a scene (JSON)", 16 * mebibytes};
-constexpr FileKind obj_file{"an OBJ mesh", 64 * mebibytes};
+constexpr FileKind obj_file{"an OBJ mesh", 32 * mebibytes};
 constexpr FileKind medit_file{"a MEDIT .mesh file", 16 * mebibytes};
 constexpr FileKind tetgen_node_file{"a TetGen .node file", 16 * mebibytes};
 constexpr FileKind tetgen_ele_file{"a TetGen .ele file", 16 * mebibytes};
@@ -24,7 +24,7 @@ constexpr FileKind png_file{"a PNG texture", 128 * mebibytes};
 constexpr long max_face_corners = 256;
 // Springs that faces and lines give, counted before a pair shared by faces is merged (what the
 // reader must hold at once).
-constexpr long max_face_springs = 16'000'000;
+constexpr long max_face_springs = 8'000'000;
 
 // A texture's width and height, each: decoded as RGBA it takes 4 bytes a pixel.
 constexpr int max_texture_side = 4096;
