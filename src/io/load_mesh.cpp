@@ -118,8 +118,10 @@ std::string mesh_file_problem(const std::string& path) {
   } else if (extension == ".mesh") {
     files = {{path, medit_file}};
   } else if (extension == ".node" || extension == ".ele") {
+    // The file named first, then the one beside it that read_tetgen reads too.
     const std::string base = tetgen_base(path);
     files = {{base + ".node", tetgen_node_file}, {base + ".ele", tetgen_ele_file}};
+    if (path == base + ".ele") std::swap(files[0], files[1]);
   } else {
     return "'" + path + "': unknown mesh format, expected .obj, .mesh, .node or .ele";
   }

@@ -86,8 +86,6 @@ RgbaImage read_png(const std::string& path, int max_side) {
 }
 
 std::string texture_problem(const std::string& path) {
-  const std::string problem = input_file_problem(path, png_file);
-  if (!problem.empty()) return problem;
   try {
     InputFile file(path, png_file);
     int width = 0, height = 0, channels = 0;

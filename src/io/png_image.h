@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/input_file_limits.h"
+
 namespace wobble {
 
 // An 8-bit RGBA image, rows from the top, 4 bytes per pixel.
@@ -26,7 +28,7 @@ void write_png(const std::string& path, const RgbaImage& image);
 // first, and an image wider or taller than `max_side` pixels is refused before it is decoded.
 // Throws InputError naming the file and why it could not be read: not a regular file, larger
 // than png_file.max_bytes (io/input_file_limits.h), not an image, or too large.
-RgbaImage read_png(const std::string& path, int max_side = 16384);
+RgbaImage read_png(const std::string& path, int max_side = max_texture_side);
 
 // Why the image at `path` cannot be a texture, or "" when it can: the checks of read_png with
 // max_texture_side, made from the file's status and its header only (nothing is decoded), so
