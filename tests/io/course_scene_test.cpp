@@ -159,6 +159,14 @@ TEST_F(CourseScene, RefusesBadKeys) {
                    "'" + folder_.file("meshes/none.obj") + "': no such file, expected an OBJ mesh");
   expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "none.png"})", "png",
                    "'" + folder_.file("none.png") + "': no such file, expected a PNG texture");
+  // What is not a regular file, and a texture that is not an image, are refused when the scene
+  // loads, drawn or not.
+  expect_key_error(R"({"obj": "meshes", "b": [1], "k": 1})", "obj",
+                   "'" + folder_.file("meshes") + "': is a folder, expected an OBJ mesh");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "meshes"})", "png",
+                   "is a folder, expected a PNG texture");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "meshes/sheet.obj"})", "png",
+                   "sheet.obj': is not a readable image");
 }
 
 TEST_F(CourseScene, MalformedJsonNamesItsLine) {
