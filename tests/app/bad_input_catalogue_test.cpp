@@ -2,6 +2,7 @@
 // OBJ export and a screenshot, and must end with exit code 2, one line on stderr that names the
 // file (or option) and the line or key and says what was expected, nothing on stdout, and no
 // file written, not even a partial or temporary one; within 2 s of CPU time and 200 MB of memory.
+#include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -12,8 +13,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "io/input_file_limits.h"
 #include "run_wobble.h"
