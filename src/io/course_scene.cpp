@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/input_file.h"
+#include "io/input_file_limits.h"
+#include "io/png_image.h"
 #include "io/read_json_file.h"
 #include "io/read_obj.h"
 #include "sim/face_springs.h"
@@ -44,23 +46,23 @@ double positive_number(const std::string& json_path, const nlohmann::json& objec
   return number;
 }
 
-// A path given relative to the JSON file, which must name an existing file.
+// A path given relative to the JSON file, which must name a file that `problem_of` finds
+// nothing wrong with (input_file_problem, texture_problem).
+template <typename ProblemOf>
 std::string existing_file(const std::string& json_path, const nlohmann::json& object,
-                          const std::string& key, const std::string& expected) {
+                          const std::string& key, const std::string& expected,
+                          ProblemOf problem_of) {
   const nlohmann::json& value = object.at(key);
   if (!value.is_string() || value.get<std::string>().empty()) {
     throw key_error(json_path, key,
                     "got " + shown(value) + ", expected " + expected +
                         " path (a string, relative to the JSON file)");
   }
-  const std::filesystem::path resolved =
-      std::filesystem::path(json_path).parent_path() / value.get<std::string>();
-  std::error_code ignored;
-  if (!std::filesystem::is_regular_file(resolved, ignored)) {
-    throw key_error(json_path, key,
-                    "no such file '" + resolved.string() + "', expected " + expected + " file");
-  }
-  return resolved.string();
+  const std::string resolved =
+      (std::filesystem::path(json_path).parent_path() / value.get<std::string>()).string();
+  const std::string problem = problem_of(resolved);
+  if (!problem.empty()) throw key_error(json_path, key, "'" + resolved + "': " + problem);
+  return resolved;
 }
 
 // "b": 1-based vertex indices, returned 0-based.
@@ -132,9 +134,15 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
   const double k = positive_number(json_path, object, "k");
   const bool constant_mass = object.contains("m");
   const double m = constant_mass ? positive_number(json_path, object, "m") : 0.0;
-  const std::string obj_path = existing_file(json_path, object, "obj", "an OBJ mesh");
+  const std::string obj_path =
+      existing_file(json_path, object, "obj", "an OBJ mesh",
+                    [](const std::string& path) { return input_file_problem(path, obj_file); });
+  // The texture is checked now, though only drawing reads it, so that a scene is refused or
+  // accepted whether or not it is drawn.
   const std::string texture =
-      object.contains("png") ? existing_file(json_path, object, "png", "a PNG texture") : "";
+      object.contains("png")
+          ? existing_file(json_path, object, "png", "a PNG texture", texture_problem)
+          : "";
 
   const ObjMesh mesh = read_obj(obj_path);
   Scene scene;

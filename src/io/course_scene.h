@@ -15,7 +15,9 @@ namespace wobble {
 //   "b"    pinned vertices, a list of 1-based indices into the OBJ's vertices (required)
 //   "k"    spring stiffness, a positive number (required)
 //   "m"    one mass for every vertex, a positive number (optional)
-//   "png"  texture image, relative to the JSON file (optional)
+//   "png"  texture image, relative to the JSON file (optional); its header is checked when the
+//          scene loads (see texture_problem), so a bad texture is refused whether or not it is
+//          drawn
 //   "bc"   boundary conditions: not supported, refused
 //
 // Other keys are ignored. The reference program's rules, which the Scene carries out:

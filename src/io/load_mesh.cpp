@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 #include <vector>
 
+#include "io/input_file.h"
+#include "io/input_file_limits.h"
 #include "io/read_medit_mesh.h"
 #include "io/read_obj.h"
 #include "io/read_tetgen.h"
@@ -105,6 +108,28 @@ std::string extension_of(const std::string& path) {
 bool is_mesh_file(const std::string& path) {
   const std::string extension = extension_of(path);
   return extension == ".obj" || extension == ".mesh" || extension == ".node" || extension == ".ele";
+}
+
+std::string mesh_file_problem(const std::string& path) {
+  const std::string extension = extension_of(path);
+  std::vector<std::pair<std::string, FileKind>> files;
+  if (extension == ".obj") {
+    files = {{path, obj_file}};
+  } else if (extension == ".mesh") {
+    files = {{path, medit_file}};
+  } else if (extension == ".node" || extension == ".ele") {
+    // The file named first, then the one beside it that read_tetgen reads too.
+    const std::string base = tetgen_base(path);
+    files = {{base + ".node", tetgen_node_file}, {base + ".ele", tetgen_ele_file}};
+    if (path == base + ".ele") std::swap(files[0], files[1]);
+  } else {
+    return "'" + path + "': unknown mesh format, expected .obj, .mesh, .node or .ele";
+  }
+  for (const auto& [file, kind] : files) {
+    const std::string problem = input_file_problem(file, kind);
+    if (!problem.empty()) return "'" + file + "': " + problem;
+  }
+  return "";
 }
 
 LoadedMesh load_mesh(const std::string& path, bool fill, int fill_resolution) {

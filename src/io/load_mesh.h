@@ -29,6 +29,12 @@ struct LoadedMesh {
 // volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
 LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12);
 
+// Why `path` cannot be read by load_mesh, or "": its extension is unknown, or a file it would
+// read (for TetGen both BASE.node and BASE.ele) is not a regular file within its format's size
+// limit (input_file_problem). Looks at the files' status only, so it never blocks. The answer
+// names the file at fault: "'PATH': is a folder, expected a TetGen .node file".
+std::string mesh_file_problem(const std::string& path);
+
 // The extension of a file name, lower-cased, with its dot (".obj"), or "" if it has none.
 std::string extension_of(const std::string& path);
 

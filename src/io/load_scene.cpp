@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <limits>
 
 #include "io/course_scene.h"
+#include "io/input_file.h"
 #include "io/load_mesh.h"
 #include "io/read_json_file.h"
 #include "io/scene_pins.h"
@@ -49,19 +49,19 @@ Scene load_scene(const std::string& source, bool fill) {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled, not '" + source + "'");
     return make_builtin_scene(source);
   }
-  if (!std::filesystem::exists(source)) {
+  if (input_file_is_missing(source)) {
     std::string known;
     for (const std::string& name : builtins)
       known += (known.empty() ? "" : ", ") + name;
     throw InputError("'" + source + "': no such scene file or built-in scene (built-in: " + known +
                      ")");
   }
-  std::error_code ignored;
-  if (std::filesystem::is_directory(source, ignored)) {
-    throw InputError(source +
-                     ": is a folder, expected a scene file (.json) or a mesh (.obj, .mesh, "
-                     ".node or .ele)");
-  }
+  // A folder, a FIFO, a device or a path that cannot be reached; each reader checks its own
+  // size limit.
+  const FileKind any_scene{"a scene file (.json) or a mesh (.obj, .mesh, .node or .ele)",
+                           std::numeric_limits<std::uintmax_t>::max()};
+  const std::string problem = input_file_problem(source, any_scene);
+  if (!problem.empty()) throw InputError(source + ": " + problem);
   if (extension_of(source) == ".json") {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled; set it in the scene");
     const nlohmann::json object = read_json_file(source);

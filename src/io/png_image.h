@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/input_file_limits.h"
+
 namespace wobble {
 
 // An 8-bit RGBA image, rows from the top, 4 bytes per pixel.
@@ -22,9 +24,17 @@ std::string encode_png(const RgbaImage& image);
 // image. Throws OutputError when the file cannot be written.
 void write_png(const std::string& path, const RgbaImage& image);
 
-// Read a PNG (or any image stb_image reads) as RGBA. Throws InputError naming the file and why
-// it could not be read.
-RgbaImage read_png(const std::string& path);
+// Read a PNG (or any image stb_image reads) as RGBA, reading the file once. The header is read
+// first, and an image wider or taller than `max_side` pixels is refused before it is decoded.
+// Throws InputError naming the file and why it could not be read: not a regular file, larger
+// than png_file.max_bytes (io/input_file_limits.h), not an image, or too large.
+RgbaImage read_png(const std::string& path, int max_side = max_texture_side);
+
+// Why the image at `path` cannot be a texture, or "" when it can: the checks of read_png with
+// max_texture_side, made from the file's status and its header only (nothing is decoded), so
+// that a scene with a bad texture is refused when it is loaded, not when it is first drawn. The
+// reason reads after the path ("is a folder, expected a PNG texture").
+std::string texture_problem(const std::string& path);
 
 }  // namespace wobble
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "io/input_file_limits.h"
 #include "read_text_file.h"
 #include "sim/input_error.h"
 
@@ -42,7 +43,7 @@ class FirstError : public nlohmann::json_sax<nlohmann::json> {
 }  // namespace
 
 nlohmann::json read_json_file(const std::string& path) {
-  const std::string text = read_text_file(path, "a scene (JSON)");
+  const std::string text = read_text_file(path, scene_json_file);
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) {
     throw InputError(path + ": the file is empty, expected a JSON object");
   }

@@ -7,12 +7,12 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
+#include "io/input_file_limits.h"
+#include "io/number_word.h"
+#include "io/read_text_file.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
 #include "sim/tet_mesh.h"
@@ -92,10 +92,12 @@ class Words {
 
   double number(const std::string& what) {
     const std::string word(need(what));
-    char* end = nullptr;
-    const double value = std::strtod(word.c_str(), &end);
-    if (*end != '\0' || end == word.c_str()) fail("expected " + what + ", got '" + word + "'");
-    if (!std::isfinite(value)) fail("expected " + what + " (finite), got '" + word + "'");
+    double value = 0.0;
+    const NumberWord reading = read_number_word(word, value);
+    if (reading == NumberWord::malformed) fail("expected " + what + ", got '" + word + "'");
+    if (reading == NumberWord::not_finite)
+      fail("expected " + what + " (finite), got '" + word + "'");
+    if (reading == NumberWord::underflow) fail(what + ": " + underflow_message(word));
     return value;
   }
 
@@ -139,14 +141,7 @@ std::string row_name(const char* section, long row) {
 }  // namespace
 
 TetMeshFile read_medit_mesh(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) {
-    throw InputError(path + ": cannot open (" + std::strerror(errno) +
-                     "); expected a MEDIT .mesh file");
-  }
-  std::ostringstream text;
-  text << file.rdbuf();
-  Words words(path, text.str());
+  Words words(path, read_text_file(path, medit_file));
 
   // Rows go into vectors that grow as they are read rather than into matrices sized by the
   // section's count, so that a corrupt count fails at the file's end, not in the allocator.

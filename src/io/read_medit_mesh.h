@@ -23,13 +23,16 @@ namespace wobble {
 // skipped. Any other keyword is refused, because without knowing its row width there is no
 // telling where its data ends. Vertices that no tetrahedron uses are kept.
 //
+// A UTF-8 byte-order mark before the first keyword is skipped.
+//
 // Throws InputError, with a one-line message "PATH: line L: expected ...", when the file cannot
-// be read, a keyword is unknown, a number is malformed or not finite, a section ends early, a
-// section appears twice, a count is above Wobble's limits (10,000,000 vertices, 60,000,000
-// tetrahedra; sim/input_limits.h), an index is 0 or above the vertex count, there is no Vertices
-// section or no tetrahedron, or a tetrahedron is degenerate: a repeated corner or zero volume (its
-// corners coplanar to rounding, |volume| <= 1e-12 × its longest edge³), which would give its
-// corners no mass and its faces no orientation.
+// be read, is not a regular file or is larger than medit_file.max_bytes (io/input_file_limits.h),
+// a keyword is unknown, a number is malformed, not finite or underflows (1e-400), a section ends
+// early, a section appears twice, a count is above Wobble's limits (10,000,000 vertices,
+// 60,000,000 tetrahedra; sim/input_limits.h), an index is 0 or above the vertex count, there is
+// no Vertices section or no tetrahedron, or a tetrahedron is degenerate: a repeated corner or
+// zero volume (its corners coplanar to rounding, |volume| <= 1e-12 × its longest edge³), which
+// would give its corners no mass and its faces no orientation.
 //
 // Inputs:
 //   path  the .mesh file

@@ -8,8 +8,11 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/input_file_limits.h"
+#include "io/number_word.h"
 #include "read_text_file.h"
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 
 namespace wobble {
 
@@ -24,16 +27,6 @@ std::vector<std::string> split(const std::string& text, const char* separators) 
     start = end == std::string::npos ? end : text.find_first_not_of(separators, end);
   }
   return words;
-}
-
-// strtod rounds correctly; tinyobjloader 2.0.0rc10's own number reader is off by up to an ulp
-// (0.75 reads as 0.75000000000000011), which would keep a mesh from reading back bit for bit
-// what write_obj wrote, or what the course's reader reads. So coordinates are taken from here.
-bool read_finite_number(const std::string& word, double& value) {
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtod(word.c_str(), &end);
-  return end == word.c_str() + word.size() && errno != ERANGE && std::isfinite(value);
 }
 
 // One part of an index triple: a non-zero integer, optionally negative, that fits in an int.
@@ -67,6 +60,7 @@ struct Statements {
   std::vector<int> face_lines, line_lines;  // line number of every `f`, every `l`
   std::vector<double> positions;            // x y z of every `v`
   std::vector<double> texcoords;            // u v of every `vt` (v = 0 when not given)
+  long springs = 0;  // springs the faces and lines give, before shared pairs are merged
 };
 
 // tinyobjloader turns "abc" into 0 and "3x" into 3 without a word, so each line it will read is
@@ -86,8 +80,16 @@ Statements check_statements(const std::string& path, const std::string& text) {
                          " coordinates, expected " + (keyword == "v" ? "x y z" : "u [v]"));
       }
       double values[3] = {0.0, 0.0, 0.0};
+      // strtod rounds correctly; tinyobjloader 2.0.0rc10's own number reader is off by up to an
+      // ulp (0.75 reads as 0.75000000000000011), which would keep a mesh from reading back bit
+      // for bit what write_obj wrote, or what the course's reader reads. So coordinates are
+      // taken from here.
       for (std::size_t w = 1; w < words.size() && w <= 3; ++w) {
-        if (!read_finite_number(words[w], values[w - 1])) {
+        const NumberWord reading = read_number_word(words[w], values[w - 1]);
+        if (reading == NumberWord::underflow) {
+          throw InputError(at + "coordinate " + underflow_message(words[w]));
+        }
+        if (reading != NumberWord::finite) {
           throw InputError(at + "coordinate '" + words[w] + "' is not a finite number");
         }
       }
@@ -97,6 +99,21 @@ Statements check_statements(const std::string& path, const std::string& text) {
       if (words.size() < 3) {
         throw InputError(at + "`" + keyword + "` lists " + std::to_string(words.size() - 1) +
                          " vertices, expected at least 2");
+      }
+      // Every pair of a face's corners is a spring: n corners, n(n-1)/2 springs.
+      const long corners = static_cast<long>(words.size()) - 1;
+      if (keyword == "f" && corners > max_face_corners) {
+        throw InputError(at + "the face has " + std::to_string(corners) +
+                         " corners, above Wobble's limit of " + std::to_string(max_face_corners) +
+                         " (a face of n corners gives n(n-1)/2 springs)");
+      }
+      statements.springs += keyword == "f" ? corners * (corners - 1) / 2 : corners - 1;
+      if (statements.springs > max_face_springs) {
+        throw InputError(at + "the faces and lines so far give " +
+                         with_thousands_separators(statements.springs) +
+                         " springs, above Wobble's limit of " +
+                         with_thousands_separators(max_face_springs) +
+                         " (a face of n corners gives n(n-1)/2 springs)");
       }
       for (std::size_t w = 1; w < words.size(); ++w) {
         if (!is_corner(words[w])) {
@@ -171,7 +188,7 @@ int resolve(int raw, int before, int count, const std::string& what, const std::
 }  // namespace
 
 ObjMesh read_obj(const std::string& path) {
-  const Statements statements = check_statements(path, read_text_file(path, "an OBJ mesh"));
+  const Statements statements = check_statements(path, read_text_file(path, obj_file));
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;

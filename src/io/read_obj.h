@@ -25,10 +25,15 @@ struct ObjMesh {
 // Coordinates are the correctly rounded doubles of their decimals (strtod), so a file written by
 // write_obj reads back bit for bit; tinyobjloader's own number reader can be an ulp off.
 //
+// A UTF-8 byte-order mark before the first line is skipped.
+//
 // Throws InputError, with a one-line message "PATH: line L: what, expected what" where a line
-// is to blame, for: a missing or unreadable file, a coordinate that is not a finite number, an
-// index that is 0, malformed or out of range, a face or line of fewer than 2 vertices, a face
-// that uses a vertex twice, and a file with no vertices or with no faces and no lines.
+// is to blame, for: a missing or unreadable file, or one that is not a regular file or is larger
+// than obj_file.max_bytes (io/input_file_limits.h); a coordinate that is not a finite number or
+// underflows (1e-400); an index that is 0, malformed or out of range; a face or line of fewer
+// than 2 vertices; a face of more than max_face_corners corners; faces and lines that give more
+// than max_face_springs springs in all (n(n-1)/2 a face, counted before shared pairs merge); a
+// face that uses a vertex twice; and a file with no vertices or with no faces and no lines.
 ObjMesh read_obj(const std::string& path);
 
 }  // namespace wobble

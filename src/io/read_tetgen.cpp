@@ -7,10 +7,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
+#include "io/input_file_limits.h"
+#include "io/number_word.h"
+#include "io/read_text_file.h"
 #include "sim/input_error.h"
 #include "sim/tet_mesh.h"
 
@@ -23,8 +26,9 @@ bool ends_with(const std::string& text, const std::string& ending) {
          text.compare(text.size() - ending.size(), ending.size(), ending) == 0;
 }
 
-// The lines of a TetGen file that hold anything once comments are dropped, split into words.
-// Unlike MEDIT, TetGen is line-based: a row is one line, so a short row is an error on its line.
+// The lines of a TetGen file that hold anything once comments are dropped, split into words as
+// they are asked for. Unlike MEDIT, TetGen is line-based: a row is one line, so a short row is an
+// error on its line.
 class TetgenFile {
  public:
   struct Line {
@@ -32,27 +36,33 @@ class TetgenFile {
     std::vector<std::string> words;
   };
 
-  TetgenFile(std::string path, const char* role) : path_(std::move(path)) {
-    std::ifstream file(path_);
-    if (!file) {
-      throw InputError(path_ + ": cannot open (" + std::strerror(errno) + "); expected " + role);
+  TetgenFile(std::string path, const FileKind& kind)
+      : path_(std::move(path)), text_(read_text_file(path_, kind)) {
+    const std::string_view text(text_);
+    int number = 0;
+    for (std::size_t start = 0; start < text.size();) {
+      const std::size_t newline = text.find('\n', start);
+      const std::size_t end = newline == std::string_view::npos ? text.size() : newline;
+      const std::string_view line = text.substr(start, end - start);
+      const std::string_view content = line.substr(0, line.find('#'));
+      ++number;
+      if (content.find_first_not_of(" \t\r\v\f") != std::string_view::npos)
+        lines_.push_back({number, start, content.size()});
+      start = end + 1;
     }
-    std::string text;
-    for (int number = 1; std::getline(file, text); ++number) {
-      last_line_ = number;
-      std::istringstream words(text.substr(0, text.find('#')));
-      Line line{number, {}};
-      for (std::string word; words >> word;)
-        line.words.push_back(word);
-      if (!line.words.empty()) lines_.push_back(std::move(line));
-    }
+    last_line_ = number;
   }
 
   // The next line with words on it; `what` names it for the error if the file has ended.
-  const Line& next(const std::string& what) {
+  Line next(const std::string& what) {
     if (next_ == lines_.size())
       fail(std::max(last_line_, 1), "expected " + what + ", but the file ends");
-    return lines_[next_++];
+    const Span& span = lines_[next_++];
+    Line line{span.number, {}};
+    std::istringstream words(text_.substr(span.start, span.size));
+    for (std::string word; words >> word;)
+      line.words.push_back(word);
+    return line;
   }
 
   // How many lines with words on them are left.
@@ -82,23 +92,30 @@ class TetgenFile {
 
   double number(const Line& line, std::size_t field, const std::string& what) const {
     const std::string& word = line.words[field];
-    char* end = nullptr;
-    const double value = std::strtod(word.c_str(), &end);
-    if (*end != '\0' || end == word.c_str() || !std::isfinite(value))
+    double value = 0.0;
+    const NumberWord reading = read_number_word(word, value);
+    if (reading == NumberWord::underflow) fail(line.number, what + ": " + underflow_message(word));
+    if (reading != NumberWord::finite)
       fail(line.number, "expected " + what + " (a finite number), got '" + word + "'");
     return value;
   }
 
  private:
+  // Where a line with words on it lies in the text, comment excluded.
+  struct Span {
+    int number;
+    std::size_t start, size;
+  };
   std::string path_;
-  std::vector<Line> lines_;
+  std::string text_;
+  std::vector<Span> lines_;
   std::size_t next_ = 0;
   int last_line_ = 0;
 };
 
 }  // namespace
 
-TetMeshFile read_tetgen(const std::string& path) {
+std::string tetgen_base(const std::string& path) {
   std::string base = path;
   for (const char* ending : {".node", ".ele"}) {
     if (ends_with(base, ending)) {
@@ -106,10 +123,15 @@ TetMeshFile read_tetgen(const std::string& path) {
       break;
     }
   }
+  return base;
+}
+
+TetMeshFile read_tetgen(const std::string& path) {
+  const std::string base = tetgen_base(path);
   TetMeshFile mesh;
 
-  TetgenFile node(base + ".node", "a TetGen .node file");
-  const TetgenFile::Line& node_header = node.next("the header '#points dimension ...'");
+  TetgenFile node(base + ".node", tetgen_node_file);
+  const TetgenFile::Line node_header = node.next("the header '#points dimension ...'");
   const long points = node.integer(node_header, 0, "the number of points");
   const long dimension = node.integer(node_header, 1, "the dimension", 3);
   const long point_attributes = node.integer(node_header, 2, "the number of attributes", 0);
@@ -130,7 +152,7 @@ TetMeshFile read_tetgen(const std::string& path) {
   // writes past them; sizing by what is there keeps a corrupt count out of the allocator.
   mesh.V.resize(std::min(points, node.lines_left()), 3);
   for (long i = 0; i < points; ++i) {
-    const TetgenFile::Line& line =
+    const TetgenFile::Line line =
         node.next(std::to_string(points) + " points, found " + std::to_string(i));
     if (line.words.size() < point_width) {
       node.fail(line.number, "expected " + std::to_string(point_width) +
@@ -154,8 +176,8 @@ TetMeshFile read_tetgen(const std::string& path) {
       node.number(line, field, "an attribute or marker");
   }
 
-  TetgenFile ele(base + ".ele", "a TetGen .ele file");
-  const TetgenFile::Line& ele_header = ele.next("the header '#tetrahedra nodes ...'");
+  TetgenFile ele(base + ".ele", tetgen_ele_file);
+  const TetgenFile::Line ele_header = ele.next("the header '#tetrahedra nodes ...'");
   const long tets = ele.integer(ele_header, 0, "the number of tetrahedra");
   const long nodes = ele.integer(ele_header, 1, "the number of nodes per tetrahedron", 4);
   const long tet_attributes = ele.integer(ele_header, 2, "the number of attributes", 0);
@@ -171,7 +193,7 @@ TetMeshFile read_tetgen(const std::string& path) {
   const long last_index = first_index + points - 1;
   mesh.T.resize(std::min(tets, ele.lines_left()), 4);  // as for the points
   for (long t = 0; t < tets; ++t) {
-    const TetgenFile::Line& line =
+    const TetgenFile::Line line =
         ele.next(std::to_string(tets) + " tetrahedra, found " + std::to_string(t));
     if (line.words.size() < tet_width) {
       ele.fail(line.number, "expected " + std::to_string(tet_width) + " numbers (index, " +

@@ -22,9 +22,13 @@ namespace wobble {
 // tetrahedron only the four corners, listed first, are kept. Lines after the declared rows are
 // ignored, as TetGen does; points that no tetrahedron uses are kept.
 //
+// A UTF-8 byte-order mark at the start of either file is skipped.
+//
 // Throws InputError, with a one-line message "FILE: line L: expected ..." naming the .node or
-// .ele file at fault, when a file cannot be read, a header field is out of range, a row is
-// short or holds a malformed or non-finite number, a file ends before its declared rows, a point
+// .ele file at fault, when a file cannot be read, is not a regular file or is larger than
+// tetgen_node_file.max_bytes or tetgen_ele_file.max_bytes (io/input_file_limits.h), a header
+// field is out of range, a row is short or holds a malformed, non-finite or underflowing
+// (1e-400) number, a file ends before its declared rows, a point
 // index breaks the numbering, a tetrahedron names a point that does not exist, there is no point
 // or no tetrahedron, or a tetrahedron is degenerate (a repeated corner or zero volume, its
 // corners coplanar to rounding: |volume| <= 1e-12 × its longest edge³).
@@ -34,6 +38,9 @@ namespace wobble {
 // Outputs:
 //   V  #V by 3 point positions, in .node order, T  #T by 4 tetrahedra, 0-based
 TetMeshFile read_tetgen(const std::string& path);
+
+// The BASE that read_tetgen reads BASE.node and BASE.ele of, for `path`.
+std::string tetgen_base(const std::string& path);
 
 }  // namespace wobble
 

@@ -5,6 +5,7 @@
 
 #include "io/json_fields.h"
 #include "io/load_mesh.h"
+#include "io/png_image.h"
 #include "io/scene_pins.h"
 #include "sim/cloth_grid.h"
 #include "sim/input_error.h"
@@ -95,9 +96,8 @@ Shape jelly_shape(JsonFields& mesh) {
 
 Shape file_shape(const std::string& path, JsonFields& mesh) {
   const std::string file = relative_to(path, *mesh.text("file"));
-  if (!std::filesystem::is_regular_file(file)) {
-    throw InputError(mesh.where("file") + ": no such file '" + file + "'");
-  }
+  const std::string problem = mesh_file_problem(file);
+  if (!problem.empty()) throw InputError(mesh.where("file") + ": " + problem);
   const bool fill = mesh.flag("fill").value_or(false);
   const int resolution = mesh.whole("fill_resolution", 2, 100).value_or(12);
   Shape shape;
@@ -234,9 +234,12 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     scene.look.back_color = appearance.color("back_color");
     if (const std::optional<std::string> texture = appearance.text("texture")) {
       scene.look.texture = relative_to(path, *texture);
-      if (!std::filesystem::is_regular_file(scene.look.texture)) {
-        throw InputError(appearance.where("texture") + ": no such file '" + scene.look.texture +
-                         "'");
+      // Checked now, though only drawing reads it, so that a scene is refused or accepted
+      // whether or not it is drawn.
+      const std::string problem = texture_problem(scene.look.texture);
+      if (!problem.empty()) {
+        throw InputError(appearance.where("texture") + ": '" + scene.look.texture +
+                         "': " + problem);
       }
       if (shape.mesh.uv.rows() != n) {
         scene.notes.push_back(path + ": the mesh has no texture coordinates; texture ignored");

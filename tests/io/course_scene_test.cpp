@@ -156,9 +156,17 @@ TEST_F(CourseScene, RefusesBadKeys) {
                    "entry 2 is 2, a vertex already");
   expect_key_error(R"({"obj": 7, "b": [1], "k": 1})", "obj", "got 7, expected an OBJ mesh path");
   expect_key_error(R"({"obj": "meshes/none.obj", "b": [1], "k": 1})", "obj",
-                   "no such file '" + folder_.file("meshes/none.obj") + "'");
+                   "'" + folder_.file("meshes/none.obj") + "': no such file, expected an OBJ mesh");
   expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "none.png"})", "png",
-                   "no such file '" + folder_.file("none.png") + "', expected a PNG texture");
+                   "'" + folder_.file("none.png") + "': no such file, expected a PNG texture");
+  // What is not a regular file, and a texture that is not an image, are refused when the scene
+  // loads, drawn or not.
+  expect_key_error(R"({"obj": "meshes", "b": [1], "k": 1})", "obj",
+                   "'" + folder_.file("meshes") + "': is a folder, expected an OBJ mesh");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "meshes"})", "png",
+                   "is a folder, expected a PNG texture");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "meshes/sheet.obj"})", "png",
+                   "sheet.obj': is not a readable image");
 }
 
 TEST_F(CourseScene, MalformedJsonNamesItsLine) {

@@ -1,10 +1,12 @@
 #include "io/png_image.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
 
 #include "io/atomic_file.h"
+#include "io/input_file_limits.h"
 #include "sim/input_error.h"
 #include "temporary_folder.h"
 
@@ -70,6 +72,63 @@ TEST(PngImage, WritingIntoAMissingFolderFailsCleanly) {
   wobble::testing::TemporaryFolder folder;
   EXPECT_THROW(wobble::write_png(folder.file("no/such/a.png"), gradient(2, 2)),
                wobble::OutputError);
+}
+
+// The signature and header chunk of a PNG, which is all a header check reads.
+std::string png_header(unsigned width, unsigned height) {
+  std::string bytes = "\x89PNG\r\n\x1a\n";
+  const auto put32 = [&bytes](unsigned value) {
+    for (int shift = 24; shift >= 0; shift -= 8)
+      bytes.push_back(static_cast<char>((value >> shift) & 0xff));
+  };
+  put32(13);
+  bytes += "IHDR";
+  put32(width);
+  put32(height);
+  bytes += std::string("\x08\x06\x00\x00\x00", 5);
+  put32(0);
+  return bytes;
+}
+
+TEST(PngImage, TextureProblemLooksAtTheHeaderOnly) {
+  wobble::testing::TemporaryFolder folder;
+  wobble::RgbaImage image;
+  image.width = wobble::max_texture_side;
+  image.height = 2;
+  image.pixels.assign(4 * image.width * image.height, 128);
+  wobble::write_png(folder.file("wide.png"), image);
+  EXPECT_EQ(wobble::texture_problem(folder.file("wide.png")), "");
+
+  // A header that promises 16384 x 16384 pixels (1 GiB as RGBA), with no pixels behind it.
+  std::ofstream(folder.file("huge.png"), std::ios::binary) << png_header(16384, 16384);
+  EXPECT_EQ(wobble::texture_problem(folder.file("huge.png")),
+            "is 16384x16384 pixels, above Wobble's limit of " +
+                std::to_string(wobble::max_texture_side) + " pixels a side");
+  std::ofstream(folder.file("tall.png"), std::ios::binary)
+      << png_header(1, wobble::max_texture_side + 1);
+  EXPECT_NE(wobble::texture_problem(folder.file("tall.png")), "");
+
+  std::ofstream(folder.file("text.png")) << "not an image";
+  EXPECT_EQ(wobble::texture_problem(folder.file("text.png")).rfind("is not a readable image", 0),
+            0u);
+  EXPECT_EQ(wobble::texture_problem(folder.file("none.png")),
+            "no such file, expected a PNG texture");
+  ASSERT_EQ(mkfifo(folder.file("pipe.png").c_str(), 0600), 0);
+  EXPECT_EQ(wobble::texture_problem(folder.file("pipe.png")),
+            "is a FIFO (named pipe), not a regular file, expected a PNG texture");
+}
+
+TEST(PngImage, ReadPngRefusesAnImageAboveItsLimitBeforeDecoding) {
+  wobble::testing::TemporaryFolder folder;
+  std::ofstream(folder.file("huge.png"), std::ios::binary) << png_header(16384, 16384);
+  try {
+    wobble::read_png(folder.file("huge.png"), wobble::max_texture_side);
+    ADD_FAILURE() << "decoded a 16384 x 16384 header";
+  } catch (const wobble::InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              folder.file("huge.png") + ": is 16384x16384 pixels, above Wobble's limit of " +
+                  std::to_string(wobble::max_texture_side) + " pixels a side");
+  }
 }
 
 }  // namespace

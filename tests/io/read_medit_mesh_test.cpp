@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -136,7 +137,51 @@ TEST(ReadMeditMesh, MissingFileIsAnInputErrorNamingIt) {
     wobble::read_medit_mesh(path);
     ADD_FAILURE() << "read a missing file";
   } catch (const wobble::InputError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind(path + ": cannot open", 0), 0u) << error.what();
+    EXPECT_EQ(
+        std::string(error.what()).rfind(path + ": no such file, expected a MEDIT .mesh file", 0),
+        0u)
+        << error.what();
+  }
+}
+
+TEST(ReadMeditMesh, ByteOrderMarkBeforeTheFirstKeywordIsSkipped) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string path =
+      write_file(folder, "bom.mesh",
+                 "\xEF\xBB\xBFMeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                 "0 0 0 1\n2 0 0 1\n0 1 0 1\n0 0 1 1\nTetrahedra\n1\n1 2 3 4 1\nEnd\n");
+  const wobble::TetMeshFile mesh = wobble::read_medit_mesh(path);
+  ASSERT_EQ(mesh.V.rows(), 4);
+  EXPECT_EQ(mesh.V.row(1), Eigen::RowVector3d(2, 0, 0));
+  ASSERT_EQ(mesh.T.rows(), 1);
+  EXPECT_EQ(mesh.T.row(0), Eigen::RowVector4i(0, 1, 2, 3));
+}
+
+TEST(ReadMeditMesh, UnderflowIsReportedAsSuchWithItsLine) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string path = write_file(folder, "tiny.mesh",
+                                      "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
+                                      "0 0 0 1\n1 0 0 1\n0 1e-400 0 1\n0 0 1 1\n");
+  try {
+    wobble::read_medit_mesh(path);
+    ADD_FAILURE() << "read 1e-400";
+  } catch (const wobble::InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(path + ": line 7: ", 0), 0u) << error.what();
+    EXPECT_NE(std::string(error.what()).find("'1e-400' underflows"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(ReadMeditMesh, DeviceIsRefusedWithoutReadingIt) {
+  wobble::testing::TemporaryFolder folder;
+  std::filesystem::create_symlink("/dev/zero", folder.file("zero.mesh"));
+  try {
+    wobble::read_medit_mesh(folder.file("zero.mesh"));
+    ADD_FAILURE() << "read /dev/zero";
+  } catch (const wobble::InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              folder.file("zero.mesh") +
+                  ": is a character device, not a regular file, expected a MEDIT .mesh file");
   }
 }
 

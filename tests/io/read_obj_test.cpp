@@ -1,10 +1,14 @@
 #include "io/read_obj.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <fstream>
+#include <utility>
 
+#include "io/input_file_limits.h"
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 #include "temporary_folder.h"
 
 namespace {
@@ -156,6 +160,66 @@ TEST_F(ReadObj, EmptyMeshesAreRefused) {
   EXPECT_EQ(error("# nothing\nf\n"), path + ": line 2: `f` lists 0 vertices, expected at least 2");
   EXPECT_EQ(error("v 0 0 0\nv 1 0 0\n"),
             path + ": no faces or lines, expected `f` or `l` lines joining the vertices");
+}
+
+TEST_F(ReadObj, ByteOrderMarkBeforeTheFirstVertexKeepsThatVertexAndEveryIndex) {
+  // Before, the marked first line was not read as a `v`, so the mesh lost vertex 1 and every
+  // index pointed one vertex further on.
+  const wobble::ObjMesh mesh = read("\xEF\xBB\xBF" + std::string(square) + "f 1 2 3\nf 1 3 4\n");
+  ASSERT_EQ(mesh.V.rows(), 4);
+  EXPECT_EQ(mesh.V.row(0), Eigen::RowVector3d(0, 0, 0));
+  EXPECT_EQ(mesh.V.row(3), Eigen::RowVector3d(0, 1, 0));
+  EXPECT_EQ(mesh.faces, (Faces{{0, 1, 2}, {0, 2, 3}}));
+}
+
+TEST_F(ReadObj, UnderflowIsReportedAsSuch) {
+  expect_error(std::string(square) + "v 1e-400 0 0\nf 1 2 3\n", "line 5",
+               "coordinate '1e-400' underflows");
+  expect_error("v 0 0 0\nv -2e-320 0 0\nv 0 1 0\nf 1 2 3\n", "line 2", "'-2e-320' underflows");
+  // The smallest normal double, and 0 written with an exponent, are numbers.
+  EXPECT_EQ(read("v 2.2250738585072014e-308 0 0e-400\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").V(0, 0),
+            2.2250738585072014e-308);
+}
+
+TEST_F(ReadObj, FacesWithTooManyCornersOrSpringsAreRefusedAtTheirLine) {
+  const auto polygon = [](long corners) {
+    std::string obj, face = "f";
+    for (long c = 1; c <= corners; ++c) {
+      obj += "v " + std::to_string(c) + " " + std::to_string(c * c) + " 0\n";
+      face += " " + std::to_string(c);
+    }
+    return std::make_pair(obj, face + "\n");
+  };
+  const auto [largest_vertices, largest_face] = polygon(wobble::max_face_corners);
+  const wobble::ObjMesh largest = read(largest_vertices + largest_face);
+  EXPECT_EQ(largest.faces[0].size(), static_cast<std::size_t>(wobble::max_face_corners));
+
+  const auto [vertices, face] = polygon(wobble::max_face_corners + 1);
+  expect_error(vertices + face, "line " + std::to_string(wobble::max_face_corners + 2),
+               std::to_string(wobble::max_face_corners + 1) + " corners, above Wobble's limit of " +
+                   std::to_string(wobble::max_face_corners));
+
+  // Each allowed on its own, too many together.
+  const long springs_per_face = wobble::max_face_corners * (wobble::max_face_corners - 1) / 2;
+  const long faces = wobble::max_face_springs / springs_per_face + 1;
+  std::string many = largest_vertices;
+  for (long f = 0; f < faces; ++f)
+    many += largest_face;
+  expect_error(
+      many, "line " + std::to_string(wobble::max_face_corners + faces),
+      "above Wobble's limit of " + wobble::with_thousands_separators(wobble::max_face_springs));
+}
+
+TEST_F(ReadObj, WhatIsNotARegularFileIsRefusedByName) {
+  const std::string pipe = folder_.file("pipe.obj");
+  ASSERT_EQ(mkfifo(pipe.c_str(), 0600), 0);
+  try {
+    wobble::read_obj(pipe);
+    ADD_FAILURE() << "read a FIFO";
+  } catch (const wobble::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              pipe + ": is a FIFO (named pipe), not a regular file, expected an OBJ mesh");
+  }
 }
 
 }  // namespace

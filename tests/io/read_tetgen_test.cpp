@@ -1,8 +1,10 @@
 #include "io/read_tetgen.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <Eigen/Geometry>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -149,9 +151,57 @@ TEST(ReadTetgen, MissingEleIsNamed) {
     wobble::read_tetgen(folder.file("lonely.node"));
     ADD_FAILURE() << "read a .node without its .ele";
   } catch (const wobble::InputError& error) {
-    EXPECT_EQ(std::string(error.what()).rfind(folder.file("lonely.ele") + ": cannot open", 0), 0u)
+    EXPECT_EQ(std::string(error.what()).rfind(folder.file("lonely.ele") + ": no such file", 0), 0u)
         << error.what();
   }
+}
+
+TEST(ReadTetgen, ByteOrderMarksAreSkippedInBothFiles) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string base = write_pair(folder,
+                                      "\xEF\xBB\xBF"
+                                      "4 3 0 0\n1 0 0 0\n2 3 0 0\n3 0 1 0\n4 0 0 1\n",
+                                      "\xEF\xBB\xBF"
+                                      "1 4 0\n1 4 3 2 1\n");
+  const wobble::TetMeshFile mesh = wobble::read_tetgen(base + ".ele");
+  ASSERT_EQ(mesh.V.rows(), 4);
+  EXPECT_EQ(mesh.V.row(1), Eigen::RowVector3d(3, 0, 0));
+  ASSERT_EQ(mesh.T.rows(), 1);
+  EXPECT_EQ(mesh.T.row(0), Eigen::RowVector4i(3, 2, 1, 0));
+}
+
+TEST(ReadTetgen, UnderflowIsReportedAsSuchWithItsLine) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string base = write_pair(folder, "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1e-400\n",
+                                      "1 4 0\n1 1 2 3 4\n");
+  try {
+    wobble::read_tetgen(base);
+    ADD_FAILURE() << "read 1e-400";
+  } catch (const wobble::InputError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind(base + ".node: line 5: ", 0), 0u) << error.what();
+    EXPECT_NE(std::string(error.what()).find("'1e-400' underflows"), std::string::npos);
+  }
+}
+
+TEST(ReadTetgen, NodeBesideANamedEleMustBeARegularFile) {
+  wobble::testing::TemporaryFolder folder;
+  std::ofstream(folder.file("pipe.ele")) << "1 4 0\n1 1 2 3 4\n";
+  ASSERT_EQ(mkfifo(folder.file("pipe.node").c_str(), 0600), 0);
+  std::ofstream(folder.file("dir.ele")) << "1 4 0\n1 1 2 3 4\n";
+  std::filesystem::create_directory(folder.file("dir.node"));
+  const auto message = [](const std::string& path) {
+    try {
+      wobble::read_tetgen(path);
+    } catch (const wobble::InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message(folder.file("pipe.ele")),
+            folder.file("pipe.node") +
+                ": is a FIFO (named pipe), not a regular file, expected a TetGen .node file");
+  EXPECT_EQ(message(folder.file("dir.ele")),
+            folder.file("dir.node") + ": is a folder, expected a TetGen .node file");
 }
 
 }  // namespace
