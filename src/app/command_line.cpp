@@ -11,6 +11,7 @@
 #include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
 #include "sim/simulation.h"
+#include "sim/value_limits.h"
 
 #ifndef WOBBLE_VERSION
 #define WOBBLE_VERSION "unknown"
@@ -26,15 +27,16 @@ std::string number_text(double value) {
   return text.str();
 }
 
-double positive_number(const char* option, const std::string& text, double limit) {
+// A value of `range` (sim/value_limits.h: the same limits as in scene files).
+double number_in(const char* option, const std::string& text, const ValueRange& range) {
   const std::optional<double> value = parse_number<double>(text);
   if (!value || !std::isfinite(*value) || !(*value > 0.0)) {
     throw InputError(std::string(option) + ": expected a positive finite number, got '" + text +
                      "'");
   }
-  if (*value > limit) {
-    throw InputError(std::string(option) + ": " + text + " is above the limit of " +
-                     number_text(limit));
+  if (!range.contains(*value)) {
+    throw InputError(std::string(option) + ": expected " + expected_in(range) + ", got '" + text +
+                     "'");
   }
   return *value;
 }
@@ -141,8 +143,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     command.iterations =
         static_cast<int>(whole_number("--iterations", *iterations, Simulation::max_iterations));
   }
-  if (k) command.k = positive_number("--k", *k, CommandLine::max_k);
-  if (dt) command.dt = positive_number("--dt", *dt, CommandLine::max_dt);
+  if (k) command.k = number_in("--k", *k, limits::stiffness);
+  if (dt) command.dt = number_in("--dt", *dt, limits::time_step);
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
   if (width)
     command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));

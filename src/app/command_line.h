@@ -36,8 +36,6 @@ struct CommandLine {
 
   static constexpr long default_headless_frames = 120;
   static constexpr long max_frames = 10'000'000;
-  static constexpr double max_k = 1e8;  // well below the pin weight w = 1e10, so pins still hold
-  static constexpr double max_dt = 1.0;
   static constexpr long max_image_side = 16384;
   static constexpr double max_camera_pitch = 89.0;
 };

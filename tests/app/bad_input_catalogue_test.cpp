@@ -177,12 +177,12 @@ std::vector<BadInput> catalogue() {
        "cloth --drag 5000:0,0,1@10",
        {"--drag", "5000", "1600 vertices"}},
       // Sizes beyond sane limits: refused with the limit, before anything is allocated.
-      {"iterations_above_limit", {}, "cloth --iterations 20000", {"--iterations", "10000"}},
+      {"iterations_above_limit", {}, "cloth --iterations 20000", {"--iterations", "5000"}},
       {"scene_iterations_above_limit",
        {{"it.json",
          "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"iterations\": 20000}}"}},
        "{dir}/it.json",
-       {"it.json", "simulation.iterations", "10000"}},
+       {"it.json", "simulation.iterations", "5000"}},
       {"width_above_limit", {}, "cloth --width 100000", {"--width", "16384"}},
       {"frames_above_limit", {}, "cloth --frames 20000000", {"--frames", "10000000"}},
       {"medit_vertex_count_above_limit",
@@ -192,7 +192,55 @@ std::vector<BadInput> catalogue() {
       {"cloth_resolution_above_limit",
        {{"big.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 5000}}"}},
        "{dir}/big.json",
-       {"big.json", "mesh.resolution", "1000"}},
+       {"big.json", "mesh.resolution", "256"}},
+  };
+}
+
+// Values, outputs and one-line errors (issue 13, section 2): one set of limits for every way a
+// value comes in, generator and image sizes that run, output paths checked before any work,
+// and messages that stay one line whatever a file holds.
+std::vector<BadInput> value_and_output_catalogue() {
+  const std::pair<std::string, std::string> tri{"tri.obj", triangle_obj};
+  const auto scene = [](const std::string& keys) {
+    return "{\"mesh\": {\"generator\": \"cloth\"}, " + keys + "}";
+  };
+  return {
+      // Scene-file values keep to the command line's limits, and masses name their keys.
+      {"scene_k_above_limit",
+       {{"k.json", scene("\"material\": {\"k\": 1e308}")}},
+       "{dir}/k.json",
+       {"k.json", "material.k", "1e-6 to 1e8 N/m"}},
+      {"course_k_above_limit",
+       {tri, {"k.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 1e308}"}},
+       "{dir}/k.json",
+       {"k.json", "`k`", "1e-6 to 1e8 N/m"}},
+      {"scene_dt_above_limit",
+       {{"dt.json", scene("\"simulation\": {\"dt\": 1e300}")}},
+       "{dir}/dt.json",
+       {"dt.json", "simulation.dt", "1e-9 to 1 s"}},
+      {"dt_below_limit", {}, "cloth --dt 1e-300", {"--dt", "1e-9 to 1 s", "'1e-300'"}},
+      {"scene_gravity_above_limit",
+       {{"g.json", scene("\"simulation\": {\"gravity\": [0, -1e300, 0]}")}},
+       "{dir}/g.json",
+       {"g.json", "simulation.gravity", "-1000 to 1000"}},
+      {"scene_velocity_above_limit",
+       {{"v.json", scene("\"initial_velocity\": [1e300, 0, 0]")}},
+       "{dir}/v.json",
+       {"v.json", "initial_velocity", "-1000 to 1000 m/s"}},
+      {"scene_mass_underflows",
+       {{"m.json",
+         "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 200}, \"material\": "
+         "{\"mass\": 1e-6}}"}},
+       "{dir}/m.json",
+       {"m.json", "material.mass", "vertex masses from", "1e-9 to 1e6 kg"}},
+      {"scene_scale_underflows",
+       {tri, {"s.json", "{\"mesh\": {\"file\": \"tri.obj\", \"scale\": 1e-5}}"}},
+       "{dir}/s.json",
+       {"s.json", "mesh.scale", "vertex masses from", "1e-9 to 1e6 kg"}},
+      {"course_m_below_limit",
+       {tri, {"m.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 1e-300}"}},
+       "{dir}/m.json",
+       {"m.json", "`m`", "1e-9 to 1e6 kg"}},
   };
 }
 
@@ -234,6 +282,11 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BadInput, Catalogue, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+INSTANTIATE_TEST_SUITE_P(BadValueOrOutput, Catalogue,
+                         ::testing::ValuesIn(value_and_output_catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });
