@@ -10,6 +10,7 @@
 #include "scene_catalog.h"
 #include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 #include "sim/simulation.h"
 #include "sim/value_limits.h"
 
@@ -151,6 +152,14 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (height) {
     command.height =
         static_cast<int>(whole_number("--height", *height, CommandLine::max_image_side));
+  }
+  if (static_cast<long>(command.width) * command.height > CommandLine::max_image_pixels) {
+    throw InputError("--width, --height: " + std::to_string(command.width) + "x" +
+                     std::to_string(command.height) + " is " +
+                     with_thousands_separators(static_cast<long>(command.width) * command.height) +
+                     " pixels, expected at most " +
+                     with_thousands_separators(CommandLine::max_image_pixels) +
+                     " (4096x2160 or the same area)");
   }
   if (obj_sequence) {
     command.export_obj_sequence = path_value("--export-obj-sequence", *obj_sequence, "folder path");

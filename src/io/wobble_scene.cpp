@@ -105,7 +105,7 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   const bool fill = mesh.flag("fill").value_or(false);
   const int resolution = mesh.whole("fill_resolution", 2, limits::max_fill_resolution).value_or(12);
   Shape shape;
-  shape.mesh = load_mesh(file, fill, resolution);
+  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"));
   const double scale = mesh.number_in("scale", limits::scale).value_or(1.0);
   const Eigen::Vector3d offset =
       mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());

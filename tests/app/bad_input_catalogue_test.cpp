@@ -183,7 +183,7 @@ std::vector<BadInput> catalogue() {
          "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"iterations\": 20000}}"}},
        "{dir}/it.json",
        {"it.json", "simulation.iterations", "5000"}},
-      {"width_above_limit", {}, "cloth --width 100000", {"--width", "16384"}},
+      {"width_above_limit", {}, "cloth --width 100000", {"--width", "4096"}},
       {"frames_above_limit", {}, "cloth --frames 20000000", {"--frames", "10000000"}},
       {"medit_vertex_count_above_limit",
        {{"huge.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n20000000\n0 0 0 1\nEnd\n"}},
@@ -204,7 +204,38 @@ std::vector<BadInput> value_and_output_catalogue() {
   const auto scene = [](const std::string& keys) {
     return "{\"mesh\": {\"generator\": \"cloth\"}, " + keys + "}";
   };
+  // A cube's 8 corners and 1,800 faces on them: filled at resolution 24 that is 24³ cells times
+  // 1,800 triangles, above the fill limit, refused before the surface is even checked.
+  std::string many_faces =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n";
+  for (int face = 0; face < 1800; ++face)
+    many_faces += "f 1 2 8\n";
   return {
+      // Generators, fills and images no larger than what runs in a few seconds.
+      {"jelly_resolution_above_limit",
+       {{"j.json", "{\"mesh\": {\"generator\": \"jelly\", \"resolution\": 64}}"}},
+       "{dir}/j.json",
+       {"j.json", "mesh.resolution", "1 to 24"}},
+      {"cloth_resolution_above_limit_257",
+       {{"c.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 257}}"}},
+       "{dir}/c.json",
+       {"c.json", "mesh.resolution", "2 to 256"}},
+      {"fill_resolution_above_limit",
+       {tri,
+        {"f.json", "{\"mesh\": {\"file\": \"tri.obj\", \"fill\": true, \"fill_resolution\": 40}}"}},
+       "{dir}/f.json",
+       {"f.json", "mesh.fill_resolution", "2 to 24"}},
+      {"fill_work_above_limit",
+       {{"many.obj", many_faces},
+        {"f.json",
+         "{\"mesh\": {\"file\": \"many.obj\", \"fill\": true, \"fill_resolution\": 24}}"}},
+       "{dir}/f.json",
+       {"f.json", "mesh.fill_resolution", "1,800 triangles", "above the limit of 2e7"}},
+      {"image_side_above_limit", {}, "cloth --height 8192", {"--height", "1 to 4096"}},
+      {"image_area_above_limit",
+       {},
+       "cloth --width 4096 --height 4096",
+       {"--width, --height", "16,777,216 pixels", "8,847,360"}},
       // Scene-file values keep to the command line's limits, and masses name their keys.
       {"scene_k_above_limit",
        {{"k.json", scene("\"material\": {\"k\": 1e308}")}},
