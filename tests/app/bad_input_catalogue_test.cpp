@@ -4,8 +4,12 @@
 // file written, not even a partial or temporary one.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -27,6 +31,11 @@ struct BadInput {
   std::string arguments;
   // Each must appear in the error line.
   std::vector<std::string> expected;
+  // What else the folder needs before the run, if anything (a FIFO, a symlink loop).
+  std::function<void(const std::filesystem::path&)> prepare = nullptr;
+  // Output options in place of the usual --export-obj and --screenshot into the folder ("{dir}"
+  // as above), for cases about the outputs themselves.
+  std::string outputs = "";
 };
 
 std::string bytes_0_to_255() {
@@ -210,7 +219,87 @@ std::vector<BadInput> value_and_output_catalogue() {
       "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n";
   for (int face = 0; face < 1800; ++face)
     many_faces += "f 1 2 8\n";
+  const auto fifo = [](const char* name) {
+    return [name](const std::filesystem::path& folder) {
+      ASSERT_EQ(mkfifo((folder / name).c_str(), 0600), 0);
+    };
+  };
+  const std::string long_name(250, 'n');
   return {
+      // Output paths: refused before any work when they exist and are not regular files (or
+      // folders), when the filesystem will not take them, and nothing is created before all
+      // input is accepted.
+      {"export_obj_onto_a_fifo",
+       {},
+       "cloth",
+       {"--export-obj", "pipe.obj", "not a regular file"},
+       fifo("pipe.obj"),
+       "--export-obj '{dir}/pipe.obj'"},
+      {"screenshot_onto_a_fifo",
+       {},
+       "cloth",
+       {"--screenshot", "pipe.png", "not a regular file"},
+       fifo("pipe.png"),
+       "--screenshot '{dir}/pipe.png'"},
+      {"export_obj_name_too_long",
+       {},
+       "cloth",
+       {"--export-obj", "File name too long"},
+       nullptr,
+       "--export-obj '{dir}/" + long_name + ".obj'"},
+      {"export_obj_symlink_loop",
+       {},
+       "cloth",
+       {"--export-obj", "cannot use", "Too many levels of symbolic links"},
+       [](const std::filesystem::path& folder) {
+         std::filesystem::create_symlink("loop.obj", folder / "loop.obj");
+       },
+       "--export-obj '{dir}/loop.obj'"},
+      // /proc takes no new files, not even from root.
+      {"export_obj_into_a_folder_that_takes_no_files",
+       {},
+       "cloth",
+       {"--export-obj", "/proc/wobble.obj", "cannot write a file beside"},
+       nullptr,
+       "--export-obj /proc/wobble.obj"},
+      {"record_folder_name_too_long",
+       {},
+       "cloth",
+       {"--record", "cannot use the folder", "File name too long"},
+       nullptr,
+       "--record '{dir}/" + long_name + long_name + "'"},
+      {"record_frame_onto_a_fifo",
+       {{"frames/keep", ""}},
+       "cloth",
+       {"--record", "frame_00001.png", "not a regular file"},
+       fifo("frames/frame_00001.png"),
+       "--record '{dir}/frames'"},
+      {"bad_scene_leaves_no_record_or_sequence_folder",
+       {{"k.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"k\": -1}}"}},
+       "{dir}/k.json",
+       {"k.json", "material.k"},
+       nullptr,
+       "--record '{dir}/frames' --export-obj-sequence '{dir}/objs'"},
+      {"bad_drag_leaves_no_sequence_folder",
+       {},
+       "cloth --drag 99999:0,0,1@1",
+       {"--drag", "99999"},
+       nullptr,
+       "--export-obj-sequence '{dir}/objs'"},
+      // One line means one line: notes wait for the scene to load, and nothing from a file
+      // prints raw.
+      {"note_does_not_precede_the_refusal",
+       {{"note.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"unknown\\nkey\": 1}"}},
+       "{dir}/note.json --drag 99999:0,0,1@1",
+       {"--drag", "99999"}},
+      {"nul_byte_in_a_coordinate",
+       {{"nul.obj", std::string("v 0 0 0\nv 1 0\0 0\nv 0 1 0\nf 1 2 3\n", 33)}},
+       "{dir}/nul.obj",
+       {"nul.obj", "line 2", "\\x00", "finite number"}},
+      {"control_characters_in_a_path",
+       {},
+       "'nowhere\n\x1b[31m.json'",
+       {"nowhere\\n\\x1b[31m.json", "no such scene file"}},
       // Generators, fills and images no larger than what runs in a few seconds.
       {"jelly_resolution_above_limit",
        {{"j.json", "{\"mesh\": {\"generator\": \"jelly\", \"resolution\": 64}}"}},
@@ -288,16 +377,31 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
     std::filesystem::create_directories(folder.path() / std::filesystem::path(name).parent_path());
     std::ofstream(folder.file(name), std::ios::binary) << content;
   }
-  const std::vector<std::string> before = folder.entries();
+  if (input.prepare) input.prepare(folder.path());
+  // Each entry with its type, so that a FIFO replaced by a file of its name counts as written.
+  const auto entries = [&folder] {
+    std::vector<std::string> typed;
+    for (const std::string& name : folder.entries()) {
+      const auto type = std::filesystem::symlink_status(folder.path() / name).type();
+      typed.push_back(name + " (type " + std::to_string(static_cast<int>(type)) + ")");
+    }
+    return typed;
+  };
+  const std::vector<std::string> before = entries();
 
-  std::string arguments = input.arguments;
   const std::string dir = "{dir}";
-  for (std::size_t at = arguments.find(dir); at != std::string::npos; at = arguments.find(dir))
-    arguments.replace(at, dir.size(), folder.path().string());
+  const auto in_folder = [&](std::string text) {
+    for (std::size_t at = text.find(dir); at != std::string::npos; at = text.find(dir))
+      text.replace(at, dir.size(), folder.path().string());
+    return text;
+  };
+  std::string arguments = in_folder(input.arguments);
   if (arguments.find("--frames") == std::string::npos) arguments += " --frames 3";
-  const Result result =
-      run_wobble(arguments + " --headless --export-obj '" + folder.file("out.obj") +
-                 "' --screenshot '" + folder.file("out.png") + "'");
+  const std::string outputs = input.outputs.empty()
+                                  ? "--export-obj '" + folder.file("out.obj") + "' --screenshot '" +
+                                        folder.file("out.png") + "'"
+                                  : in_folder(input.outputs);
+  const Result result = run_wobble(arguments + " --headless " + outputs);
 
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
@@ -305,7 +409,7 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   for (const std::string& expected : input.expected)
     EXPECT_NE(result.err.find(expected), std::string::npos) << expected << " in " << result.err;
   EXPECT_EQ(result.out, "");
-  std::vector<std::string> after = folder.entries();
+  std::vector<std::string> after = entries();
   std::sort(after.begin(), after.end());
   std::vector<std::string> expected_entries = before;
   std::sort(expected_entries.begin(), expected_entries.end());
