@@ -138,6 +138,11 @@ void make_output_folder(const std::string& folder) {
 }
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
+  // Never rename over a device or a FIFO that appeared after the checks (a later frame's name).
+  struct stat info {};
+  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    throw OutputError(path + ": exists and is not a regular file; not replaced");
+  }
   std::vector<char> temporary;
   const int fd = create_temporary(path, temporary);
   if (fd < 0) {

@@ -44,6 +44,10 @@ TEST(AtomicFile, FailureThrowsAndLeavesNothingBehind) {
   std::filesystem::create_directory(folder.file("taken"));
   EXPECT_THROW(wobble::write_file_atomically(folder.file("taken"), "x"), wobble::OutputError);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"taken"});
+  // A FIFO is not replaced by a regular file.
+  ASSERT_EQ(mkfifo(folder.file("pipe").c_str(), 0600), 0);
+  EXPECT_THROW(wobble::write_file_atomically(folder.file("pipe"), "x"), wobble::OutputError);
+  EXPECT_TRUE(std::filesystem::is_fifo(folder.file("pipe")));
 }
 
 TEST(AtomicFile, CheckOutputPathRefusesMissingFoldersAndFolders) {
