@@ -1,12 +1,13 @@
 // The catalogue of bad input: every case runs the real wobble executable headless, asking for an
 // OBJ export and a screenshot, and must end with exit code 2, one line on stderr that names the
 // file (or option) and the line or key and says what was expected, nothing on stdout, and no
-// file written, not even a partial or temporary one.
+// file written, not even a partial or temporary one, within 2 s and 200 MB.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -401,7 +402,12 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
                                   ? "--export-obj '" + folder.file("out.obj") + "' --screenshot '" +
                                         folder.file("out.png") + "'"
                                   : in_folder(input.outputs);
-  const Result result = run_wobble(arguments + " --headless " + outputs);
+  // Each refusal within 2 s and 200 MB (issue 13): the address space is capped at 200 MiB
+  // (a larger allocation fails, and the exit code is no longer 2) and the time is taken.
+  const auto start = std::chrono::steady_clock::now();
+  const Result result = run_wobble(arguments + " --headless " + outputs, "ulimit -v 204800;");
+  const std::chrono::duration<double> taken = std::chrono::steady_clock::now() - start;
+  EXPECT_LT(taken.count(), 2.0) << "seconds to refuse";
 
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
