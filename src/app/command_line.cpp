@@ -10,7 +10,9 @@
 #include "scene_catalog.h"
 #include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 #include "sim/simulation.h"
+#include "sim/value_limits.h"
 
 #ifndef WOBBLE_VERSION
 #define WOBBLE_VERSION "unknown"
@@ -26,15 +28,16 @@ std::string number_text(double value) {
   return text.str();
 }
 
-double positive_number(const char* option, const std::string& text, double limit) {
+// A value of `range` (sim/value_limits.h: the same limits as in scene files).
+double number_in(const char* option, const std::string& text, const ValueRange& range) {
   const std::optional<double> value = parse_number<double>(text);
   if (!value || !std::isfinite(*value) || !(*value > 0.0)) {
     throw InputError(std::string(option) + ": expected a positive finite number, got '" + text +
                      "'");
   }
-  if (*value > limit) {
-    throw InputError(std::string(option) + ": " + text + " is above the limit of " +
-                     number_text(limit));
+  if (!range.contains(*value)) {
+    throw InputError(std::string(option) + ": expected " + expected_in(range) + ", got '" + text +
+                     "'");
   }
   return *value;
 }
@@ -141,14 +144,22 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     command.iterations =
         static_cast<int>(whole_number("--iterations", *iterations, Simulation::max_iterations));
   }
-  if (k) command.k = positive_number("--k", *k, CommandLine::max_k);
-  if (dt) command.dt = positive_number("--dt", *dt, CommandLine::max_dt);
+  if (k) command.k = number_in("--k", *k, limits::stiffness);
+  if (dt) command.dt = number_in("--dt", *dt, limits::time_step);
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
   if (width)
     command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
   if (height) {
     command.height =
         static_cast<int>(whole_number("--height", *height, CommandLine::max_image_side));
+  }
+  if (static_cast<long>(command.width) * command.height > CommandLine::max_image_pixels) {
+    throw InputError("--width, --height: " + std::to_string(command.width) + "x" +
+                     std::to_string(command.height) + " is " +
+                     with_thousands_separators(static_cast<long>(command.width) * command.height) +
+                     " pixels, expected at most " +
+                     with_thousands_separators(CommandLine::max_image_pixels) +
+                     " (4096x2160 or the same area)");
   }
   if (obj_sequence) {
     command.export_obj_sequence = path_value("--export-obj-sequence", *obj_sequence, "folder path");

@@ -31,7 +31,7 @@ ScriptedDrag parse_drag(const std::string& text, long max_frame) {
     if (comma == std::string::npos) throw refuse("three offsets DX,DY,DZ in metres");
     const std::optional<double> value = parse_number<double>(offset.substr(begin, comma - begin));
     if (!value || !std::isfinite(*value) || std::abs(*value) > ScriptedDrag::max_offset) {
-      throw refuse("offsets DX,DY,DZ that are numbers of at most 1e6 m");
+      throw refuse("offsets DX,DY,DZ " + within_text(limits::coordinate));
     }
     drag.offset(c) = *value;
     begin = comma + 1;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/simulation.h"
+#include "sim/value_limits.h"
 
 namespace wobble {
 
@@ -22,7 +23,7 @@ struct ScriptedDrag {
   std::string text;  // as typed, for messages
 
   static constexpr long default_frames = 30;
-  static constexpr double max_offset = 1e6;  // m, per coordinate
+  static constexpr double max_offset = limits::coordinate.high;  // m, per coordinate
 };
 
 // Parse one --drag value. Throws InputError naming --drag, the value and the expected form.

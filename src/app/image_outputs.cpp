@@ -35,10 +35,10 @@ ImageOutputs::ImageOutputs(std::string screenshot, std::string record_folder,
     if (!ends_with_png(screenshot_)) {
       throw InputError("--screenshot: '" + screenshot_ + "' must end in .png");
     }
-    check_output_path(screenshot_);
+    check_output_path("--screenshot", screenshot_);
   }
   if (!record_folder_.empty()) {
-    prepare_output_folder("--record", record_folder_, frame_file(record_folder_, 1));
+    check_output_folder("--record", record_folder_, frame_file(record_folder_, 1));
   }
 }
 
@@ -50,12 +50,15 @@ std::string ImageOutputs::frame_file(const std::string& folder, long frame, cons
 
 void ImageOutputs::write(long frame, bool last, const RgbaImage& image) {
   if (!record_folder_.empty()) {
+    if (!record_folder_made_) make_output_folder(record_folder_);
+    record_folder_made_ = true;
     write_png(frame_file(record_folder_, frame), image);
     // A line per hundred frames: enough to see a long recording move, few enough for a log.
     if (frame % 100 == 0 || (last && frame >= 100)) {
       progress_ << "wobble: recorded " << frame;
       if (total_frames_) progress_ << " of " << *total_frames_;
-      progress_ << " frames into " << record_folder_ << "\n" << std::flush;
+      progress_ << " frames into " << escape_control_characters(record_folder_) << "\n"
+                << std::flush;
     }
   }
   if (last && !screenshot_.empty()) write_png(screenshot_, image);

@@ -12,8 +12,9 @@ namespace wobble {
 // --screenshot FILE.png and --record DIR, the same in both modes.
 class ImageOutputs {
  public:
-  // Checks the paths before any work is done (InputError): the screenshot must end in .png and
-  // its folder must be writable; the record folder is created if its parent exists.
+  // Checks the paths before any work is done (InputError, see check_output_path): the
+  // screenshot must end in .png and be writable; the record folder must exist or be possible
+  // to make in an existing parent. Nothing is created before the first frame is written.
   // `total_frames` (if known) lets long recordings report progress on `progress`.
   ImageOutputs(std::string screenshot, std::string record_folder, std::optional<long> total_frames,
                std::ostream& progress);
@@ -30,6 +31,7 @@ class ImageOutputs {
 
  private:
   std::string screenshot_, record_folder_;
+  bool record_folder_made_ = false;  // made at the first frame, once all input was accepted
   std::optional<long> total_frames_;
   std::ostream& progress_;
 };

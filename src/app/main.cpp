@@ -10,6 +10,8 @@
 #include "sim/input_error.h"
 
 int main(int argc, char** argv) {
+  // A run ended by SIGTERM or Ctrl+C leaves no half-written *.tmp-XXXXXX file behind.
+  wobble::remove_temporary_file_on_termination();
   try {
     const std::optional<wobble::CommandLine> command =
         wobble::parse_command_line(argc, argv, std::cout);

@@ -8,13 +8,15 @@ namespace wobble {
 
 ObjSequence::ObjSequence(std::string folder) : folder_(std::move(folder)) {
   if (folder_.empty()) return;
-  prepare_output_folder("--export-obj-sequence", folder_,
-                        ImageOutputs::frame_file(folder_, 1, ".obj"));
+  check_output_folder("--export-obj-sequence", folder_,
+                      ImageOutputs::frame_file(folder_, 1, ".obj"));
 }
 
 void ObjSequence::write(long frame, const Eigen::MatrixXd& positions,
                         const SpringNetwork& network) const {
   if (folder_.empty()) return;
+  if (!folder_made_) make_output_folder(folder_);
+  folder_made_ = true;
   write_obj(ImageOutputs::frame_file(folder_, frame, ".obj"), positions, network.F, network.E);
 }
 

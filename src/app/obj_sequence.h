@@ -12,12 +12,14 @@ namespace wobble {
 // other tools.
 class ObjSequence {
  public:
-  // Creates the folder if its parent exists (InputError otherwise). An empty folder: no output.
+  // Checks that the folder exists or can be made in an existing parent (InputError otherwise),
+  // but makes it only when the first frame is written. An empty folder: no output.
   explicit ObjSequence(std::string folder);
   void write(long frame, const Eigen::MatrixXd& positions, const SpringNetwork& network) const;
 
  private:
   std::string folder_;
+  mutable bool folder_made_ = false;  // made at the first frame, once all input was accepted
 };
 
 }  // namespace wobble

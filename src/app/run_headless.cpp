@@ -61,9 +61,10 @@ nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& sce
 int render_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   ImageOutputs outputs(command.screenshot, command.record, frames, progress);
-  if (!command.export_obj.empty()) check_output_path(command.export_obj);
+  if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Viewer viewer(open_scene(command, progress), viewer_settings(command), scene_catalog());
+  Viewer viewer(open_scene(command), viewer_settings(command), scene_catalog());
+  print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
 
   OffscreenOptions options;
   options.width = command.width;
@@ -95,10 +96,10 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
 
 int run_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
   if (command.writes_images()) return render_headless(command, out, progress);
-  if (!command.export_obj.empty()) check_output_path(command.export_obj);
+  if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
   const ObjSequence obj_sequence(command.export_obj_sequence);
 
-  Scene scene = open_scene(command, progress);
+  Scene scene = open_scene(command);
   SimulationParams params = scene.params;
   if (command.k) params.k = *command.k;
   if (command.dt) params.dt = *command.dt;
@@ -106,6 +107,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   if (command.chebyshev) params.chebyshev = true;
   Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
   DragScript drags(command.drags, scene.network.V.rows());
+  print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   std::vector<double> step_ms, local_ms, global_ms;

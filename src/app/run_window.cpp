@@ -45,12 +45,13 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   // Everything that can be refused is checked before a window appears.
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Scene scene = open_scene(command, progress);
+  Scene scene = open_scene(command);
 
   GlfwWindow window(command.width, command.height, "Wobble: " + scene.name);
   const float ui_scale = window.content_scale();
   WindowUi ui(window, ui_scale);
   Viewer viewer(std::move(scene), viewer_settings(command), scene_catalog());
+  print_notes(viewer.scene(), progress);
   viewer.attach_renderer();
 
   RgbaImage image;

@@ -6,6 +6,7 @@
 
 #include "io/load_scene.h"
 #include "sim/builtin_scenes.h"
+#include "sim/input_error.h"
 
 #ifndef WOBBLE_ASSETS_DIR
 #define WOBBLE_ASSETS_DIR ""
@@ -30,11 +31,13 @@ std::string scene_label(const std::string& source) {
   return path.has_extension() ? path.stem().string() : source;
 }
 
-Scene open_scene(const CommandLine& command, std::ostream& notes) {
-  Scene scene = load_scene(command.scene, command.fill);
+Scene open_scene(const CommandLine& command) {
+  return load_scene(command.scene, command.fill);
+}
+
+void print_notes(const Scene& scene, std::ostream& out) {
   for (const std::string& note : scene.notes)
-    notes << "wobble: note: " << note << "\n";
-  return scene;
+    out << "wobble: note: " << escape_control_characters(note) << "\n";
 }
 
 }  // namespace wobble

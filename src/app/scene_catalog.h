@@ -18,9 +18,13 @@ std::vector<std::string> scene_catalog();
 // folder and extension.
 std::string scene_label(const std::string& source);
 
-// Load the scene the command line names, and say on `notes` (stderr) what the loader chose for
-// the user, one "wobble: note: ..." line each.
-Scene open_scene(const CommandLine& command, std::ostream& notes);
+// Load the scene the command line names. Its notes are not said yet: a refusal must be the
+// only line on stderr, so they wait until everything the scene needs has been accepted.
+Scene open_scene(const CommandLine& command);
+
+// Say on `out` (stderr) what the loader chose for the user, one "wobble: note: ..." line each,
+// with control characters escaped (a note may quote a key from the file).
+void print_notes(const Scene& scene, std::ostream& out);
 
 }  // namespace wobble
 

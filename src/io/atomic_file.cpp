@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <vector>
@@ -20,47 +21,137 @@ std::string parent_folder(const std::string& path) {
   return parent.empty() ? std::string(".") : parent.string();
 }
 
-}  // namespace
+// The temporary file being written, for the signal handler: a plain buffer and a flag, since a
+// handler may touch nothing else.
+char pending_temporary[4096 + 64];
+volatile std::sig_atomic_t has_pending_temporary = 0;
 
-void check_output_path(const std::string& path) {
-  if (path.empty()) throw InputError("output path is empty");
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path + ": is a folder, expected a file path");
-  }
-  const std::string folder = parent_folder(path);
-  if (!std::filesystem::is_directory(folder, error)) {
-    throw InputError(path + ": folder '" + folder + "' does not exist");
-  }
-  if (access(folder.c_str(), W_OK) != 0) {
-    throw InputError(path + ": folder '" + folder + "' is not writable");
-  }
+extern "C" void remove_temporary_and_end(int signal_number) {
+  const int saved_errno = errno;
+  if (has_pending_temporary) unlink(pending_temporary);
+  errno = saved_errno;
+  // SA_RESETHAND has put the default action back; the signal is blocked until this returns,
+  // then ends the program as it would have without the handler.
+  raise(signal_number);
 }
 
-void prepare_output_folder(const std::string& option, const std::string& folder,
-                           const std::string& first_file) {
+// SIGTERM and SIGINT held back for the lifetime of this object, so that a temporary file is
+// never made, renamed or removed without the handler knowing.
+class TerminationBlocked {
+ public:
+  TerminationBlocked() {
+    sigset_t blocked;
+    sigemptyset(&blocked);
+    sigaddset(&blocked, SIGTERM);
+    sigaddset(&blocked, SIGINT);
+    sigprocmask(SIG_BLOCK, &blocked, &previous_);
+  }
+  ~TerminationBlocked() { sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+  TerminationBlocked(const TerminationBlocked&) = delete;
+  TerminationBlocked& operator=(const TerminationBlocked&) = delete;
+
+ private:
+  sigset_t previous_;
+};
+
+// mkstemp on PATH.tmp-XXXXXX, with the name left for the signal handler. Returns the file
+// descriptor (or -1, errno set) and the name in `name`.
+int create_temporary(const std::string& path, std::vector<char>& name) {
+  const std::string pattern = path + ".tmp-XXXXXX";
+  name.assign(pattern.begin(), pattern.end());
+  name.push_back('\0');
+  const TerminationBlocked blocked;
+  const int fd = mkstemp(name.data());
+  if (fd >= 0 && name.size() <= sizeof pending_temporary) {
+    std::memcpy(pending_temporary, name.data(), name.size());
+    has_pending_temporary = 1;
+  }
+  return fd;
+}
+
+// Remove the temporary file (`remove`; not once it was renamed), and forget it.
+void forget_temporary(const std::vector<char>& name, bool remove) {
+  const TerminationBlocked blocked;
+  if (remove) unlink(name.data());
+  has_pending_temporary = 0;
+}
+
+}  // namespace
+
+void check_output_path(const std::string& option, const std::string& path) {
+  if (path.empty()) throw InputError(option + ": expected a file path, got ''");
+  struct stat info {};
+  if (stat(path.c_str(), &info) == 0) {
+    if (S_ISDIR(info.st_mode)) {
+      throw InputError(option + ": '" + path + "' is a folder, expected a file path");
+    }
+    if (!S_ISREG(info.st_mode)) {
+      throw InputError(option + ": '" + path +
+                       "' exists and is not a regular file (a device, FIFO or socket), expected "
+                       "a new file or a regular file to replace");
+    }
+  } else if (errno != ENOENT) {
+    throw InputError(option + ": cannot use '" + path + "': " + std::strerror(errno) +
+                     ", expected a file path that can be written");
+  }
+  const std::string folder = parent_folder(path);
+  if (stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
+    throw InputError(option + ": '" + path + "': folder '" + folder + "' does not exist");
+  }
+  // The very file the write will make first, made and removed: whatever would stop the write
+  // at the end of the run stops it now.
+  std::vector<char> temporary;
+  const int fd = create_temporary(path, temporary);
+  if (fd < 0) {
+    throw InputError(option + ": cannot write a file beside '" + path + "': " +
+                     std::strerror(errno) + ", expected a writable folder and a shorter name");
+  }
+  close(fd);
+  forget_temporary(temporary, true);
+}
+
+void check_output_folder(const std::string& option, const std::string& folder,
+                         const std::string& first_file) {
+  if (folder.empty()) throw InputError(option + ": expected a folder path, got ''");
   struct stat info {};
   if (stat(folder.c_str(), &info) == 0) {
     if (!S_ISDIR(info.st_mode)) throw InputError(option + ": '" + folder + "' is not a folder");
-  } else if (mkdir(folder.c_str(), 0777) != 0) {
+    check_output_path(option, first_file);
+    return;
+  }
+  if (errno != ENOENT) {
+    throw InputError(option + ": cannot use the folder '" + folder + "': " + std::strerror(errno));
+  }
+  // Missing: it must be possible to make it, which only trying tells (long names, read-only
+  // disks, folders without write permission), so make it and take it away again.
+  if (mkdir(folder.c_str(), 0777) != 0) {
     throw InputError(option + ": cannot create the folder '" + folder + "' (" +
                      std::strerror(errno) + ")");
   }
-  check_output_path(first_file);
+  rmdir(folder.c_str());
+}
+
+void make_output_folder(const std::string& folder) {
+  if (mkdir(folder.c_str(), 0777) != 0 && errno != EEXIST) {
+    throw OutputError(folder + ": cannot create the folder: " + std::strerror(errno));
+  }
 }
 
 void write_file_atomically(const std::string& path, const std::string& contents) {
-  const std::string pattern = path + ".tmp-XXXXXX";
-  std::vector<char> temporary(pattern.begin(), pattern.end());
-  temporary.push_back('\0');
-  const int fd = mkstemp(temporary.data());
+  // Never rename over a device or a FIFO that appeared after the checks (a later frame's name).
+  struct stat info {};
+  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+    throw OutputError(path + ": exists and is not a regular file; not replaced");
+  }
+  std::vector<char> temporary;
+  const int fd = create_temporary(path, temporary);
   if (fd < 0) {
     throw OutputError(path + ": cannot create a temporary file: " + std::strerror(errno));
   }
   const auto fail = [&](const char* what) {
     const std::string reason = std::strerror(errno);
     close(fd);
-    unlink(temporary.data());
+    forget_temporary(temporary, true);
     throw OutputError(path + ": " + what + ": " + reason);
   };
   const char* data = contents.data();
@@ -81,13 +172,28 @@ void write_file_atomically(const std::string& path, const std::string& contents)
   if (fsync(fd) != 0) fail("fsync failed");
   if (close(fd) != 0) {
     const std::string reason = std::strerror(errno);
-    unlink(temporary.data());
+    forget_temporary(temporary, true);
     throw OutputError(path + ": close failed: " + reason);
   }
+  const TerminationBlocked blocked;  // renamed and forgotten as one
   if (std::rename(temporary.data(), path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
-    unlink(temporary.data());
+    forget_temporary(temporary, true);
     throw OutputError(path + ": rename failed: " + reason);
+  }
+  forget_temporary(temporary, false);
+}
+
+void remove_temporary_file_on_termination() {
+  struct sigaction action {};
+  action.sa_handler = remove_temporary_and_end;
+  sigemptyset(&action.sa_mask);
+  action.sa_flags = SA_RESETHAND;
+  for (const int signal_number : {SIGTERM, SIGINT}) {
+    // A signal the parent told us to ignore (nohup, a background shell job) stays ignored.
+    struct sigaction current {};
+    sigaction(signal_number, nullptr, &current);
+    if (current.sa_handler != SIG_IGN) sigaction(signal_number, &action, nullptr);
   }
 }
 

@@ -13,21 +13,35 @@ class OutputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Throws InputError unless `path` can plausibly be written: its folder exists and is writable,
-// and the path itself is not a folder. Called before any long computation, so that a typo in an
+// Throws InputError naming `option` (e.g. "--export-obj") unless `path` can be written: it is
+// not an existing folder, device, FIFO or socket (writing would replace it with a regular file),
+// its folder exists, and a temporary file can be made beside it right now, which finds names
+// too long for the filesystem, folders that take no files and read-only disks. The probe file is
+// removed at once, so nothing is left. Called before any long computation, so that a typo in an
 // output path is reported at once instead of after the work is done.
-void check_output_path(const std::string& path);
+void check_output_path(const std::string& option, const std::string& path);
 
-// For an option that writes many files into a folder (--record DIR): make `folder` if it is
-// missing (not its parents: a typo should not grow a tree of folders), then check that
-// `first_file` inside it can be written. Throws InputError naming `option`.
-void prepare_output_folder(const std::string& option, const std::string& folder,
-                           const std::string& first_file);
+// For an option that writes many files into a folder (--record DIR): throws InputError naming
+// `option` unless `folder` is a folder in which `first_file` passes check_output_path, or is
+// missing but could be made in an existing parent (not its parents: a typo should not grow a
+// tree of folders). Creates nothing (a probe folder is made and removed), so that bad input
+// found later leaves no empty folder; make_output_folder makes it once everything is checked.
+void check_output_folder(const std::string& option, const std::string& folder,
+                         const std::string& first_file);
+
+// Make `folder` if it is missing. Throws OutputError if it cannot be made.
+void make_output_folder(const std::string& folder);
 
 // Write `contents` to `path` so that readers only ever see the old file or the complete new one:
-// the bytes go to a temporary file in the same folder, are flushed to disk, and the temporary
-// file is renamed over `path`. On failure the temporary file is removed and OutputError thrown.
+// the bytes go to a temporary file in the same folder (PATH.tmp-XXXXXX), are flushed to disk,
+// and the temporary file is renamed over `path`. On failure the temporary file is removed and
+// OutputError thrown; a `path` that exists and is not a regular file is left alone (OutputError).
 void write_file_atomically(const std::string& path, const std::string& contents);
+
+// From now on, SIGTERM and SIGINT first remove the temporary file being written (if any), then
+// end the program as they would have. The handler only calls unlink and raise, which are
+// async-signal-safe; the temporary file's name waits for it in a static buffer.
+void remove_temporary_file_on_termination();
 
 }  // namespace wobble
 

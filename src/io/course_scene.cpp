@@ -14,6 +14,7 @@
 #include "io/read_obj.h"
 #include "sim/face_springs.h"
 #include "sim/input_error.h"
+#include "sim/value_limits.h"
 #include "sim/voronoi_masses.h"
 
 namespace wobble {
@@ -36,14 +37,15 @@ InputError key_error(const std::string& json_path, const std::string& key,
   return InputError(json_path + ": key `" + key + "`: " + what);
 }
 
-double positive_number(const std::string& json_path, const nlohmann::json& object,
-                       const std::string& key) {
+// A number within `range` (sim/value_limits.h: the same limits as the command line's and
+// Wobble's scene files').
+double number_in(const std::string& json_path, const nlohmann::json& object, const std::string& key,
+                 const ValueRange& range) {
   const nlohmann::json& value = object.at(key);
-  const double number = value.is_number() ? value.get<double>() : 0.0;
-  if (!value.is_number() || !std::isfinite(number) || !(number > 0.0)) {
-    throw key_error(json_path, key, "got " + shown(value) + ", expected a positive finite number");
+  if (!value.is_number() || !range.contains(value.get<double>())) {
+    throw key_error(json_path, key, "got " + shown(value) + ", expected " + expected_in(range));
   }
-  return number;
+  return value.get<double>();
 }
 
 // A path given relative to the JSON file, which must name a file that `problem_of` finds
@@ -110,6 +112,12 @@ Eigen::VectorXd area_masses(const std::string& json_path, const SpringNetwork& n
                           "undefined; expected `m`, one mass for every vertex");
     }
   }
+  const std::string outside = outside_limits(masses.array(), limits::vertex_mass, "masses");
+  if (!outside.empty()) {
+    throw key_error(json_path, "m",
+                    "missing, and the OBJ's Voronoi areas give " + outside +
+                        "; expected `m`, one mass for every vertex, or a mesh of other size");
+  }
   return masses;
 }
 
@@ -131,9 +139,9 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
   if (!object.contains("k")) {
     throw key_error(json_path, "k", "missing, expected the spring stiffness (a positive number)");
   }
-  const double k = positive_number(json_path, object, "k");
+  const double k = number_in(json_path, object, "k", limits::stiffness);
   const bool constant_mass = object.contains("m");
-  const double m = constant_mass ? positive_number(json_path, object, "m") : 0.0;
+  const double m = constant_mass ? number_in(json_path, object, "m", limits::vertex_mass) : 0.0;
   const std::string obj_path =
       existing_file(json_path, object, "obj", "an OBJ mesh",
                     [](const std::string& path) { return input_file_problem(path, obj_file); });

@@ -58,6 +58,13 @@ std::optional<double> JsonFields::positive(const std::string& key) {
   return value;
 }
 
+std::optional<double> JsonFields::number_in(const std::string& key, const ValueRange& range) {
+  if (!has(key)) return std::nullopt;
+  const nlohmann::json& value = raw(key);
+  if (!value.is_number() || !range.contains(value.get<double>())) fail(key, expected_in(range));
+  return value.get<double>();
+}
+
 std::optional<int> JsonFields::whole(const std::string& key, int low, int high) {
   if (!has(key)) return std::nullopt;
   const nlohmann::json& value = raw(key);
@@ -90,6 +97,20 @@ std::optional<Eigen::Vector3d> JsonFields::vector3(const std::string& key) {
   if (!value.is_array() || value.size() != 3 || !finite(value[0]) || !finite(value[1]) ||
       !finite(value[2])) {
     fail(key, "three numbers [x, y, z]");
+  }
+  return Eigen::Vector3d(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+}
+
+std::optional<Eigen::Vector3d> JsonFields::vector3_in(const std::string& key,
+                                                      const ValueRange& range) {
+  if (!has(key)) return std::nullopt;
+  const nlohmann::json& value = raw(key);
+  const auto in_range = [&](const nlohmann::json& x) {
+    return x.is_number() && range.contains(x.get<double>());
+  };
+  if (!value.is_array() || value.size() != 3 || !in_range(value[0]) || !in_range(value[1]) ||
+      !in_range(value[2])) {
+    fail(key, "three numbers [x, y, z], each " + within_text(range));
   }
   return Eigen::Vector3d(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
 }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/value_limits.h"
+
 namespace wobble {
 
 // Typed access to the keys of one JSON object of a scene file, with errors that name the file
@@ -27,11 +29,15 @@ class JsonFields {
 
   std::optional<double> positive(const std::string& key);
   std::optional<double> number(const std::string& key);
+  // A number within `range` (see sim/value_limits.h).
+  std::optional<double> number_in(const std::string& key, const ValueRange& range);
   std::optional<int> whole(const std::string& key, int low, int high);
   std::optional<bool> flag(const std::string& key);
   std::optional<std::string> text(const std::string& key);
   // Three finite numbers, [x, y, z].
   std::optional<Eigen::Vector3d> vector3(const std::string& key);
+  // Three numbers [x, y, z], each within `range`.
+  std::optional<Eigen::Vector3d> vector3_in(const std::string& key, const ValueRange& range);
   // Three numbers in [0, 1].
   std::optional<Eigen::Vector3d> color(const std::string& key);
 

@@ -12,8 +12,10 @@
 #include "io/read_tetgen.h"
 #include "sim/face_springs.h"
 #include "sim/input_error.h"
+#include "sim/input_limits.h"
 #include "sim/tet_mesh.h"
 #include "sim/tetrahedralize_surface.h"
+#include "sim/value_limits.h"
 #include "sim/voronoi_masses.h"
 
 namespace wobble {
@@ -53,12 +55,22 @@ LoadedMesh volume_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
   return mesh;
 }
 
-LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution) {
+LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution,
+                    const std::string& fill_key) {
   const ObjMesh obj = read_obj(path);
   const Eigen::MatrixXi triangles = fan_triangles(obj.faces);
   if (fill) {
     if (triangles.rows() == 0) {
       throw InputError(path + ": has no faces to fill with tetrahedra");
+    }
+    const double pairs = tetrahedralize_surface_pairs(obj.V, triangles.rows(), fill_resolution);
+    if (pairs > limits::max_fill_pairs) {
+      throw InputError(fill_key + ": filling " + path + " (" +
+                       with_thousands_separators(triangles.rows()) + " triangles) at resolution " +
+                       std::to_string(fill_resolution) + " takes " + limit_text(pairs, 3) +
+                       " cell-triangle tests, above the limit of " +
+                       limit_text(limits::max_fill_pairs) +
+                       ": expected a lower resolution or a coarser surface");
     }
     Eigen::MatrixXd TV;
     Eigen::MatrixXi TT;
@@ -132,9 +144,10 @@ std::string mesh_file_problem(const std::string& path) {
   return "";
 }
 
-LoadedMesh load_mesh(const std::string& path, bool fill, int fill_resolution) {
+LoadedMesh load_mesh(const std::string& path, bool fill, int fill_resolution,
+                     const std::string& fill_key) {
   const std::string extension = extension_of(path);
-  if (extension == ".obj") return obj_mesh(path, fill, fill_resolution);
+  if (extension == ".obj") return obj_mesh(path, fill, fill_resolution, fill_key);
   if (fill) throw InputError(path + ": only an OBJ surface can be filled with tetrahedra");
   if (extension == ".mesh") {
     const TetMeshFile file = read_medit_mesh(path);

@@ -27,7 +27,10 @@ struct LoadedMesh {
 //   .node / .ele  TetGen tetrahedra (either file of the pair)
 // Tetrahedral meshes: springs are the edges, render faces the boundary, weights the lumped
 // volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
-LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12);
+// A fill above limits::max_fill_pairs is refused at once, naming `fill_key` (the option or the
+// scene key that asked for it).
+LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12,
+                     const std::string& fill_key = "--fill");
 
 // Why `path` cannot be read by load_mesh, or "": its extension is unknown, or a file it would
 // read (for TetGen both BASE.node and BASE.ele) is not a regular file within its format's size

@@ -20,7 +20,8 @@ inline NumberWord read_number_word(const std::string& word, double& value) {
   errno = 0;
   char* end = nullptr;
   value = std::strtod(word.c_str(), &end);
-  if (end == word.c_str() || *end != '\0') return NumberWord::malformed;
+  // The whole word: a NUL byte inside it must not end it early.
+  if (end == word.c_str() || end != word.c_str() + word.size()) return NumberWord::malformed;
   if (!std::isfinite(value)) return NumberWord::not_finite;
   // strtod reports ERANGE for results that lost precision to underflow (0 or subnormal) and for
   // overflow, which gave ±HUGE_VAL above.

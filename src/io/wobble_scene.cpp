@@ -7,9 +7,11 @@
 #include "io/load_mesh.h"
 #include "io/png_image.h"
 #include "io/scene_pins.h"
+#include "io/shape_limits.h"
 #include "sim/cloth_grid.h"
 #include "sim/input_error.h"
 #include "sim/jelly_block.h"
+#include "sim/value_limits.h"
 
 namespace wobble {
 
@@ -30,8 +32,8 @@ std::string relative_to(const std::string& scene_path, const std::string& file) 
 
 Shape cloth_shape(JsonFields& mesh) {
   ClothGridOptions options;
-  options.resolution = mesh.whole("resolution", 2, 1000).value_or(40);
-  options.size = mesh.positive("size").value_or(1.0);
+  options.resolution = mesh.whole("resolution", 2, limits::max_cloth_resolution).value_or(40);
+  options.size = mesh.number_in("size", limits::size).value_or(1.0);
   options.areal_density = 1.0;  // masses come out as areas; the material scales them
   if (mesh.has("springs")) {
     const nlohmann::json& springs = mesh.raw("springs");
@@ -54,7 +56,8 @@ Shape cloth_shape(JsonFields& mesh) {
   if (orientation != "horizontal" && orientation != "vertical") {
     mesh.fail("orientation", "\"horizontal\" or \"vertical\"");
   }
-  const double height = mesh.number("height").value_or(orientation == "vertical" ? 1.6 : 1.2);
+  const double height =
+      mesh.number_in("height", limits::coordinate).value_or(orientation == "vertical" ? 1.6 : 1.2);
 
   Shape shape;
   shape.cloth_resolution = options.resolution;
@@ -84,8 +87,8 @@ Shape cloth_shape(JsonFields& mesh) {
 
 Shape jelly_shape(JsonFields& mesh) {
   JellyBlockOptions options;
-  options.resolution = mesh.whole("resolution", 1, 64).value_or(8);
-  options.size = mesh.positive("size").value_or(0.5);
+  options.resolution = mesh.whole("resolution", 1, limits::max_jelly_resolution).value_or(8);
+  options.size = mesh.number_in("size", limits::size).value_or(0.5);
   options.density = 1.0;  // masses come out as volumes
   Shape shape;
   shape.mesh.kind = LoadedMesh::Kind::volume;
@@ -99,11 +102,12 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   const std::string problem = mesh_file_problem(file);
   if (!problem.empty()) throw InputError(mesh.where("file") + ": " + problem);
   const bool fill = mesh.flag("fill").value_or(false);
-  const int resolution = mesh.whole("fill_resolution", 2, 100).value_or(12);
+  const int resolution = mesh.whole("fill_resolution", 2, limits::max_fill_resolution).value_or(12);
   Shape shape;
-  shape.mesh = load_mesh(file, fill, resolution);
-  const double scale = mesh.positive("scale").value_or(1.0);
-  const Eigen::Vector3d offset = mesh.vector3("offset").value_or(Eigen::Vector3d::Zero());
+  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"));
+  const double scale = mesh.number_in("scale", limits::scale).value_or(1.0);
+  const Eigen::Vector3d offset =
+      mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());
   SpringNetwork& network = shape.mesh.network;
   network.V = ((network.V * scale).rowwise() + offset.transpose()).eval();
   if (shape.mesh.kind == LoadedMesh::Kind::surface) network.m *= scale * scale;
@@ -121,10 +125,10 @@ void set_masses(JsonFields& material, LoadedMesh& mesh) {
                                  : mesh.kind == LoadedMesh::Kind::surface ? 0.25
                                                                           : 0.01;
   Eigen::VectorXd& m = mesh.network.m;
-  if (const std::optional<double> mass = material.positive("mass")) {
+  if (const std::optional<double> mass = material.number_in("mass", limits::total_mass)) {
     m *= *mass / m.sum();
   } else {
-    m *= material.positive("density").value_or(default_density);
+    m *= material.number_in("density", limits::density).value_or(default_density);
   }
 }
 
@@ -166,7 +170,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
   scene.params.k = shape.default_k;
   if (top.has("material")) {
     JsonFields material = top.object("material");
-    scene.params.k = material.positive("k").value_or(shape.default_k);
+    scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
     set_masses(material, shape.mesh);
     for (const std::string& key : material.unread())
       unknown.push_back(key);
@@ -176,21 +180,24 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     JsonFields none(path, empty);
     set_masses(none, shape.mesh);
   }
+  check_shape_limits(path, object, shape.mesh.network);
   scene.network = std::move(shape.mesh.network);
 
   if (top.has("simulation")) {
     JsonFields simulation = top.object("simulation");
-    scene.params.dt = simulation.positive("dt").value_or(scene.params.dt);
-    scene.params.iterations = simulation.whole("iterations", 1, 10000).value_or(50);
+    scene.params.dt = simulation.number_in("dt", limits::time_step).value_or(scene.params.dt);
+    scene.params.iterations =
+        simulation.whole("iterations", 1, limits::max_iterations).value_or(50);
     scene.params.chebyshev = simulation.flag("chebyshev").value_or(false);
     if (simulation.has("gravity")) {
       // A number is the downward acceleration; a vector may point anywhere (a sideways part
       // acts as a steady wind).
       const nlohmann::json& gravity = simulation.raw("gravity");
       if (gravity.is_number()) {
-        scene.params.gravity = Eigen::Vector3d(0.0, -*simulation.number("gravity"), 0.0);
+        scene.params.gravity =
+            Eigen::Vector3d(0.0, -*simulation.number_in("gravity", limits::acceleration), 0.0);
       } else {
-        scene.params.gravity = *simulation.vector3("gravity");
+        scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
       }
     }
     for (const std::string& key : simulation.unread())
@@ -207,21 +214,22 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     if (velocity.is_object()) {
       // Sway: sideways (x) speed growing linearly with height, `sway` m/s at the top.
       JsonFields sway = top.object("initial_velocity");
-      const double top_speed = sway.number("sway").value_or(0.0);
+      const double top_speed = sway.number_in("sway", limits::speed).value_or(0.0);
       const double low = scene.network.V.col(1).minCoeff();
       const double span = std::max(scene.network.V.col(1).maxCoeff() - low, 1e-12);
       scene.initial_velocity.col(0) = top_speed * (scene.network.V.col(1).array() - low) / span;
       for (const std::string& key : sway.unread())
         unknown.push_back(key);
     } else {
-      scene.initial_velocity.rowwise() = top.vector3("initial_velocity")->transpose();
+      scene.initial_velocity.rowwise() =
+          top.vector3_in("initial_velocity", limits::speed)->transpose();
     }
   }
 
   if (top.has("camera")) {
     JsonFields camera = top.object("camera");
-    scene.look.camera_position = camera.vector3("position");
-    scene.look.camera_target = camera.vector3("target");
+    scene.look.camera_position = camera.vector3_in("position", limits::coordinate);
+    scene.look.camera_target = camera.vector3_in("target", limits::coordinate);
     if (scene.look.camera_position.has_value() != scene.look.camera_target.has_value()) {
       camera.fail("target", "both a position and a target");
     }

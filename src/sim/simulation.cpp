@@ -7,6 +7,7 @@
 #include <string>
 
 #include "input_error.h"
+#include "value_limits.h"
 
 namespace wobble {
 
@@ -80,18 +81,22 @@ Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::In
 }  // namespace
 
 void validate_simulation_params(const SimulationParams& params) {
-  if (!(params.k > 0.0) || !std::isfinite(params.k)) {
-    throw InputError("k must be a positive finite stiffness, got " + std::to_string(params.k));
+  if (!limits::stiffness.contains(params.k)) {
+    throw InputError("k: expected " + expected_in(limits::stiffness) + ", got " +
+                     limit_text(params.k));
   }
-  if (!(params.dt > 0.0) || !std::isfinite(params.dt)) {
-    throw InputError("dt must be a positive finite time step, got " + std::to_string(params.dt));
+  if (!limits::time_step.contains(params.dt)) {
+    throw InputError("dt: expected " + expected_in(limits::time_step) + ", got " +
+                     limit_text(params.dt));
   }
   if (params.iterations < 1 || params.iterations > Simulation::max_iterations) {
     throw InputError("iterations must be between 1 and " +
                      std::to_string(Simulation::max_iterations) + ", got " +
                      std::to_string(params.iterations));
   }
-  if (!params.gravity.allFinite()) throw InputError("gravity must be finite");
+  const std::string gravity =
+      outside_limits(params.gravity.array(), limits::acceleration, "gravity components");
+  if (!gravity.empty()) throw InputError(gravity);
 }
 
 Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,

@@ -12,6 +12,7 @@
 #include "cholesky_solver.h"
 #include "local_step.h"
 #include "spring_network.h"
+#include "value_limits.h"
 
 namespace wobble {
 
@@ -45,8 +46,8 @@ struct SimulationParams {
   long single_precision_solve_above = CholeskySolver::default_single_precision_above;
 };
 
-// Throws InputError unless k and dt are positive and finite, iterations within 1 to
-// Simulation::max_iterations and gravity finite.
+// Throws InputError unless k, dt, iterations and gravity are within the limits of
+// sim/value_limits.h (the same for every way a value comes in).
 void validate_simulation_params(const SimulationParams& params);
 
 // Wall-clock time of the last step, split between the local step (springs) and the global step
@@ -86,7 +87,7 @@ enum class StepStatus {
 class Simulation {
  public:
   static constexpr double pin_weight = 1e10;  // w
-  static constexpr int max_iterations = 10000;
+  static constexpr int max_iterations = limits::max_iterations;
 
   // Throws InputError when the network, a pin index or a parameter is invalid.
   //   pins              indices of initially pinned vertices; targets start at rest positions

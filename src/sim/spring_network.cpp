@@ -4,6 +4,7 @@
 #include <string>
 
 #include "input_error.h"
+#include "value_limits.h"
 
 namespace wobble {
 
@@ -37,6 +38,15 @@ void validate_spring_network(const SpringNetwork& network) {
                      std::to_string(network.V.cols()));
   }
   if (!network.V.allFinite()) throw InputError("a vertex position is not finite");
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      if (!limits::coordinate.contains(network.V(i, c))) {
+        throw InputError("vertex " + std::to_string(i) + " has the coordinate " +
+                         limit_text(network.V(i, c)) + ", expected coordinates " +
+                         within_text(limits::coordinate));
+      }
+    }
+  }
   check_indices(network.E, 2, "spring", n);
   check_indices(network.F, 3, "face", n);
   for (Eigen::Index e = 0; e < network.E.rows(); ++e) {
@@ -50,9 +60,9 @@ void validate_spring_network(const SpringNetwork& network) {
                      std::to_string(network.m.size()));
   }
   for (Eigen::Index i = 0; i < n; ++i) {
-    if (!(network.m(i) > 0.0) || !std::isfinite(network.m(i))) {
-      throw InputError("vertex " + std::to_string(i) + " has mass " + std::to_string(network.m(i)) +
-                       ", expected a positive finite number");
+    if (!limits::vertex_mass.contains(network.m(i))) {
+      throw InputError("vertex " + std::to_string(i) + " has mass " + limit_text(network.m(i)) +
+                       " kg, expected " + expected_in(limits::vertex_mass));
     }
   }
 }

@@ -15,8 +15,9 @@ struct SpringNetwork {
   Eigen::VectorXd m;  // #V masses (kg)
 };
 
-// Throws InputError unless the network is well formed: V is #V by 3 and finite, every index in
-// E and F is in range, no spring joins a vertex to itself, and every mass is positive and finite.
+// Throws InputError unless the network is well formed: V is #V by 3 with every coordinate within
+// limits::coordinate, every index in E and F is in range, no spring joins a vertex to itself, and
+// every mass is within limits::vertex_mass (sim/value_limits.h).
 void validate_spring_network(const SpringNetwork& network);
 
 }  // namespace wobble

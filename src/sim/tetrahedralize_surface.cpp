@@ -192,7 +192,28 @@ void snap_boundary_to_surface(const Eigen::Matrix3Xd& corners, double min_volume
   }
 }
 
+// The grid of step 1: cells of side h along each axis (h = 0 for a surface of zero size).
+std::array<int, 3> grid_cells(const Eigen::MatrixXd& V, int resolution, double& h) {
+  const Eigen::Vector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
+  h = (hi - lo).maxCoeff() / resolution;
+  std::array<int, 3> cells{1, 1, 1};
+  if (!(h > 0.0)) return cells;
+  for (int a = 0; a < 3; ++a) {
+    // The 1e-9 keeps the longest side at exactly `resolution` cells despite rounding.
+    cells[a] = std::max(1, static_cast<int>(std::ceil((hi(a) - lo(a)) / h - 1e-9)));
+  }
+  return cells;
+}
+
 }  // namespace
+
+double tetrahedralize_surface_pairs(const Eigen::MatrixXd& V, Eigen::Index triangles,
+                                    int resolution) {
+  if (V.rows() == 0 || resolution < 1) return 0.0;
+  double h = 0.0;
+  const std::array<int, 3> cells = grid_cells(V, resolution, h);
+  return double(cells[0]) * cells[1] * cells[2] * double(triangles);
+}
 
 void tetrahedralize_surface(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int resolution,
                             Eigen::MatrixXd& TV, Eigen::MatrixXi& TT) {
@@ -203,15 +224,12 @@ void tetrahedralize_surface(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, 
   check_closed_surface(V, F);
 
   const Eigen::Vector3d lo = V.colwise().minCoeff(), hi = V.colwise().maxCoeff();
-  const double h = (hi - lo).maxCoeff() / resolution;
+  double h = 0.0;
+  const std::array<int, 3> cells = grid_cells(V, resolution, h);
   if (!(h > 0.0)) throw InputError("the surface has zero size");
-  std::array<int, 3> cells;
   Eigen::Vector3d origin;
-  for (int a = 0; a < 3; ++a) {
-    // The 1e-9 keeps the longest side at exactly `resolution` cells despite rounding.
-    cells[a] = std::max(1, static_cast<int>(std::ceil((hi(a) - lo(a)) / h - 1e-9)));
+  for (int a = 0; a < 3; ++a)
     origin(a) = 0.5 * (lo(a) + hi(a)) - 0.5 * cells[a] * h;
-  }
   const int nx = cells[0] + 1, ny = cells[1] + 1;
   const auto grid_index = [&](const std::array<int, 3>& v) {
     return (v[2] * ny + v[1]) * nx + v[0];

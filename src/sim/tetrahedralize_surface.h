@@ -55,6 +55,12 @@ namespace wobble {
 void tetrahedralize_surface(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, int resolution,
                             Eigen::MatrixXd& TV, Eigen::MatrixXi& TT);
 
+// The work of step 2 before it is done: cells of the grid times `triangles`, the cell-triangle
+// pairs whose solid angles are summed (0 for an empty V). Callers refuse a fill above
+// limits::max_fill_pairs (sim/value_limits.h) with this number, before any time is spent.
+double tetrahedralize_surface_pairs(const Eigen::MatrixXd& V, Eigen::Index triangles,
+                                    int resolution);
+
 }  // namespace wobble
 
 #endif

@@ -8,7 +8,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -48,6 +50,11 @@ struct BadInput {
   std::vector<Special> specials = {};
   // Whether the run asks for a screenshot. A texture must be refused even when nothing is drawn.
   bool screenshot = true;
+  // What else the folder needs before the run, if anything, beyond `specials`.
+  std::function<void(const std::filesystem::path&)> prepare = nullptr;
+  // Output options in place of the usual --export-obj and --screenshot into the folder ("{dir}"
+  // as above), for cases about the outputs themselves.
+  std::string outputs = "";
 };
 
 std::string bytes_0_to_255() {
@@ -239,13 +246,13 @@ std::vector<BadInput> catalogue() {
        "cloth --drag 5000:0,0,1@10",
        {"--drag", "5000", "1600 vertices"}},
       // Sizes beyond sane limits: refused with the limit, before anything is allocated.
-      {"iterations_above_limit", {}, "cloth --iterations 20000", {"--iterations", "10000"}},
+      {"iterations_above_limit", {}, "cloth --iterations 20000", {"--iterations", "5000"}},
       {"scene_iterations_above_limit",
        {{"it.json",
          "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"iterations\": 20000}}"}},
        "{dir}/it.json",
-       {"it.json", "simulation.iterations", "10000"}},
-      {"width_above_limit", {}, "cloth --width 100000", {"--width", "16384"}},
+       {"it.json", "simulation.iterations", "5000"}},
+      {"width_above_limit", {}, "cloth --width 100000", {"--width", "4096"}},
       {"frames_above_limit", {}, "cloth --frames 20000000", {"--frames", "10000000"}},
       {"medit_vertex_count_above_limit",
        {{"huge.mesh", "MeshVersionFormatted 1\nDimension 3\nVertices\n20000000\n0 0 0 1\nEnd\n"}},
@@ -254,7 +261,7 @@ std::vector<BadInput> catalogue() {
       {"cloth_resolution_above_limit",
        {{"big.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 5000}}"}},
        "{dir}/big.json",
-       {"big.json", "mesh.resolution", "1000"}},
+       {"big.json", "mesh.resolution", "256"}},
       // Files that are not regular files: refused from their status, never opened to wait on a
       // FIFO or to stream a device.
       {"fifo_as_medit",
@@ -431,6 +438,198 @@ std::vector<BadInput> catalogue() {
   };
 }
 
+// Values, outputs and one-line errors (issue 13, section 2): one set of limits for every way a
+// value comes in, generator and image sizes that run, output paths checked before any work,
+// and messages that stay one line whatever a file holds.
+std::vector<BadInput> value_and_output_catalogue() {
+  const std::pair<std::string, std::string> tri{"tri.obj", triangle_obj};
+  const auto scene = [](const std::string& keys) {
+    return "{\"mesh\": {\"generator\": \"cloth\"}, " + keys + "}";
+  };
+  // A cube's 8 corners and 1,800 faces on them: filled at resolution 24 that is 24³ cells times
+  // 1,800 triangles, above the fill limit, refused before the surface is even checked.
+  std::string many_faces =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n";
+  for (int face = 0; face < 1800; ++face)
+    many_faces += "f 1 2 8\n";
+  const auto fifo = [](const char* name) {
+    return [name](const std::filesystem::path& folder) {
+      ASSERT_EQ(mkfifo((folder / name).c_str(), 0600), 0);
+    };
+  };
+  const std::string long_name(250, 'n');
+  return {
+      // Output paths: refused before any work when they exist and are not regular files (or
+      // folders), when the filesystem will not take them, and nothing is created before all
+      // input is accepted.
+      {"export_obj_onto_a_fifo",
+       {},
+       "cloth",
+       {"--export-obj", "pipe.obj", "not a regular file"},
+       {},
+       true,
+       fifo("pipe.obj"),
+       "--export-obj '{dir}/pipe.obj'"},
+      {"screenshot_onto_a_fifo",
+       {},
+       "cloth",
+       {"--screenshot", "pipe.png", "not a regular file"},
+       {},
+       true,
+       fifo("pipe.png"),
+       "--screenshot '{dir}/pipe.png'"},
+      {"export_obj_name_too_long",
+       {},
+       "cloth",
+       {"--export-obj", "File name too long"},
+       {},
+       true,
+       nullptr,
+       "--export-obj '{dir}/" + long_name + ".obj'"},
+      {"export_obj_symlink_loop",
+       {},
+       "cloth",
+       {"--export-obj", "cannot use", "Too many levels of symbolic links"},
+       {},
+       true,
+       [](const std::filesystem::path& folder) {
+         std::filesystem::create_symlink("loop.obj", folder / "loop.obj");
+       },
+       "--export-obj '{dir}/loop.obj'"},
+      // /proc takes no new files, not even from root.
+      {"export_obj_into_a_folder_that_takes_no_files",
+       {},
+       "cloth",
+       {"--export-obj", "/proc/wobble.obj", "cannot write a file beside"},
+       {},
+       true,
+       nullptr,
+       "--export-obj /proc/wobble.obj"},
+      {"record_folder_name_too_long",
+       {},
+       "cloth",
+       {"--record", "cannot use the folder", "File name too long"},
+       {},
+       true,
+       nullptr,
+       "--record '{dir}/" + long_name + long_name + "'"},
+      {"record_frame_onto_a_fifo",
+       {{"frames/keep", ""}},
+       "cloth",
+       {"--record", "frame_00001.png", "not a regular file"},
+       {},
+       true,
+       fifo("frames/frame_00001.png"),
+       "--record '{dir}/frames'"},
+      {"bad_scene_leaves_no_record_or_sequence_folder",
+       {{"k.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"k\": -1}}"}},
+       "{dir}/k.json",
+       {"k.json", "material.k"},
+       {},
+       true,
+       nullptr,
+       "--record '{dir}/frames' --export-obj-sequence '{dir}/objs'"},
+      {"bad_drag_leaves_no_sequence_folder",
+       {},
+       "cloth --drag 99999:0,0,1@1",
+       {"--drag", "99999"},
+       {},
+       true,
+       nullptr,
+       "--export-obj-sequence '{dir}/objs'"},
+      // One line means one line: notes wait for the scene to load, and nothing from a file
+      // prints raw.
+      {"note_does_not_precede_the_refusal",
+       {{"note.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"unknown\\nkey\": 1}"}},
+       "{dir}/note.json --drag 99999:0,0,1@1",
+       {"--drag", "99999"}},
+      {"nul_byte_in_a_coordinate",
+       {{"nul.obj", std::string("v 0 0 0\nv 1 0\0 0\nv 0 1 0\nf 1 2 3\n", 33)}},
+       "{dir}/nul.obj",
+       {"nul.obj", "line 2", "\\x00", "finite number"}},
+      {"control_characters_in_a_path",
+       {},
+       "'nowhere\n\x1b[31m.json'",
+       {"nowhere\\n\\x1b[31m.json", "no such scene file"}},
+      // Generators, fills and images no larger than what runs in a few seconds.
+      {"jelly_resolution_above_limit",
+       {{"j.json", "{\"mesh\": {\"generator\": \"jelly\", \"resolution\": 64}}"}},
+       "{dir}/j.json",
+       {"j.json", "mesh.resolution", "1 to 24"}},
+      {"cloth_resolution_above_limit_257",
+       {{"c.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 257}}"}},
+       "{dir}/c.json",
+       {"c.json", "mesh.resolution", "2 to 256"}},
+      {"fill_resolution_above_limit",
+       {tri,
+        {"f.json", "{\"mesh\": {\"file\": \"tri.obj\", \"fill\": true, \"fill_resolution\": 40}}"}},
+       "{dir}/f.json",
+       {"f.json", "mesh.fill_resolution", "2 to 24"}},
+      {"fill_work_above_limit",
+       {{"many.obj", many_faces},
+        {"f.json",
+         "{\"mesh\": {\"file\": \"many.obj\", \"fill\": true, \"fill_resolution\": 24}}"}},
+       "{dir}/f.json",
+       {"f.json", "mesh.fill_resolution", "1,800 triangles", "above the limit of 2e7"}},
+      {"image_side_above_limit", {}, "cloth --height 8192", {"--height", "1 to 4096"}},
+      {"image_area_above_limit",
+       {},
+       "cloth --width 4096 --height 4096",
+       {"--width, --height", "16,777,216 pixels", "8,847,360"}},
+      // Scene-file values keep to the command line's limits, and masses name their keys.
+      {"scene_k_above_limit",
+       {{"k.json", scene("\"material\": {\"k\": 1e308}")}},
+       "{dir}/k.json",
+       {"k.json", "material.k", "1e-6 to 1e8 N/m"}},
+      {"course_k_above_limit",
+       {tri, {"k.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 1e308}"}},
+       "{dir}/k.json",
+       {"k.json", "`k`", "1e-6 to 1e8 N/m"}},
+      {"scene_dt_above_limit",
+       {{"dt.json", scene("\"simulation\": {\"dt\": 1e300}")}},
+       "{dir}/dt.json",
+       {"dt.json", "simulation.dt", "1e-9 to 1 s"}},
+      {"dt_below_limit", {}, "cloth --dt 1e-300", {"--dt", "1e-9 to 1 s", "'1e-300'"}},
+      {"scene_gravity_above_limit",
+       {{"g.json", scene("\"simulation\": {\"gravity\": [0, -1e300, 0]}")}},
+       "{dir}/g.json",
+       {"g.json", "simulation.gravity", "-1000 to 1000"}},
+      {"scene_velocity_above_limit",
+       {{"v.json", scene("\"initial_velocity\": [1e300, 0, 0]")}},
+       "{dir}/v.json",
+       {"v.json", "initial_velocity", "-1000 to 1000 m/s"}},
+      {"scene_mass_underflows",
+       {{"m.json",
+         "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 200}, \"material\": "
+         "{\"mass\": 1e-6}}"}},
+       "{dir}/m.json",
+       {"m.json", "material.mass", "vertex masses from", "1e-9 to 1e6 kg"}},
+      {"scene_scale_underflows",
+       {tri, {"s.json", "{\"mesh\": {\"file\": \"tri.obj\", \"scale\": 1e-5}}"}},
+       "{dir}/s.json",
+       {"s.json", "mesh.scale", "vertex masses from", "1e-9 to 1e6 kg"}},
+      {"course_m_below_limit",
+       {tri, {"m.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 1e-300}"}},
+       "{dir}/m.json",
+       {"m.json", "`m`", "1e-9 to 1e6 kg"}},
+  };
+}
+
+// The address space a refusal may take: 200 MiB, except under AddressSanitizer, whose shadow
+// memory alone reserves terabytes of address space.
+#if defined(__SANITIZE_ADDRESS__)  // GCC
+#define WOBBLE_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)  // clang
+#if __has_feature(address_sanitizer)
+#define WOBBLE_ADDRESS_SANITIZER 1
+#endif
+#endif
+#if defined(WOBBLE_ADDRESS_SANITIZER)
+const char* const memory_cap = "";
+#else
+const char* const memory_cap = "ulimit -v 204800;";
+#endif
+
 void PrintTo(const BadInput& input, std::ostream* out) {
   *out << input.name << ": wobble " << input.arguments;
 }
@@ -480,20 +679,38 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   }
   for (const Special& special : input.specials)
     make(special, folder);
-  const std::vector<std::string> before = folder.entries();
+  if (input.prepare) input.prepare(folder.path());
+  // Each entry with its type, so that a FIFO replaced by a file of its name counts as written.
+  const auto entries = [&folder] {
+    std::vector<std::string> typed;
+    for (const std::string& name : folder.entries()) {
+      const auto type = std::filesystem::symlink_status(folder.path() / name).type();
+      typed.push_back(name + " (type " + std::to_string(static_cast<int>(type)) + ")");
+    }
+    return typed;
+  };
+  const std::vector<std::string> before = entries();
 
-  std::string arguments = input.arguments;
   const std::string dir = "{dir}";
-  for (std::size_t at = arguments.find(dir); at != std::string::npos; at = arguments.find(dir))
-    arguments.replace(at, dir.size(), folder.path().string());
+  const auto in_folder = [&](std::string text) {
+    for (std::size_t at = text.find(dir); at != std::string::npos; at = text.find(dir))
+      text.replace(at, dir.size(), folder.path().string());
+    return text;
+  };
+  std::string arguments = in_folder(input.arguments);
   if (arguments.find("--frames") == std::string::npos) arguments += " --frames 3";
-  arguments += " --headless --export-obj '" + folder.file("out.obj") + "'";
-  if (input.screenshot) arguments += " --screenshot '" + folder.file("out.png") + "'";
-  // A run that waits on a FIFO is killed, not waited for: it fails below with exit code 137.
+  std::string outputs = "--export-obj '" + folder.file("out.obj") + "'";
+  if (input.screenshot) outputs += " --screenshot '" + folder.file("out.png") + "'";
+  if (!input.outputs.empty()) outputs = in_folder(input.outputs);
+  // Each refusal within 2 s of CPU time and 200 MB (issue 13): the address space is capped at
+  // 200 MiB (a larger allocation fails, and the exit code is no longer 2), the largest resident
+  // size is checked too, and a run that waits on a FIFO is killed, not waited for: it fails
+  // below with exit code 137.
   const double cpu_before = children_cpu_seconds();
-  const Result result = run_wobble(arguments, "timeout -s KILL 20");
+  const Result result = run_wobble(arguments + " --headless " + outputs,
+                                   std::string(memory_cap) + " timeout -s KILL 20");
   EXPECT_LT(children_cpu_seconds() - cpu_before, 2.0) << "seconds of CPU time";
-#if !defined(__SANITIZE_ADDRESS__)
+#if !defined(WOBBLE_ADDRESS_SANITIZER)
   // The largest resident size of any child so far (AddressSanitizer's shadow memory would count
   // too, so the sanitizer build leaves this to the normal one).
   rusage usage{};
@@ -512,7 +729,7 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   for (const std::string& expected : input.expected)
     EXPECT_NE(result.err.find(expected), std::string::npos) << expected << " in " << result.err;
   EXPECT_EQ(result.out, "");
-  std::vector<std::string> after = folder.entries();
+  std::vector<std::string> after = entries();
   std::sort(after.begin(), after.end());
   std::vector<std::string> expected_entries = before;
   std::sort(expected_entries.begin(), expected_entries.end());
@@ -520,6 +737,11 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BadInput, Catalogue, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+INSTANTIATE_TEST_SUITE_P(BadValueOrOutput, Catalogue,
+                         ::testing::ValuesIn(value_and_output_catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });

@@ -70,7 +70,7 @@ TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
       {"--headless --k nan", "--k"},
       {"--headless --k 1e12", "limit"},
       {"--headless --dt 0", "--dt"},
-      {"--headless --iterations 20000", "10000"},
+      {"--headless --iterations 20000", "5000"},
       {"curtain --headless", "curtain"},
   };
   for (const auto& [arguments, expected] : cases) {

@@ -1,9 +1,16 @@
 #include "io/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "sim/input_error.h"
 #include "temporary_folder.h"
@@ -37,19 +44,95 @@ TEST(AtomicFile, FailureThrowsAndLeavesNothingBehind) {
   std::filesystem::create_directory(folder.file("taken"));
   EXPECT_THROW(wobble::write_file_atomically(folder.file("taken"), "x"), wobble::OutputError);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"taken"});
+  // A FIFO is not replaced by a regular file.
+  ASSERT_EQ(mkfifo(folder.file("pipe").c_str(), 0600), 0);
+  EXPECT_THROW(wobble::write_file_atomically(folder.file("pipe"), "x"), wobble::OutputError);
+  EXPECT_TRUE(std::filesystem::is_fifo(folder.file("pipe")));
 }
 
 TEST(AtomicFile, CheckOutputPathRefusesMissingFoldersAndFolders) {
   TemporaryFolder folder;
-  EXPECT_NO_THROW(wobble::check_output_path(folder.file("fine.obj")));
+  EXPECT_NO_THROW(wobble::check_output_path("--export-obj", folder.file("fine.obj")));
   try {
-    wobble::check_output_path(folder.file("nope/out.obj"));
+    wobble::check_output_path("--export-obj", folder.file("nope/out.obj"));
     FAIL() << "accepted a path in a missing folder";
   } catch (const wobble::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("does not exist"), std::string::npos);
   }
-  EXPECT_THROW(wobble::check_output_path(folder.path().string()), wobble::InputError);
-  EXPECT_THROW(wobble::check_output_path(""), wobble::InputError);
+  EXPECT_THROW(wobble::check_output_path("--export-obj", folder.path().string()),
+               wobble::InputError);
+  EXPECT_THROW(wobble::check_output_path("--export-obj", ""), wobble::InputError);
+  // The probe leaves nothing behind.
+  EXPECT_TRUE(folder.entries().empty());
+}
+
+// The message names the option and what is wrong with the path.
+std::string refusal(const std::string& path) {
+  try {
+    wobble::check_output_path("--export-obj", path);
+  } catch (const wobble::InputError& error) {
+    return error.what();
+  }
+  return "(accepted)";
+}
+
+TEST(AtomicFile, CheckOutputPathRefusesDevicesFifosLongNamesAndLoops) {
+  TemporaryFolder folder;
+  EXPECT_NE(refusal("/dev/null").find("--export-obj: '/dev/null' exists and is not a regular file"),
+            std::string::npos)
+      << refusal("/dev/null");
+  ASSERT_EQ(mkfifo(folder.file("pipe.obj").c_str(), 0600), 0);
+  EXPECT_NE(refusal(folder.file("pipe.obj")).find("not a regular file"), std::string::npos);
+  // The name fits the filesystem's 255 bytes, but its temporary file's name does not: the
+  // write at the end would fail, so it fails now.
+  const std::string long_name = folder.file(std::string(250, 'a') + ".obj");
+  EXPECT_NE(refusal(long_name).find("File name too long"), std::string::npos) << refusal(long_name);
+  std::filesystem::create_symlink("loop", folder.file("loop"));
+  EXPECT_NE(refusal(folder.file("loop")).find("--export-obj: cannot use"), std::string::npos)
+      << refusal(folder.file("loop"));
+  std::vector<std::string> entries = folder.entries();
+  std::sort(entries.begin(), entries.end());
+  EXPECT_EQ(entries, (std::vector<std::string>{"loop", "pipe.obj"}));
+}
+
+TEST(AtomicFile, CheckOutputFolderCreatesNothing) {
+  TemporaryFolder folder;
+  const std::string frames = folder.file("frames");
+  EXPECT_NO_THROW(wobble::check_output_folder("--record", frames, frames + "/frame_00001.png"));
+  EXPECT_TRUE(folder.entries().empty());
+  EXPECT_THROW(wobble::check_output_folder("--record", folder.file("a/b"), folder.file("a/b/f")),
+               wobble::InputError);
+  const std::string too_long = folder.file(std::string(300, 'd'));
+  EXPECT_THROW(wobble::check_output_folder("--record", too_long, too_long + "/f"),
+               wobble::InputError);
+  wobble::make_output_folder(frames);
+  EXPECT_TRUE(std::filesystem::is_directory(frames));
+  EXPECT_NO_THROW(wobble::make_output_folder(frames));  // already there: fine
+}
+
+// SIGTERM in the middle of a write: the handler removes the temporary file, then the signal
+// ends the process as it would have. A helper thread sends the signal while 64 MB are being
+// written; whenever it lands, nothing may be left but (if the rename was reached) the file.
+TEST(AtomicFileDeathTest, TerminationRemovesTheTemporaryFile) {
+  GTEST_FLAG_SET(death_test_style, "fast");  // the child must see this very folder
+  for (const int signal_number : {SIGTERM, SIGINT}) {
+    TemporaryFolder folder;
+    const std::string path = folder.file("big.obj");
+    EXPECT_EXIT(
+        {
+          wobble::remove_temporary_file_on_termination();
+          const std::string contents(64 << 20, 'x');
+          std::thread sender([signal_number] {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            kill(getpid(), signal_number);
+          });
+          for (;;)
+            wobble::write_file_atomically(path, contents);
+        },
+        ::testing::KilledBySignal(signal_number), "");
+    for (const std::string& name : folder.entries())
+      EXPECT_EQ(name, "big.obj") << "left behind";
+  }
 }
 
 }  // namespace

@@ -169,6 +169,23 @@ TEST_F(CourseScene, RefusesBadKeys) {
                    "sheet.obj': is not a readable image");
 }
 
+// The course's k and m keep to the limits of --k and of Wobble's own scenes (sim/value_limits.h).
+TEST_F(CourseScene, ValuesKeepToTheSharedLimits) {
+  const std::string obj = R"("obj": "meshes/sheet.obj")";
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1e308})", "k",
+                   "got 1e+308, expected a positive number within the limits 1e-6 to 1e8 N/m");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "m": 1e-300})", "m",
+                   "got 1e-300, expected a positive number within the limits 1e-9 to 1e6 kg");
+  expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "m": 1e300})", "m", "1e6 kg");
+  // Without m, areas so small that the masses underflow name m, not a vertex.
+  write("meshes/tiny.obj", "v 0 0 0\nv 1e-6 0 0\nv 0 1e-6 0\nf 1 2 3\n");
+  expect_key_error(R"({"obj": "meshes/tiny.obj", "b": [1], "k": 1})", "m",
+                   "missing, and the OBJ's Voronoi areas give masses from 1.25e-13 to 2.5e-13 kg, "
+                   "expected each within the limits 1e-9 to 1e6 kg");
+  // The limits themselves load.
+  EXPECT_EQ(error("{" + obj + R"(, "b": [1], "k": 1e8, "m": 1e6})"), "");
+}
+
 TEST_F(CourseScene, MalformedJsonNamesItsLine) {
   const std::string message = error("{\n  \"obj\": \"meshes/sheet.obj\",\n  \"b\": [1,, 2],\n}\n");
   EXPECT_EQ(message.rfind(json_path() + ": line 3: malformed JSON: ", 0), 0u) << message;

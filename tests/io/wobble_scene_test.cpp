@@ -107,14 +107,61 @@ TEST(WobbleScene, CameraColoursAndUnknownKeys) {
   EXPECT_TRUE(scene.pins.empty());  // none asked for, none given
 }
 
+// Every value a scene sets keeps to the command line's limits (sim/value_limits.h), and the
+// message names the key, also where only what two keys give together is out of range.
+TEST(WobbleScene, ValuesKeepToTheSharedLimits) {
+  const std::string cloth = R"("mesh": {"generator": "cloth", "resolution": 4})";
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"{" + cloth + R"(, "material": {"k": 1e308}})",
+       "material.k: expected a positive number within the limits 1e-6 to 1e8 N/m, got 1e+308"},
+      {"{" + cloth + R"(, "simulation": {"dt": 1e300}})",
+       "simulation.dt: expected a positive number within the limits 1e-9 to 1 s"},
+      {"{" + cloth + R"(, "simulation": {"gravity": [0, -1e300, 0]}})",
+       "simulation.gravity: expected three numbers [x, y, z], each within the limits -1000 to "
+       "1000 m/s²"},
+      {"{" + cloth + R"(, "simulation": {"gravity": 5000}})", "simulation.gravity"},
+      {"{" + cloth + R"(, "initial_velocity": [1e200, 0, 0]})", "initial_velocity: expected"},
+      {"{" + cloth + R"(, "initial_velocity": {"sway": 1e9}})", "initial_velocity.sway"},
+      {"{" + cloth + R"(, "material": {"density": 1e300}})", "material.density"},
+      {"{" + cloth + R"(, "material": {"mass": 1e-300}})", "material.mass: expected"},
+      {"{" + cloth + R"(, "camera": {"position": [0, 0, 1e300], "target": [0, 0, 0]}})",
+       "camera.position"},
+      {R"({"mesh": {"generator": "cloth", "size": 1e-30}})", "mesh.size"},
+      {R"({"mesh": {"generator": "jelly", "resolution": 25}})", "mesh.resolution"},
+      // Each value within its limits, but the masses they give together are not.
+      {R"({"mesh": {"generator": "cloth", "resolution": 100}, "material": {"mass": 1e-6}})",
+       "material.mass and mesh.resolution: vertex masses from 2.55e-11 to 1.02e-10 kg"},
+      {R"({"mesh": {"file": "tri.obj", "scale": 1e-6}})",
+       "mesh.scale: vertex masses from 3.12e-14 to 6.25e-14 kg, expected each within the "
+       "limits 1e-9 to 1e6 kg"},
+      {R"({"mesh": {"file": "tri.obj", "scale": 1e-300}})",
+       "mesh.scale: expected a positive number within the limits 1e-6 to 1e6"},
+      {R"({"mesh": {"file": "tri.obj", "offset": [0, 1e6, 0]}})",
+       "mesh.offset: vertex coordinates from 0 to 1000001 m"},
+  };
+  for (const auto& [json, expected] : cases) {
+    TemporaryFolder folder;
+    std::ofstream(folder.file("tri.obj")) << obj;
+    std::string message = "(no error)";
+    try {
+      load(folder, json);
+    } catch (const wobble::InputError& error) {
+      message = error.what();
+    }
+    EXPECT_NE(message.find("scene.json: "), std::string::npos) << json << " -> " << message;
+    EXPECT_NE(message.find(expected), std::string::npos) << json << " -> " << message;
+  }
+}
+
 TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {R"({"mesh": {"generator": "torus"}})", "mesh.generator: expected \"cloth\" or \"jelly\""},
       {R"({"mesh": {}})", "mesh: expected a \"generator\" or a \"file\""},
       {R"({"mesh": {"generator": "cloth"}, "material": {"k": -3}})",
-       "material.k: expected a positive number, got -3"},
+       "material.k: expected a positive number within the limits 1e-6 to 1e8 N/m, got -3"},
       {R"({"mesh": {"generator": "cloth"}, "material": {"k": "stiff"}})",
-       "material.k: expected a number, got \"stiff\""},
+       "material.k: expected a positive number within the limits 1e-6 to 1e8 N/m, got \"stiff\""},
       {R"({"mesh": {"generator": "cloth"}, "material": {"density": 1, "mass": 1}})",
        "expected either density or mass"},
       {R"({"mesh": {"generator": "cloth"}, "simulation": {"dt": 0}})", "simulation.dt"},

@@ -233,3 +233,18 @@ TEST(TetrahedralizeSurface, RefusesOpenMisorientedAndEmptySurfaces) {
 }
 
 }  // namespace
+
+namespace {
+
+// The work estimate counts the very grid the fill uses: cells along each side times triangles.
+TEST(TetrahedralizeSurface, PairsAreTheGridsCellsTimesTheTriangles) {
+  Eigen::MatrixXd box(2, 3);
+  box << 0, 0, 0, 2, 1, 0.5;
+  EXPECT_EQ(wobble::tetrahedralize_surface_pairs(box, 10, 4), 4.0 * 2 * 1 * 10);
+  Eigen::MatrixXd cube(2, 3);
+  cube << 0, 0, 0, 1, 1, 1;
+  EXPECT_EQ(wobble::tetrahedralize_surface_pairs(cube, 12, 24), 24.0 * 24 * 24 * 12);
+  EXPECT_EQ(wobble::tetrahedralize_surface_pairs(Eigen::MatrixXd(0, 3), 12, 24), 0.0);
+}
+
+}  // namespace
