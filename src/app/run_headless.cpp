@@ -1,5 +1,7 @@
 #include "run_headless.h"
 
+#include <memory>
+
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -48,6 +50,7 @@ nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& sce
       {"dt", params.dt},
       {"precompute_ms", simulation.precompute_ms()},
       {"factor_nonzeros", simulation.factor_nonzeros()},
+      {"factorization_work", simulation.factorization_work()},
       {"single_precision_solve", simulation.solves_in_single_precision()},
       {"step_ms_median", median(step_ms)},
       {"step_ms_min", step_ms.empty() ? 0.0 : *std::min_element(step_ms.begin(), step_ms.end())},
@@ -63,7 +66,9 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   ImageOutputs outputs(command.screenshot, command.record, frames, progress);
   if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Viewer viewer(open_scene(command), viewer_settings(command), scene_catalog());
+  Viewer viewer = naming_scene(command.scene, [&] {
+    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
+  });
   print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
 
   OffscreenOptions options;
@@ -105,7 +110,10 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   if (command.dt) params.dt = *command.dt;
   if (command.iterations) params.iterations = *command.iterations;
   if (command.chebyshev) params.chebyshev = true;
-  Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
+  const auto simulation_pointer = naming_scene(command.scene, [&] {
+    return std::make_unique<Simulation>(scene.network, scene.pins, params, scene.initial_velocity);
+  });
+  Simulation& simulation = *simulation_pointer;
   DragScript drags(command.drags, scene.network.V.rows());
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 

@@ -45,12 +45,13 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   // Everything that can be refused is checked before a window appears.
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Scene scene = open_scene(command);
+  Viewer viewer = naming_scene(command.scene, [&] {
+    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
+  });
 
-  GlfwWindow window(command.width, command.height, "Wobble: " + scene.name);
+  GlfwWindow window(command.width, command.height, "Wobble: " + viewer.scene().name);
   const float ui_scale = window.content_scale();
   WindowUi ui(window, ui_scale);
-  Viewer viewer(std::move(scene), viewer_settings(command), scene_catalog());
   print_notes(viewer.scene(), progress);
   viewer.attach_renderer();
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "command_line.h"
+#include "sim/input_error.h"
 #include "sim/scene.h"
 
 namespace wobble {
@@ -25,6 +26,18 @@ Scene open_scene(const CommandLine& command);
 // Say on `out` (stderr) what the loader chose for the user, one "wobble: note: ..." line each,
 // with control characters escaped (a note may quote a key from the file).
 void print_notes(const Scene& scene, std::ostream& out);
+
+// Runs `start`, which starts the simulation of the scene `source` names, and puts `source` in
+// front of the message of an InputError it throws: those say only what is wrong with the
+// springs (a Cholesky factor over Wobble's limits), not which file gave them.
+template <typename Start>
+auto naming_scene(const std::string& source, Start start) -> decltype(start()) {
+  try {
+    return start();
+  } catch (const InputError& error) {
+    throw InputError(source + ": " + error.what());
+  }
+}
 
 }  // namespace wobble
 

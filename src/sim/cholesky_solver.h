@@ -25,8 +25,16 @@ namespace wobble {
 class CholeskySolver {
  public:
   // Ordering, elimination tree, the pattern of L and its supernodes, for the pattern of the
-  // symmetric positive definite Q (both triangles stored; only the lower one is read).
+  // symmetric positive definite Q (both triangles stored; only the lower one is read). Throws
+  // InputError, before taking the factor's memory, when L would hold more than
+  // max_factor_nonzeros nonzeros or take more than max_factorization_work to factorize.
   void analyze(const Eigen::SparseMatrix<double>& Q);
+  // Measured on the 2-core development machine: the largest regular meshes the file limits admit
+  // stay below both (a 44³ block of tetrahedra: 65 million nonzeros, work 2.4e11, 12 s and
+  // 1.4 GB to analyze and factorize; a 660×660 OBJ grid: 27 million, 1.8e10, 1.6 s), while a
+  // 1.3 MB OBJ of 40,000 random triangles (52 million, 1.0e12: 27 s and 2.9 GB) is refused.
+  static constexpr long max_factor_nonzeros = 70'000'000;
+  static constexpr double max_factorization_work = 3e11;
   // Numeric factorization of Q, which must have the analyzed pattern. False if Q is not
   // positive definite.
   bool factorize(const Eigen::SparseMatrix<double>& Q);
@@ -37,6 +45,9 @@ class CholeskySolver {
 
   // Nonzeros of L, the diagonal included: exactly those of Eigen's L with the same ordering.
   long factor_nonzeros() const { return factor_nonzeros_; }
+  // The work of one numeric factorization, estimated as the sum over supernodes of their width
+  // times their rows squared (about twice the multiply-adds).
+  double factorization_work() const { return factorization_work_; }
 
   // A factor with more nonzeros than this no longer fits in cache, and the solve is bound by
   // reading it from memory: it then reads L's values rounded to float (the diagonal, and all
@@ -91,6 +102,7 @@ class CholeskySolver {
   // Instead of column_values_ and block_values_ for a large factor.
   std::vector<float> column_values_single_, block_values_single_;
   long factor_nonzeros_ = 0;
+  double factorization_work_ = 0.0;
   long single_precision_above_ = default_single_precision_above;
   bool single_ = false;
 

@@ -170,6 +170,7 @@ class Simulation {
   int numeric_factorizations() const { return numeric_factorizations_; }
   // Nonzeros of the Cholesky factor L of Q, its diagonal included.
   long factor_nonzeros() const { return solver_.factor_nonzeros(); }
+  double factorization_work() const { return solver_.factorization_work(); }
   // Whether the solve reads the factor's values rounded to float (a large factor).
   bool solves_in_single_precision() const { return solver_.solves_in_single_precision(); }
 

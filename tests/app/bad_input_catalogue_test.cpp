@@ -111,6 +111,32 @@ std::string obj_with_repeated_faces(long faces) {
   return obj;
 }
 
+// A 1.3 MB OBJ of `faces` triangles between random vertices of `vertices` (a fixed sequence):
+// few springs, but joining far-apart vertices, so Q's Cholesky factor would fill far beyond
+// what the file's size suggests (20,000 and 40,000: 52 million nonzeros, 30 s and 2.9 GB).
+std::string obj_of_random_triangles(int vertices, int faces) {
+  unsigned state = 12345;
+  const auto next = [&state](int below) {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<int>((state >> 8) % static_cast<unsigned>(below));
+  };
+  std::string obj;
+  for (int v = 0; v < vertices; ++v) {
+    obj += "v " + std::to_string(next(1000)) + " " + std::to_string(next(1000)) + " " +
+           std::to_string(next(1000)) + "\n";
+  }
+  for (int f = 0; f < faces; ++f) {
+    int a = next(vertices), b = next(vertices), c = next(vertices);
+    while (b == a)
+      b = next(vertices);
+    while (c == a || c == b)
+      c = next(vertices);
+    obj += "f " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " +
+           std::to_string(c + 1) + "\n";
+  }
+  return obj;
+}
+
 std::string mib_limit(const wobble::FileKind& kind) {
   return std::to_string(kind.max_bytes / wobble::mebibytes) + " MiB";
 }
@@ -351,6 +377,12 @@ std::vector<BadInput> catalogue() {
        {"many.obj",
         "line " + std::to_string(wobble::max_face_corners + wobble::max_face_springs / 32640 + 1),
         wobble::with_thousands_separators(wobble::max_face_springs)}},
+      // Memory that grows faster than the input through the springs' connections: refused by
+      // the symbolic analysis before the factor's memory is taken.
+      {"obj_whose_springs_fill_the_factor",
+       {{"random.obj", obj_of_random_triangles(20000, 40000)}},
+       "{dir}/random.obj",
+       {"random.obj", "Cholesky factor", "70,000,000", "3e+11"}},
       {"texture_above_side_limit",
        {{"s.json",
          "{\"mesh\": {\"generator\": \"cloth\"}, \"appearance\": {\"texture\": \"big.png\"}}"},
