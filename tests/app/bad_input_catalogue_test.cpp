@@ -17,10 +17,13 @@
 #include <vector>
 
 #include "io/input_file_limits.h"
+#include "png_header.h"
 #include "run_wobble.h"
 #include "sim/input_limits.h"
 
 namespace {
+
+using wobble::testing::png_header;
 
 using wobble::testing::Result;
 using wobble::testing::run_wobble;
@@ -72,23 +75,6 @@ const char* const tet_vertices = "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n";
 
 std::string course(const std::string& extra) {
   return "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 1" + extra + "}";
-}
-
-// The signature and header chunk of a PNG of the given size, which is all a header check reads;
-// the CRC is left 0, which stb_image does not check.
-std::string png_header(unsigned width, unsigned height) {
-  std::string bytes = "\x89PNG\r\n\x1a\n";
-  const auto put32 = [&bytes](unsigned value) {
-    for (int shift = 24; shift >= 0; shift -= 8)
-      bytes.push_back(static_cast<char>((value >> shift) & 0xff));
-  };
-  put32(13);
-  bytes += "IHDR";
-  put32(width);
-  put32(height);
-  bytes += std::string("\x08\x06\x00\x00\x00", 5);  // 8-bit RGBA, no interlace
-  put32(0);
-  return bytes;
 }
 
 // An OBJ with one face of `corners` corners.

@@ -7,10 +7,13 @@
 
 #include "io/atomic_file.h"
 #include "io/input_file_limits.h"
+#include "png_header.h"
 #include "sim/input_error.h"
 #include "temporary_folder.h"
 
 namespace {
+
+using wobble::testing::png_header;
 
 wobble::RgbaImage gradient(int width, int height) {
   wobble::RgbaImage image;
@@ -72,22 +75,6 @@ TEST(PngImage, WritingIntoAMissingFolderFailsCleanly) {
   wobble::testing::TemporaryFolder folder;
   EXPECT_THROW(wobble::write_png(folder.file("no/such/a.png"), gradient(2, 2)),
                wobble::OutputError);
-}
-
-// The signature and header chunk of a PNG, which is all a header check reads.
-std::string png_header(unsigned width, unsigned height) {
-  std::string bytes = "\x89PNG\r\n\x1a\n";
-  const auto put32 = [&bytes](unsigned value) {
-    for (int shift = 24; shift >= 0; shift -= 8)
-      bytes.push_back(static_cast<char>((value >> shift) & 0xff));
-  };
-  put32(13);
-  bytes += "IHDR";
-  put32(width);
-  put32(height);
-  bytes += std::string("\x08\x06\x00\x00\x00", 5);
-  put32(0);
-  return bytes;
 }
 
 TEST(PngImage, TextureProblemLooksAtTheHeaderOnly) {
