@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "../io/png_header.h"
 #include "io/input_file_limits.h"
-#include "png_header.h"
 #include "run_wobble.h"
 #include "sim/input_limits.h"
 
