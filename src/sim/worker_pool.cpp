@@ -153,7 +153,8 @@ void WorkerPool::run_erased(int count, Call call, void* context, SharingPayoff* 
   gap_seconds_ = std::max(seconds_between(last_run_end_, start), 0.875 * gap_seconds_);
   // A polling helper with no core of its own takes turns with the caller, and slows what the
   // caller does between runs (the global step): poll only while a core is free.
-  if (seconds_between(last_contention_check_, start) >= contention_check_seconds) {
+  if (!helpers_.empty() &&
+      seconds_between(last_contention_check_, start) >= contention_check_seconds) {
     last_contention_check_ = start;
     const int runnable = runnable_threads();
     const int others = runnable - 1 - polling_helpers_.load(std::memory_order_relaxed);
