@@ -8,9 +8,9 @@
 
 #include "parse_number.h"
 #include "scene_catalog.h"
-#include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "sim/value_limits.h"
 

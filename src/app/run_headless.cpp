@@ -15,7 +15,7 @@
 #include "obj_sequence.h"
 #include "render_offscreen.h"
 #include "scene_catalog.h"
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "viewer.h"
 

@@ -5,8 +5,8 @@
 #include <ostream>
 
 #include "io/load_scene.h"
-#include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/shapes/builtin_scenes.h"
 
 #ifndef WOBBLE_ASSETS_DIR
 #define WOBBLE_ASSETS_DIR ""

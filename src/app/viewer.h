@@ -14,7 +14,7 @@
 #include "platform/input_event.h"
 #include "render/camera.h"
 #include "render/renderer.h"
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "ui/control_panel.h"
 #include "vertex_drag.h"

@@ -12,10 +12,10 @@
 #include "io/png_image.h"
 #include "io/read_json_file.h"
 #include "io/read_obj.h"
-#include "sim/face_springs.h"
 #include "sim/input_error.h"
+#include "sim/shapes/face_springs.h"
+#include "sim/shapes/voronoi_masses.h"
 #include "sim/value_limits.h"
-#include "sim/voronoi_masses.h"
 
 namespace wobble {
 

@@ -10,13 +10,13 @@
 #include "io/read_medit_mesh.h"
 #include "io/read_obj.h"
 #include "io/read_tetgen.h"
-#include "sim/face_springs.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
-#include "sim/tet_mesh.h"
-#include "sim/tetrahedralize_surface.h"
+#include "sim/shapes/face_springs.h"
+#include "sim/shapes/tet_mesh.h"
+#include "sim/shapes/tetrahedralize_surface.h"
+#include "sim/shapes/voronoi_masses.h"
 #include "sim/value_limits.h"
-#include "sim/voronoi_masses.h"
 
 namespace wobble {
 

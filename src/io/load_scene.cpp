@@ -10,8 +10,8 @@
 #include "io/read_json_file.h"
 #include "io/scene_pins.h"
 #include "io/wobble_scene.h"
-#include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/shapes/builtin_scenes.h"
 
 namespace wobble {
 

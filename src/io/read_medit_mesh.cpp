@@ -15,7 +15,7 @@
 #include "io/read_text_file.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
-#include "sim/tet_mesh.h"
+#include "sim/shapes/tet_mesh.h"
 
 namespace wobble {
 

@@ -15,7 +15,7 @@
 #include "io/number_word.h"
 #include "io/read_text_file.h"
 #include "sim/input_error.h"
-#include "sim/tet_mesh.h"
+#include "sim/shapes/tet_mesh.h"
 
 namespace wobble {
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <set>
 
-#include "sim/cloth_grid.h"
 #include "sim/input_error.h"
+#include "sim/shapes/cloth_grid.h"
 
 namespace wobble {
 

@@ -8,9 +8,9 @@
 #include "io/png_image.h"
 #include "io/scene_pins.h"
 #include "io/shape_limits.h"
-#include "sim/cloth_grid.h"
 #include "sim/input_error.h"
-#include "sim/jelly_block.h"
+#include "sim/shapes/cloth_grid.h"
+#include "sim/shapes/jelly_block.h"
 #include "sim/value_limits.h"
 
 namespace wobble {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "chebyshev.h"
-#include "cholesky_solver.h"
-#include "local_step.h"
+#include "sim/solver/chebyshev.h"
+#include "sim/solver/cholesky_solver.h"
+#include "sim/solver/local_step.h"
 #include "spring_network.h"
 #include "value_limits.h"
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/cloth_grid.h"
+#include "sim/shapes/cloth_grid.h"
 
 namespace {
 

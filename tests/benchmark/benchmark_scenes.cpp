@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "sim/builtin_scenes.h"
-#include "sim/cloth_grid.h"
-#include "sim/fast_mass_springs_precomputation_sparse.h"
+#include "sim/seed/fast_mass_springs_precomputation_sparse.h"
+#include "sim/shapes/builtin_scenes.h"
+#include "sim/shapes/cloth_grid.h"
 
 namespace wobble::benchmark {
 

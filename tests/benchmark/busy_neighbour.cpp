@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "io/load_scene.h"
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "sim/worker_pool.h"
+#include "sim/solver/worker_pool.h"
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <sstream>
 
 #include "io/course_scene.h"
-#include "sim/fast_mass_springs_precomputation_dense.h"
-#include "sim/fast_mass_springs_step_dense.h"
+#include "sim/seed/fast_mass_springs_precomputation_dense.h"
+#include "sim/seed/fast_mass_springs_step_dense.h"
 #include "sim/simulation.h"
 #include "temporary_folder.h"
 

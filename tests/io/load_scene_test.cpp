@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "io/write_obj.h"
-#include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "temporary_folder.h"
 
 namespace {

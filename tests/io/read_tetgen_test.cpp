@@ -9,7 +9,7 @@
 #include <string>
 
 #include "sim/input_error.h"
-#include "sim/tet_mesh.h"
+#include "sim/shapes/tet_mesh.h"
 #include "temporary_folder.h"
 
 namespace {

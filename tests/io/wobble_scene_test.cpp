@@ -6,8 +6,8 @@
 #include <fstream>
 
 #include "io/load_scene.h"
-#include "sim/builtin_scenes.h"
 #include "sim/input_error.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "temporary_folder.h"
 
 namespace {

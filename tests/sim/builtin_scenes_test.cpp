@@ -1,4 +1,4 @@
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-#include "sim/chebyshev.h"
+#include "sim/solver/chebyshev.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 
 namespace {

@@ -1,10 +1,10 @@
-#include "sim/cholesky_solver.h"
+#include "sim/solver/cholesky_solver.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
 
-#include "sim/cloth_grid.h"
+#include "sim/shapes/cloth_grid.h"
 
 namespace {
 

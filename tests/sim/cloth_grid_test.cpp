@@ -1,4 +1,4 @@
-#include "sim/cloth_grid.h"
+#include "sim/shapes/cloth_grid.h"
 
 #include <gtest/gtest.h>
 

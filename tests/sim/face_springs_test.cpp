@@ -1,4 +1,4 @@
-#include "sim/face_springs.h"
+#include "sim/shapes/face_springs.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The seed functions: the dense forms are the oracle for the sparse ones.
 #include <gtest/gtest.h>
 
-#include "sim/fast_mass_springs_precomputation_dense.h"
-#include "sim/fast_mass_springs_precomputation_sparse.h"
-#include "sim/fast_mass_springs_step_dense.h"
-#include "sim/fast_mass_springs_step_sparse.h"
+#include "sim/seed/fast_mass_springs_precomputation_dense.h"
+#include "sim/seed/fast_mass_springs_precomputation_sparse.h"
+#include "sim/seed/fast_mass_springs_step_dense.h"
+#include "sim/seed/fast_mass_springs_step_sparse.h"
 #include "test_meshes.h"
 
 namespace {

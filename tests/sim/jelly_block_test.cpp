@@ -1,4 +1,4 @@
-#include "sim/jelly_block.h"
+#include "sim/shapes/jelly_block.h"
 
 #include <gtest/gtest.h>
 

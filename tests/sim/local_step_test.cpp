@@ -1,9 +1,9 @@
-#include "sim/local_step.h"
+#include "sim/solver/local_step.h"
 
 #include <gtest/gtest.h>
 
-#include "sim/cloth_grid.h"
-#include "sim/signed_incidence_matrix_sparse.h"
+#include "sim/seed/signed_incidence_matrix_sparse.h"
+#include "sim/shapes/cloth_grid.h"
 
 namespace {
 

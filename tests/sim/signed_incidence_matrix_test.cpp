@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "sim/signed_incidence_matrix_dense.h"
-#include "sim/signed_incidence_matrix_sparse.h"
+#include "sim/seed/signed_incidence_matrix_dense.h"
+#include "sim/seed/signed_incidence_matrix_sparse.h"
 #include "test_meshes.h"
 
 namespace {

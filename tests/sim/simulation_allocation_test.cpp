@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <functional>
 
-#include "sim/builtin_scenes.h"
+#include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 
 // GCC defines __SANITIZE_ADDRESS__ under -fsanitize=address (WOBBLE_SANITIZE); Clang answers

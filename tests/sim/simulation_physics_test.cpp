@@ -5,7 +5,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "sim/cloth_grid.h"
+#include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
 #include "test_meshes.h"
 

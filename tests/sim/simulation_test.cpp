@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/fast_mass_springs_precomputation_sparse.h"
-#include "sim/fast_mass_springs_step_sparse.h"
 #include "sim/input_error.h"
+#include "sim/seed/fast_mass_springs_precomputation_sparse.h"
+#include "sim/seed/fast_mass_springs_step_sparse.h"
 #include "test_meshes.h"
 
 namespace {

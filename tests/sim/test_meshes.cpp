@@ -1,7 +1,7 @@
 #include "test_meshes.h"
 
-#include "sim/cloth_grid.h"
-#include "sim/jelly_block.h"
+#include "sim/shapes/cloth_grid.h"
+#include "sim/shapes/jelly_block.h"
 
 namespace wobble::testing {
 

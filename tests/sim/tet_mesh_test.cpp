@@ -1,4 +1,4 @@
-#include "sim/tet_mesh.h"
+#include "sim/shapes/tet_mesh.h"
 
 #include <gtest/gtest.h>
 

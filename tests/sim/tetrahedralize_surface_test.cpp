@@ -1,4 +1,4 @@
-#include "sim/tetrahedralize_surface.h"
+#include "sim/shapes/tetrahedralize_surface.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 
 #include "sim/input_error.h"
-#include "sim/tet_mesh.h"
+#include "sim/shapes/tet_mesh.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "sim/voronoi_masses.h"
+#include "sim/shapes/voronoi_masses.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "input_error.h"
+#include "sim/input_error.h"
 
 namespace wobble {
 

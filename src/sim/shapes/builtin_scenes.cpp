@@ -1,8 +1,8 @@
 #include "builtin_scenes.h"
 
 #include "cloth_grid.h"
-#include "input_error.h"
 #include "jelly_block.h"
+#include "sim/input_error.h"
 
 namespace wobble {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "input_error.h"
+#include "sim/input_error.h"
 
 namespace wobble {
 

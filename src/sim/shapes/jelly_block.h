@@ -1,7 +1,7 @@
 #ifndef WOBBLE_SIM_JELLY_BLOCK_H
 #define WOBBLE_SIM_JELLY_BLOCK_H
 
-#include "spring_network.h"
+#include "sim/spring_network.h"
 
 namespace wobble {
 

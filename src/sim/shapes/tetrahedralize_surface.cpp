@@ -9,7 +9,7 @@
 #include <tuple>
 #include <vector>
 
-#include "input_error.h"
+#include "sim/input_error.h"
 #include "tet_mesh.h"
 
 namespace wobble {

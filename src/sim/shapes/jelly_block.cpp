@@ -4,7 +4,7 @@
 #include <array>
 #include <string>
 
-#include "input_error.h"
+#include "sim/input_error.h"
 #include "tet_mesh.h"
 
 namespace wobble {

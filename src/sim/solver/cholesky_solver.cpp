@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "input_error.h"
-#include "input_limits.h"
+#include "sim/input_error.h"
+#include "sim/input_limits.h"
 
 namespace wobble {
 
