@@ -5,6 +5,8 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <thread>
 #include <vector>
 
@@ -47,6 +49,34 @@ TEST(WorkerPool, EveryTaskRunsExactlyOnceRunAfterRun) {
       }
     }
   }
+}
+
+TEST(WorkerPool, RunsOnPastTwoToThe32Runs) {
+  // The task counter keeps the run's number in 32 bits. Comparing it with the full number hung
+  // the first run past 2³² (some eight days of stepping): the loop runs on a thread of its own,
+  // so that a hang fails this test instead of stopping the suite.
+  std::atomic<bool> finished{false}, right{true};
+  std::thread([&] {
+    wobble::WorkerPool pool(3, (std::uint64_t{1} << 32) - 50);
+    std::vector<std::atomic<int>> calls(8);
+    auto task = [&](int index) { calls[index].fetch_add(1); };
+    for (int run = 0; run < 200; ++run) {
+      for (std::atomic<int>& call : calls)
+        call.store(0);
+      pool.run(8, task);
+      for (std::atomic<int>& call : calls)
+        right = right && call.load() == 1;
+    }
+    finished = true;
+  }).detach();
+  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!finished && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (!finished) {
+    std::fprintf(stderr, "a run past 2^32 runs never finished\n");
+    std::_Exit(1);
+  }
+  EXPECT_TRUE(right);
 }
 
 TEST(WorkerPool, NoTasksIsNothingToDo) {

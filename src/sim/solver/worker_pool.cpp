@@ -20,6 +20,7 @@ constexpr int poll_rounds = 256;
 // first), and only while that gap is under max_poll_seconds: waking a sleeping thread takes some
 // 20 to 50 µs, which matters between iterations 100 µs apart and not between ones 2 ms apart.
 constexpr double min_poll_seconds = 5e-6, max_poll_seconds = 300e-6;
+constexpr double max_counted_gap_seconds = 1e-3;
 
 inline void cpu_pause() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -101,7 +102,10 @@ int usable_processors() {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-WorkerPool::WorkerPool(int threads) : usable_processors_(usable_processors()) {
+WorkerPool::WorkerPool(int threads, std::uint64_t first_generation)
+    : generation_(first_generation),
+      published_generation_(first_generation),
+      usable_processors_(usable_processors()) {
   for (int t = 1; t < threads; ++t)
     helpers_.emplace_back([this] { helper_loop(); });
 }
@@ -124,7 +128,9 @@ WorkerPool& WorkerPool::shared() {
 bool WorkerPool::claim(std::uint64_t generation, int count, int& index) {
   std::uint64_t next = next_task_.load(std::memory_order_relaxed);
   for (;;) {
-    if ((next >> 32) != generation) return false;
+    // The counter holds the generation's low 32 bits: compare those (after 2³² runs, some
+    // eight days of stepping, the full number no longer fits).
+    if ((next >> 32) != (generation & 0xffffffffu)) return false;
     const int task = static_cast<int>(next & 0xffffffffu);
     if (task >= count) return false;
     if (next_task_.compare_exchange_weak(next, next + 1, std::memory_order_acquire,
@@ -150,7 +156,10 @@ void WorkerPool::run_erased(int count, Call call, void* context, SharingPayoff* 
   // The gaps between runs set how long helpers poll before they sleep. A slowly decaying
   // maximum: the local step's gaps alternate between next to nothing (its second loop) and a
   // global step's length, and a poll must outlast the longer one.
-  gap_seconds_ = std::max(seconds_between(last_run_end_, start), 0.875 * gap_seconds_);
+  // A gap is counted at most as max_counted_gap_seconds, so that a pause (or the first run)
+  // does not stop the polling for long after it.
+  gap_seconds_ = std::max(std::min(seconds_between(last_run_end_, start), max_counted_gap_seconds),
+                          0.875 * gap_seconds_);
   // A polling helper with no core of its own takes turns with the caller, and slows what the
   // caller does between runs (the global step): poll only while a core is free.
   if (!helpers_.empty() &&
@@ -193,7 +202,7 @@ void WorkerPool::run_shared(int count, Call call, void* context) {
     job_ = {call, context, count};
     generation = ++generation_;
     done_.store(0, std::memory_order_relaxed);
-    next_task_.store(generation << 32, std::memory_order_release);
+    next_task_.store((generation & 0xffffffffu) << 32, std::memory_order_release);
     published_generation_.store(generation, std::memory_order_release);
   }
   wake_.notify_all();  // no system call when every helper is still polling

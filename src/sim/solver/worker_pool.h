@@ -56,7 +56,8 @@ class SharingPayoff {
 class WorkerPool {
  public:
   // threads  the caller plus threads − 1 helpers (1: everything runs on the caller).
-  explicit WorkerPool(int threads);
+  // first_generation  the count of runs to start from (tests: the counter's wrap-around).
+  explicit WorkerPool(int threads, std::uint64_t first_generation = 0);
   ~WorkerPool();
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
