@@ -1,6 +1,7 @@
 #include "atomic_file.h"
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,7 +36,8 @@ extern "C" void remove_temporary_and_end(int signal_number) {
   raise(signal_number);
 }
 
-// SIGTERM and SIGINT held back for the lifetime of this object, so that a temporary file is
+// SIGTERM and SIGINT held back on this thread for the lifetime of this object (Wobble's other
+// threads, the worker pool's helpers, block every signal), so that a temporary file is
 // never made, renamed or removed without the handler knowing.
 class TerminationBlocked {
  public:
@@ -44,9 +46,9 @@ class TerminationBlocked {
     sigemptyset(&blocked);
     sigaddset(&blocked, SIGTERM);
     sigaddset(&blocked, SIGINT);
-    sigprocmask(SIG_BLOCK, &blocked, &previous_);
+    pthread_sigmask(SIG_BLOCK, &blocked, &previous_);
   }
-  ~TerminationBlocked() { sigprocmask(SIG_SETMASK, &previous_, nullptr); }
+  ~TerminationBlocked() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
   TerminationBlocked(const TerminationBlocked&) = delete;
   TerminationBlocked& operator=(const TerminationBlocked&) = delete;
 

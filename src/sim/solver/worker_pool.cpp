@@ -7,6 +7,10 @@
 #include <sched.h>
 #include <unistd.h>
 #endif
+#if defined(__unix__)
+#include <pthread.h>
+#include <signal.h>
+#endif
 
 namespace wobble {
 
@@ -106,8 +110,19 @@ WorkerPool::WorkerPool(int threads, std::uint64_t first_generation)
     : generation_(first_generation),
       published_generation_(first_generation),
       usable_processors_(usable_processors()) {
+#if defined(__unix__)
+  // Helpers start with every signal blocked (they inherit the mask), so that signals go to the
+  // program's own threads: a handler, such as the one that removes a temporary file on SIGTERM,
+  // never runs on a helper while the main thread holds the signal back.
+  sigset_t all, previous;
+  sigfillset(&all);
+  pthread_sigmask(SIG_SETMASK, &all, &previous);
+#endif
   for (int t = 1; t < threads; ++t)
     helpers_.emplace_back([this] { helper_loop(); });
+#if defined(__unix__)
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+#endif
 }
 
 WorkerPool::~WorkerPool() {
