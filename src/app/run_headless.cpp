@@ -66,9 +66,7 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   ImageOutputs outputs(command.screenshot, command.record, frames, progress);
   if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Viewer viewer = naming_scene(command.scene, [&] {
-    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
-  });
+  Viewer viewer = open_viewer(command);
   print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
 
   OffscreenOptions options;

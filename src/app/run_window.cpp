@@ -45,9 +45,7 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   // Everything that can be refused is checked before a window appears.
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
-  Viewer viewer = naming_scene(command.scene, [&] {
-    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
-  });
+  Viewer viewer = open_viewer(command);
 
   GlfwWindow window(command.width, command.height, "Wobble: " + viewer.scene().name);
   const float ui_scale = window.content_scale();

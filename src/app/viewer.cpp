@@ -38,6 +38,12 @@ void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Ve
 
 }  // namespace
 
+Viewer open_viewer(const CommandLine& command) {
+  return naming_scene(command.scene, [&] {
+    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
+  });
+}
+
 ViewerSettings viewer_settings(const CommandLine& command) {
   ViewerSettings settings;
   settings.k = command.k;

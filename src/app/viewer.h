@@ -124,6 +124,10 @@ class Viewer {
   std::unique_ptr<Renderer> renderer_;
 };
 
+// The viewer of the scene the command line names, with its start-up settings and the scene
+// picker's catalogue. An InputError from starting its simulation names the scene.
+Viewer open_viewer(const CommandLine& command);
+
 }  // namespace wobble
 
 #endif
