@@ -78,6 +78,18 @@ Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::In
   return L;
 }
 
+// The contact offset a scene asked for, or else 0.15 times the median spring rest length: enough
+// to keep the flat triangles between contact vertices out of a curved collider, small enough
+// not to be seen as a gap (a 40×40 cloth of 1 m: 5 mm).
+double resolved_contact_offset(double asked, const Eigen::VectorXd& rest_lengths,
+                               double rest_diagonal) {
+  if (asked >= 0.0) return asked;
+  if (rest_lengths.size() == 0) return 0.005 * rest_diagonal;
+  std::vector<double> lengths(rest_lengths.data(), rest_lengths.data() + rest_lengths.size());
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return 0.15 * lengths[lengths.size() / 2];
+}
+
 }  // namespace
 
 void validate_simulation_params(const SimulationParams& params) {
@@ -97,6 +109,30 @@ void validate_simulation_params(const SimulationParams& params) {
   const std::string gravity =
       outside_limits(params.gravity.array(), limits::acceleration, "gravity components");
   if (!gravity.empty()) throw InputError(gravity);
+  if (!limits::damping.contains(params.damping)) {
+    throw InputError("damping: expected " + expected_in(limits::damping) + ", got " +
+                     limit_text(params.damping));
+  }
+  validate_wind(params.wind);
+  const ContactParams& contact = params.contact;
+  if (!limits::friction.contains(contact.friction)) {
+    throw InputError("friction: expected " + expected_in(limits::friction) + ", got " +
+                     limit_text(contact.friction));
+  }
+  if (contact.offset >= 0.0 || std::isnan(contact.offset)) {
+    if (!limits::contact_offset.contains(contact.offset)) {
+      throw InputError("contact offset: expected " + expected_in(limits::contact_offset) +
+                       ", got " + limit_text(contact.offset));
+    }
+  }
+  if (contact.colliders.size() > static_cast<std::size_t>(limits::max_colliders)) {
+    throw InputError("at most " + std::to_string(limits::max_colliders) + " colliders, got " +
+                     std::to_string(contact.colliders.size()));
+  }
+  for (std::size_t c = 0; c < contact.colliders.size(); ++c) {
+    Collider copy = contact.colliders[c];
+    validate_collider(copy, "collider " + std::to_string(c));
+  }
 }
 
 Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
@@ -107,6 +143,8 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   const auto start = Clock::now();
   validate_spring_network(network_);
   validate_simulation_params(params_);
+  for (std::size_t c = 0; c < params_.contact.colliders.size(); ++c)
+    validate_collider(params_.contact.colliders[c], "collider " + std::to_string(c));
   const Eigen::Index n = network_.V.rows();
   if (initial_velocity_.size() != 0) check_vertex_matrix(initial_velocity_, n, "initial velocity");
   for (int i : pins) {
@@ -139,6 +177,10 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   const double diagonal =
       n == 0 ? 0.0 : (network_.V.colwise().maxCoeff() - network_.V.colwise().minCoeff()).norm();
   jump_limit_ = 100.0 * (diagonal > 0.0 ? diagonal : 1.0);  // a single vertex: 1 m
+  rest_diagonal_ = diagonal > 0.0 ? diagonal : 1.0;
+  contact_ = ColliderContact(params_.contact.colliders, params_.contact.friction,
+                             resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_));
+  rebuild_forces();
   chebyshev_ = ChebyshevAcceleration(n);
   solved_.resize(n, 3);
   previous_.resize(n, 3);
@@ -168,7 +210,9 @@ void Simulation::reset() {
   if (initial_velocity_.size() != 0) previous_ -= params_.dt * initial_velocity_;
   targets_ = network_.V;
   steps_taken_ = 0;
+  time_ = 0.0;
   last_status_ = StepStatus::ok;
+  contact_ = ColliderContact(params_.contact.colliders, contact_.friction(), contact_.offset());
 
   std::vector<char> initial(pinned_.size(), 0);
   for (int i : initial_pins_)
@@ -191,6 +235,9 @@ StepStatus Simulation::step() {
   const auto step_start = Clock::now();
   const double k = params_.k;
 
+  const auto forces_start = Clock::now();
+  apply_forces();
+  const double forces_ms = milliseconds_since(forces_start);
   compute_y();
 
   start_iterate();
@@ -214,14 +261,22 @@ StepStatus Simulation::step() {
     if (observer_) observer_(iteration, next_);
   }
 
+  const auto contact_start = Clock::now();
+  contact_.project(step_context(), next_);
+  const double contact_ms = milliseconds_since(contact_start);
+
   last_status_ = check_step();
   if (last_status_ == StepStatus::ok) {
     previous_.swap(current_);
     current_.swap(next_);
     ++steps_taken_;
+    time_ += params_.dt;
+    contact_.end_step();
   }
   timing_.local_ms = local_ms;
   timing_.global_ms = global_ms;
+  timing_.forces_ms = forces_ms;
+  timing_.contact_ms = contact_ms;
   timing_.total_ms = milliseconds_since(step_start);
   return last_status_;
 }
@@ -258,9 +313,10 @@ std::string Simulation::describe(StepStatus status) {
 }
 
 void Simulation::compute_y() {
-  // y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
+  // y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
   const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
-  y_.noalias() = network_.m.asDiagonal() * (2.0 * current_ - previous_);
+  const double damped = 2.0 + params_.damping * params_.dt;
+  y_.noalias() = network_.m.asDiagonal() * (damped * current_ - previous_);
   y_ *= inverse_dt2;
   y_ += fext_;
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
@@ -270,7 +326,13 @@ void Simulation::compute_y() {
 
 void Simulation::start_iterate() {
   if (params_.first_iterate == FirstIterate::inertial_prediction) {
-    next_ = 2.0 * current_ - previous_;
+    // ((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/(1 + cΔt): where inertia and damping alone carry each vertex.
+    if (params_.damping == 0.0) {
+      next_ = 2.0 * current_ - previous_;
+    } else {
+      const double cdt = params_.damping * params_.dt;
+      next_ = ((2.0 + cdt) * current_ - previous_) / (1.0 + cdt);
+    }
   } else {
     next_ = current_;
   }
@@ -305,8 +367,12 @@ double Simulation::step_energy(const Eigen::MatrixXd& p) const {
     const double stretch = (p.row(E(e, 0)) - p.row(E(e, 1))).norm() - r_(e);
     springs += stretch * stretch;
   }
-  const Eigen::MatrixXd acceleration = p - 2.0 * current_ + previous_;
-  const double inertia = (network_.m.array() * acceleration.rowwise().squaredNorm().array()).sum() /
+  // (1 + cΔt)/(2Δt²)‖p − p̂‖²_M with p̂ = ((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/(1 + cΔt): the damped inertia
+  // term, equal to the one Q and y encode up to a constant.
+  const double cdt = params_.damping * params_.dt;
+  const Eigen::MatrixXd acceleration = p - ((2.0 + cdt) * current_ - previous_) / (1.0 + cdt);
+  const double inertia = (1.0 + cdt) *
+                         (network_.m.array() * acceleration.rowwise().squaredNorm().array()).sum() /
                          (2.0 * params_.dt * params_.dt);
   double pins = 0.0;
   for (std::size_t i = 0; i < pinned_.size(); ++i) {
@@ -330,21 +396,45 @@ void Simulation::check_vertex(int i, const char* what) const {
 void Simulation::update_external_forces() {
   const Eigen::RowVector3d g = params_.gravity.transpose();
   if (params_.gravity_model == GravityModel::acceleration) {
-    fext_ = network_.m * g;
+    gravity_fext_ = network_.m * g;
   } else {
-    fext_ = g.replicate(network_.V.rows(), 1);
+    gravity_fext_ = g.replicate(network_.V.rows(), 1);
+  }
+  fext_ = gravity_fext_;
+}
+
+void Simulation::rebuild_forces() {
+  forces_.clear();
+  if (!params_.wind.on) return;
+  if (params_.wind.model == WindModel::course) {
+    forces_.push_back(std::make_unique<CourseWind>(rest_diagonal_));
+  } else {
+    forces_.push_back(std::make_unique<AerodynamicWind>(params_.wind));
   }
 }
 
+StepContext Simulation::step_context() const {
+  return StepContext{network_, current_, previous_, pinned_, params_.dt, time_};
+}
+
+void Simulation::apply_forces() {
+  if (forces_.empty()) return;  // fext_ already holds gravity alone
+  fext_ = gravity_fext_;
+  const StepContext context = step_context();
+  for (const auto& force : forces_)
+    force->apply_forces(context, fext_);
+}
+
 void Simulation::refactorize() {
-  // Q = k AᵀA + M/Δt² + w CᵀC, written into the fixed pattern.
+  // Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC, written into the fixed pattern.
   const double* laplacian = laplacian_.valuePtr();
   double* q = Q_.valuePtr();
   for (Eigen::Index s = 0; s < Q_.nonZeros(); ++s)
     q[s] = params_.k * laplacian[s];
-  const double inverse_dt2 = 1.0 / (params_.dt * params_.dt);
+  // Damping scales the inertia term by (1 + cΔt).
+  const double inertia = (1.0 + params_.damping * params_.dt) / (params_.dt * params_.dt);
   for (std::size_t i = 0; i < diagonal_slot_.size(); ++i) {
-    q[diagonal_slot_[i]] += network_.m(i) * inverse_dt2 + (pinned_[i] ? pin_weight : 0.0);
+    q[diagonal_slot_[i]] += network_.m(i) * inertia + (pinned_[i] ? pin_weight : 0.0);
   }
   ++numeric_factorizations_;
   if (!solver_.factorize(Q_)) throw std::runtime_error("the Cholesky factorization of Q failed");

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "sim/contact/collider_contact.h"
+#include "sim/forces/wind.h"
 #include "sim/solver/chebyshev.h"
 #include "sim/solver/cholesky_solver.h"
 #include "sim/solver/local_step.h"
@@ -44,6 +46,14 @@ struct SimulationParams {
   // (see CholeskySolver::set_single_precision_above): only the largest scenes, whose factor no
   // longer fits in cache. Course scenes never get near it.
   long single_precision_solve_above = CholeskySolver::default_single_precision_above;
+  // Mass-proportional damping c (1/s), folded into the inertia term: with no other force every
+  // velocity decays by (1 + cΔt) each step, as exp(−ct) for small Δt. 0: none (course scenes).
+  double damping = 0.0;
+  // Wind, an explicit force each step (see sim/forces/wind.h). Off unless a scene or the user
+  // turns it on.
+  WindParams wind;
+  // Colliders, friction and the contact offset (see sim/contact/collider_contact.h).
+  ContactParams contact;
 };
 
 // Throws InputError unless k, dt, iterations and gravity are within the limits of
@@ -55,6 +65,8 @@ void validate_simulation_params(const SimulationParams& params);
 struct StepTiming {
   double local_ms = 0.0;
   double global_ms = 0.0;
+  double forces_ms = 0.0;   // wind
+  double contact_ms = 0.0;  // collider projection and friction
   double total_ms = 0.0;
 };
 
@@ -74,16 +86,21 @@ enum class StepStatus {
 //   ½k Σ(‖pᵢ−pⱼ‖−rᵢⱼ)² + (1/2Δt²)‖p − 2pᵗ + pᵗ⁻ᐞᵗ‖²_M − pᵀf_ext + (w/2)‖Cp − C p_target‖²
 // with `iterations` local-global iterations starting from pᵗ:
 //   local:  d_e = r_e (p_i − p_j)/‖p_i − p_j‖
-//   global: Q p = k Aᵀd + y,  Q = k AᵀA + M/Δt² + w CᵀC,
-//           y = M(2pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10.
-// With every pin target at its rest position this is exactly fast_mass_springs_step_sparse.
+//   global: Q p = k Aᵀd + y,  Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC,
+//           y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10,
+// c the damping (0 by default). Forces (wind) are added to f_ext at the start of the step;
+// contact moves the solved positions out of the colliders after the last iteration (neither
+// ever changes Q). With every pin target at its rest position, no damping, no wind and no
+// collider this is exactly fast_mass_springs_step_sparse.
 //
 // Cost of each change:
 //   set_pin_target           right-hand side only: no factorization
 //   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
-//   unpin, reset               (Q's sparsity pattern never changes: its diagonal is always stored)
+//   unpin, reset,              (Q's sparsity pattern never changes: its diagonal is always stored)
+//   set_damping
 //   set_iterations, gravity, nothing precomputed
-//   set_state
+//   set_state, set_wind,
+//   set_friction, colliders
 class Simulation {
  public:
   static constexpr double pin_weight = 1e10;  // w
@@ -110,8 +127,9 @@ class Simulation {
   double jump_limit() const { return jump_limit_; }
   // One line for a user about a failed step, with what to try.
   static std::string describe(StepStatus status);
-  // Back to the initial state: rest positions, initial velocity, initial pins at rest targets.
-  // Parameters (k, dt, iterations, gravity) keep their current values.
+  // Back to the initial state: rest positions, initial velocity, initial pins at rest targets,
+  // colliders where the scene placed them, time 0. Parameters (k, dt, iterations, gravity,
+  // damping, wind, friction) keep their current values.
   void reset();
   // Replace the state: positions at the current and previous time steps, each #V by 3 (m).
   // Pins, targets and parameters are unchanged. Throws InputError for a wrong shape or a
@@ -130,6 +148,23 @@ class Simulation {
   // The spectral radius the acceleration uses; 0 until estimated.
   double chebyshev_spectral_radius() const { return chebyshev_.spectral_radius(); }
   void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
+  // Damping c (1/s), within limits::damping: a numeric re-factorization.
+  void set_damping(double damping);
+  // Wind on, off or changed; nothing precomputed. Throws InputError for values out of limits.
+  void set_wind(const WindParams& wind);
+  // The material's friction coefficient against every collider without its own.
+  void set_friction(double friction);
+
+  // The colliders where they are now (reset() puts them back where the scene placed them).
+  const std::vector<Collider>& colliders() const { return contact_.colliders(); }
+  // Moves collider `index` rigidly by `offset` (m). Throws std::out_of_range for a bad index.
+  void translate_collider(int index, const Eigen::Vector3d& offset);
+  // The contact offset in use (m): the scene's, or the automatic one.
+  double contact_offset() const { return contact_.offset(); }
+  // Vertices the last step moved out of a collider.
+  int contact_count() const { return contact_.contact_count(); }
+  // Simulated time (s): the sum of the accepted steps' Δt since the start or the last reset.
+  double time() const { return time_; }
 
   // Pin vertex i where it is now (target = current position). No-op if already pinned.
   void pin(int i);
@@ -177,6 +212,10 @@ class Simulation {
  private:
   void check_vertex(int i, const char* what) const;
   void update_external_forces();
+  // fext_ = gravity plus this step's forces (wind).
+  void apply_forces();
+  void rebuild_forces();
+  StepContext step_context() const;
   // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
   void refactorize();
   void calibrate_chebyshev();
@@ -196,7 +235,12 @@ class Simulation {
   Eigen::MatrixXd targets_;  // #V by 3; meaningful at pinned rows only
 
   Eigen::MatrixXd previous_, current_, next_;  // pᵗ⁻ᐞᵗ, pᵗ and the iterate, #V by 3
+  Eigen::MatrixXd gravity_fext_;               // #V by 3 gravity alone (N)
   Eigen::MatrixXd fext_, y_, rhs_;             // #V by 3 buffers kept to avoid allocation
+  std::vector<std::unique_ptr<ForceTerm>> forces_;
+  ColliderContact contact_;
+  double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
+  double time_ = 0.0;
 
   Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored
   Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_

@@ -73,6 +73,35 @@ void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
   targets_.row(i) = target.transpose();
 }
 
+void Simulation::set_damping(double damping) {
+  SimulationParams changed = params_;
+  changed.damping = damping;
+  validate_simulation_params(changed);
+  if (damping == params_.damping) return;
+  params_.damping = damping;
+  refactorize();
+}
+
+void Simulation::set_wind(const WindParams& wind) {
+  validate_wind(wind);
+  params_.wind = wind;
+  rebuild_forces();
+  if (forces_.empty()) fext_ = gravity_fext_;
+}
+
+void Simulation::set_friction(double friction) {
+  SimulationParams changed = params_;
+  changed.contact.friction = friction;
+  validate_simulation_params(changed);
+  params_.contact.friction = friction;
+  contact_.set_friction(friction);
+}
+
+void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
+  if (!offset.allFinite()) throw std::invalid_argument("translate_collider: offset is not finite");
+  contact_.translate(index, offset);
+}
+
 bool Simulation::is_pinned(int i) const {
   check_vertex(i, "is_pinned");
   return pinned_[i] != 0;

@@ -44,6 +44,20 @@ inline constexpr ValueRange scale{1e-6, 1e6, ""};
 inline constexpr ValueRange size{1e-3, 1e3, "m"};
 inline constexpr ValueRange coordinate{-1e6, 1e6, "m"};
 
+// Damping c (1/s): velocities decay as (1 + cΔt)⁻ⁿ; beyond 1000/s everything stops in a step.
+inline constexpr ValueRange damping{0.0, 1000.0, "1/s"};
+// Coulomb friction coefficient μ (material and colliders).
+inline constexpr ValueRange friction{0.0, 10.0, ""};
+// Wind: aerodynamic coefficients, relative gust strength, air density.
+inline constexpr ValueRange aerodynamic_coefficient{0.0, 100.0, ""};
+inline constexpr ValueRange gust_strength{0.0, 1.0, ""};
+inline constexpr ValueRange air_density{0.0, 1e4, "kg/m³"};
+// Colliders: sizes (radius, box edges) and the contact offset, and how many a scene may have
+// (every vertex is tested against every collider each step).
+inline constexpr ValueRange collider_size{1e-4, 1e4, "m"};
+inline constexpr ValueRange contact_offset{0.0, 10.0, "m"};
+inline constexpr int max_colliders = 64;
+
 // Generated meshes: the largest of each that loads and takes its first step in a few seconds.
 inline constexpr int max_cloth_resolution = 256;  // vertices a side: 65,536 vertices
 inline constexpr int max_jelly_resolution = 24;   // cells a side: 15,625 vertices

@@ -1,0 +1,66 @@
+#include "sim/contact/collider_contact.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace wobble {
+
+ColliderContact::ColliderContact(std::vector<Collider> colliders, double friction, double offset)
+    : colliders_(std::move(colliders)),
+      motion_(colliders_.size(), Eigen::Vector3d::Zero()),
+      friction_(friction),
+      offset_(offset) {}
+
+void ColliderContact::project(const StepContext& step, Eigen::MatrixXd& next) {
+  contact_count_ = 0;
+  if (colliders_.empty()) return;
+  // A vertex pushed out of one collider can land in another (a box standing on the ground): a
+  // second pass settles such corners.
+  const int passes = colliders_.size() > 1 ? 2 : 1;
+  for (Eigen::Index i = 0; i < next.rows(); ++i) {
+    bool touched = false;
+    for (int pass = 0; pass < passes; ++pass) {
+      for (std::size_t c = 0; c < colliders_.size(); ++c) {
+        const Collider& collider = colliders_[c];
+        Eigen::Vector3d p = next.row(i).transpose();
+        const ColliderSurface surface = collider_surface(collider, p);
+        const double depth = offset_ - surface.distance;
+        if (!(depth > 0.0)) continue;
+        touched = true;
+        p += depth * surface.normal;
+        // A pinned vertex follows its target, not the surface's friction.
+        if (!step.pinned[i]) {
+          const double mu = collider.friction >= 0.0 ? collider.friction : friction_;
+          if (mu > 0.0) {
+            const Eigen::Vector3d moved = p - step.current.row(i).transpose() - motion_[c];
+            const Eigen::Vector3d tangential = moved - moved.dot(surface.normal) * surface.normal;
+            const double slide = tangential.norm();
+            const double budget = mu * depth;
+            p -= slide <= budget ? tangential : tangential * (budget / slide);
+            // Undoing a slide along a curved surface can dip back in by its sagitta.
+            const ColliderSurface again = collider_surface(collider, p);
+            if (again.distance < offset_) p += (offset_ - again.distance) * again.normal;
+          }
+        }
+        next.row(i) = p.transpose();
+      }
+    }
+    if (touched) ++contact_count_;
+  }
+}
+
+void ColliderContact::end_step() {
+  for (Eigen::Vector3d& motion : motion_)
+    motion.setZero();
+}
+
+void ColliderContact::translate(int index, const Eigen::Vector3d& offset) {
+  if (index < 0 || index >= static_cast<int>(colliders_.size())) {
+    throw std::out_of_range("translate_collider: collider " + std::to_string(index) +
+                            " does not exist");
+  }
+  translate_collider(colliders_[index], offset);
+  motion_[index] += offset;
+}
+
+}  // namespace wobble

@@ -1,0 +1,59 @@
+#ifndef WOBBLE_SIM_CONTACT_COLLIDER_CONTACT_H
+#define WOBBLE_SIM_CONTACT_COLLIDER_CONTACT_H
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/contact/collider.h"
+#include "sim/step_terms.h"
+
+namespace wobble {
+
+// Contact as a scene sets it up.
+struct ContactParams {
+  std::vector<Collider> colliders;
+  double friction = 0.0;  // Coulomb coefficient μ of the material against every collider
+  // Vertices are kept this far outside every collider (m), so that the triangles between them
+  // do not dip into it. Negative: automatic, 0.15 times the median spring rest length.
+  double offset = -1.0;
+};
+
+// Vertices against colliders, with Coulomb friction, without ever touching Q.
+//
+// After the iterations every vertex closer than the offset to a collider is moved out along the
+// surface normal by its penetration depth δ. Friction then acts on the tangential part t of its
+// motion over the step relative to the collider: with μδ ≥ ‖t‖ the vertex sticks (t is undone),
+// otherwise t shrinks by μδ. δ is the normal impulse Δt²·F/m the collider had to supply, so this
+// is Coulomb's law with equal static and kinetic coefficients. Restitution is 0: the next step's
+// velocity (pᵗ⁺ᐞᵗ − pᵗ)/Δt has no normal part into the surface.
+class ColliderContact : public PositionConstraint {
+ public:
+  ColliderContact() = default;
+  // `offset` must already be resolved (not negative).
+  ColliderContact(std::vector<Collider> colliders, double friction, double offset);
+
+  void project(const StepContext& step, Eigen::MatrixXd& next) override;
+  void end_step() override;
+
+  const std::vector<Collider>& colliders() const { return colliders_; }
+  // Moves collider `index` rigidly; the move counts as the collider's motion over the next step
+  // (so a dragged box carries a resting cloth along by friction).
+  void translate(int index, const Eigen::Vector3d& offset);
+  void set_friction(double friction) { friction_ = friction; }
+  double friction() const { return friction_; }
+  double offset() const { return offset_; }
+  // Vertices moved out of a collider by the last projection.
+  int contact_count() const { return contact_count_; }
+  bool empty() const { return colliders_.empty(); }
+
+ private:
+  std::vector<Collider> colliders_;
+  std::vector<Eigen::Vector3d> motion_;  // each collider's translation since the last step
+  double friction_ = 0.0;
+  double offset_ = 0.0;
+  int contact_count_ = 0;
+};
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,47 @@
+#ifndef WOBBLE_SIM_STEP_TERMS_H
+#define WOBBLE_SIM_STEP_TERMS_H
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "spring_network.h"
+
+namespace wobble {
+
+// What a force or a constraint sees of the step about to be taken (or just solved).
+struct StepContext {
+  const SpringNetwork& rest;        // rest shape, springs, render triangles, masses
+  const Eigen::MatrixXd& current;   // #V by 3 pᵗ (m)
+  const Eigen::MatrixXd& previous;  // #V by 3 pᵗ⁻ᐞᵗ (m)
+  const std::vector<char>& pinned;  // #V flags
+  double dt;                        // Δt (s)
+  double time;                      // simulated time at the start of the step (s)
+};
+
+// The stepper's two hooks. Neither may change Q: forces act through f_ext (explicit, evaluated
+// once at the start of a step), constraints move the solved positions after the iterations.
+
+// Adds (or, for the course's wind, partly replaces) external forces, #V by 3 in N, before a step.
+// `fext` arrives holding gravity.
+class ForceTerm {
+ public:
+  virtual ~ForceTerm() = default;
+  virtual void apply_forces(const StepContext& step, Eigen::MatrixXd& fext) const = 0;
+};
+
+// Moves the step's solved positions `next` (#V by 3, m) to satisfy a constraint the springs do
+// not know about (contact), after the last iteration; it may also add a penalty to the
+// right-hand side of each global solve. `end_step` is called once the step is accepted.
+class PositionConstraint {
+ public:
+  virtual ~PositionConstraint() = default;
+  // rhs (#V by 3) of the next global solve, given the iterate p; Qdiag is Q's diagonal.
+  virtual void add_penalty(const Eigen::MatrixXd& /*p*/, const Eigen::VectorXd& /*Qdiag*/,
+                           Eigen::MatrixXd& /*rhs*/) {}
+  virtual void project(const StepContext& step, Eigen::MatrixXd& next) = 0;
+  virtual void end_step() {}
+};
+
+}  // namespace wobble
+
+#endif
