@@ -1,5 +1,7 @@
 #include "sim/forces/wind.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <string>
 
