@@ -219,6 +219,8 @@ class Simulation {
   // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
   void refactorize();
   void calibrate_chebyshev();
+  // next_ = the accelerated iterate from next_ and the plain solve solved_; see step().
+  void accelerate(int iteration, bool restart_on_growth);
   // next_ = the first iterate of a step, as params_.first_iterate says.
   void start_iterate();
   void compute_y();
@@ -248,6 +250,8 @@ class Simulation {
   CholeskySolver solver_;
   ChebyshevAcceleration chebyshev_{0};
   bool chebyshev_calibrated_ = false;
+  double last_update_ = 0.0;    // ‖q̂ − q‖² of the last accelerated iteration
+  int restart_iteration_ = 0;   // where the recurrence last restarted in this step
   Eigen::MatrixXd solved_;  // the plain iterate q̂, when accelerating
   std::unique_ptr<LocalStep> local_step_;
 

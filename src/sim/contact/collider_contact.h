@@ -14,7 +14,7 @@ struct ContactParams {
   std::vector<Collider> colliders;
   double friction = 0.0;  // Coulomb coefficient μ of the material against every collider
   // Vertices are kept this far outside every collider (m), so that the triangles between them
-  // do not dip into it. Negative: automatic, 0.15 times the median spring rest length.
+  // do not dip into it. Negative: automatic, a tenth of the median spring rest length.
   double offset = -1.0;
 };
 
