@@ -18,7 +18,8 @@ WindParams scene_wind(JsonFields& simulation, const std::string& key,
   wind.drag = fields.number_in("drag", limits::aerodynamic_coefficient).value_or(wind.drag);
   wind.lift = fields.number_in("lift", limits::aerodynamic_coefficient).value_or(wind.lift);
   wind.gusts = fields.number_in("gusts", limits::gust_strength).value_or(wind.gusts);
-  wind.air_density = fields.number_in("air_density", limits::air_density).value_or(wind.air_density);
+  wind.air_density =
+      fields.number_in("air_density", limits::air_density).value_or(wind.air_density);
   wind.on = fields.flag("on").value_or(true);
   for (const std::string& name : fields.unread())
     unknown.push_back(name);

@@ -210,7 +210,8 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     for (const std::string& key : simulation.unread())
       unknown.push_back(key);
   }
-  if (top.has("colliders")) scene.params.contact.colliders = scene_colliders(path, top, "colliders");
+  if (top.has("colliders"))
+    scene.params.contact.colliders = scene_colliders(path, top, "colliders");
 
   if (top.has("pins")) {
     scene.pins = scene_pins(top, "pins", scene.network.V, shape.cloth_resolution);

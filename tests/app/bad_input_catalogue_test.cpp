@@ -644,9 +644,8 @@ std::vector<BadInput> contact_catalogue() {
   too_many += "]";
   return {
       {"collider_negative_radius",
-       {{"c.json",
-         scene("\"colliders\": [{\"type\": \"ground\"}, {\"type\": \"sphere\", "
-               "\"center\": [0, 0, 0], \"radius\": -1}]")}},
+       {{"c.json", scene("\"colliders\": [{\"type\": \"ground\"}, {\"type\": \"sphere\", "
+                         "\"center\": [0, 0, 0], \"radius\": -1}]")}},
        "{dir}/c.json",
        {"c.json", "colliders[1].radius", "positive number within the limits 0.0001 to 10000 m",
         "got -1"}},
@@ -711,8 +710,7 @@ std::vector<BadInput> contact_catalogue() {
        "{dir}/o.json",
        {"o.json", "simulation.contact_offset", "0 to 10 m"}},
       {"wind_gusts_above_limit",
-       {{"w.json",
-         scene("\"simulation\": {\"wind\": {\"velocity\": [4, 0, 1], \"gusts\": 2}}")}},
+       {{"w.json", scene("\"simulation\": {\"wind\": {\"velocity\": [4, 0, 1], \"gusts\": 2}}")}},
        "{dir}/w.json",
        {"w.json", "simulation.wind.gusts", "0 to 1", "got 2"}},
       {"wind_missing_velocity",

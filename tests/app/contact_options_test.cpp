@@ -85,8 +85,9 @@ TEST(ContactOptions, WindOnACourseSceneIsTheCourseWind) {
 
 TEST(ContactOptions, OutOfRangeValuesNameTheOption) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"--damping", "-1"}, "--damping: expected a number within the limits 0 to 1000 1/s, "
-                            "got '-1'"},
+      {{"--damping", "-1"},
+       "--damping: expected a number within the limits 0 to 1000 1/s, "
+       "got '-1'"},
       {{"--damping", "nan"}, "--damping: expected a number"},
       {{"--damping", "2000"}, "--damping: expected"},
       {{"--friction", "11"}, "--friction: expected a number within the limits 0 to 10, got '11'"},

@@ -129,7 +129,7 @@ TEST(ContactKeys, PinsNoneGivesNoPinsOnEveryShape) {
   TemporaryFolder folder;
   // A tetrahedron as a surface (OBJ, also filled) and as a volume (MEDIT).
   std::ofstream(folder.file("tet.obj")) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
-                                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+                                           "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   std::ofstream(folder.file("tet.mesh")) << "MeshVersionFormatted 1\nDimension 3\nVertices\n4\n"
                                             "0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n"
                                             "Tetrahedra\n1\n1 2 3 4 1\nEnd\n";
