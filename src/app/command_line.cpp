@@ -103,16 +103,17 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
-  app.add_option("--damping", damping,
-                 "Damping in 1/s: velocities decay as (1 + damping*dt)^-steps (default 0)");
-  app.add_option("--friction", friction,
-                 "Friction coefficient against the colliders (scene default otherwise)");
-  app.add_flag("--wind", command.wind,
-               "Turn the wind on: the scene's, or a default breeze (course scenes: the course "
-               "wind)");
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
   app.add_flag("--chebyshev", command.chebyshev,
                "Chebyshev acceleration of the iterations (Wang 2015)");
+  app.add_option("--damping", damping,
+                 "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, "
+                 "0)");
+  app.add_option("--friction", friction,
+                 "Coulomb friction coefficient against the colliders (scene default otherwise, 0)");
+  app.add_flag("--wind", command.wind,
+               "Turn the wind on: the scene's, or a default breeze (course scenes: the course "
+               "wind)");
   std::vector<std::string> drags;
   app.add_option("--drag", drags,
                  "Drag a vertex: VERTEX:DX,DY,DZ@FRAME (over 30 frames) or @FRAME-LAST; "
