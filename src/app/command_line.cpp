@@ -42,6 +42,16 @@ double number_in(const char* option, const std::string& text, const ValueRange& 
   return *value;
 }
 
+// A value of `range` that may be 0 (damping, friction): "expected a number within ...".
+double number_from_zero(const char* option, const std::string& text, const ValueRange& range) {
+  const std::optional<double> value = parse_number<double>(text);
+  if (!value || !range.contains(*value)) {
+    throw InputError(std::string(option) + ": expected " + expected_in(range) + ", got '" + text +
+                     "'");
+  }
+  return *value;
+}
+
 long whole_number(const char* option, const std::string& text, long limit) {
   const std::optional<long> value = parse_number<long>(text);
   if (!value || *value < 1 || *value > limit) {
@@ -83,7 +93,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, obj_sequence;
+      record, yaw, pitch, obj_sequence, damping, friction;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -96,6 +106,14 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
   app.add_flag("--chebyshev", command.chebyshev,
                "Chebyshev acceleration of the iterations (Wang 2015)");
+  app.add_option("--damping", damping,
+                 "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, "
+                 "0)");
+  app.add_option("--friction", friction,
+                 "Coulomb friction coefficient against the colliders (scene default otherwise, 0)");
+  app.add_flag("--wind", command.wind,
+               "Turn the wind on: the scene's, or a default breeze (course scenes: the course "
+               "wind)");
   std::vector<std::string> drags;
   app.add_option("--drag", drags,
                  "Drag a vertex: VERTEX:DX,DY,DZ@FRAME (over 30 frames) or @FRAME-LAST; "
@@ -146,6 +164,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (k) command.k = number_in("--k", *k, limits::stiffness);
   if (dt) command.dt = number_in("--dt", *dt, limits::time_step);
+  if (damping) command.damping = number_from_zero("--damping", *damping, limits::damping);
+  if (friction) command.friction = number_from_zero("--friction", *friction, limits::friction);
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
   if (width)
     command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
@@ -174,6 +194,17 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                                           CommandLine::max_camera_pitch);
   }
   return command;
+}
+
+void apply_scene_overrides(const CommandLine& command, SimulationParams& params) {
+  if (command.damping) params.damping = *command.damping;
+  if (command.friction) params.contact.friction = *command.friction;
+  if (command.wind) {
+    const bool calm =
+        params.wind.model == WindModel::aerodynamic && params.wind.velocity.isZero(0.0);
+    if (calm) params.wind = WindParams::default_breeze();
+    params.wind.on = true;
+  }
 }
 
 }  // namespace wobble

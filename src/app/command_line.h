@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drag_script.h"
+#include "sim/simulation.h"
 
 namespace wobble {
 
@@ -23,6 +24,9 @@ struct CommandLine {
   std::optional<int> iterations;
   bool stats = false;
   bool chebyshev = false;           // Chebyshev acceleration of the iterations
+  std::optional<double> damping;    // 1/s, within limits::damping
+  std::optional<double> friction;   // the material's μ against every collider, limits::friction
+  bool wind = false;                // turn the scene's wind on (or the default breeze)
   std::vector<ScriptedDrag> drags;  // --drag, in the order given
   // Images (both modes) and what they show.
   int width = 1280, height = 720;  // window or offscreen image size, pixels
@@ -47,6 +51,11 @@ struct CommandLine {
 // --list-scenes), after writing the answer to `out`. Throws InputError with a one-line message
 // for an unknown option, a malformed value, or a value out of range.
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
+
+// Puts the command line's --damping, --friction and --wind into a scene's parameters. --wind
+// turns on the wind the scene has (the course wind for a course scene); a scene whose
+// aerodynamic wind has no velocity gets WindParams::default_breeze().
+void apply_scene_overrides(const CommandLine& command, SimulationParams& params);
 
 }  // namespace wobble
 

@@ -32,7 +32,9 @@ std::string scene_label(const std::string& source) {
 }
 
 Scene open_scene(const CommandLine& command) {
-  return load_scene(command.scene, command.fill);
+  Scene scene = load_scene(command.scene, command.fill);
+  apply_scene_overrides(command, scene.params);
+  return scene;
 }
 
 void print_notes(const Scene& scene, std::ostream& out) {

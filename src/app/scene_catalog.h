@@ -19,8 +19,10 @@ std::vector<std::string> scene_catalog();
 // folder and extension.
 std::string scene_label(const std::string& source);
 
-// Load the scene the command line names. Its notes are not said yet: a refusal must be the
-// only line on stderr, so they wait until everything the scene needs has been accepted.
+// Load the scene the command line names, with its --damping, --friction and --wind applied
+// (apply_scene_overrides; --k, --dt and the rest are applied where the simulation starts). Its
+// notes are not said yet: a refusal must be the only line on stderr, so they wait until
+// everything the scene needs has been accepted.
 Scene open_scene(const CommandLine& command);
 
 // Say on `out` (stderr) what the loader chose for the user, one "wobble: note: ..." line each,

@@ -176,6 +176,9 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
   scene.params.gravity = Eigen::Vector3d(0.0, course_gravity, 0.0);
   scene.params.gravity_model = GravityModel::force_per_vertex;
   scene.params.first_iterate = FirstIterate::current_positions;
+  // The course program's W key: off until --wind or the W key turns it on.
+  scene.params.wind.model = WindModel::course;
+  scene.params.wind.on = false;
 
   scene.look.uv = mesh.uv;
   scene.look.texture = texture;

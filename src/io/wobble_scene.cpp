@@ -6,7 +6,9 @@
 #include "io/json_fields.h"
 #include "io/load_mesh.h"
 #include "io/png_image.h"
+#include "io/scene_colliders.h"
 #include "io/scene_pins.h"
+#include "io/scene_wind.h"
 #include "io/shape_limits.h"
 #include "sim/input_error.h"
 #include "sim/shapes/cloth_grid.h"
@@ -172,6 +174,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     JsonFields material = top.object("material");
     scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
     set_masses(material, shape.mesh);
+    scene.params.contact.friction = material.number_in("friction", limits::friction).value_or(0.0);
     for (const std::string& key : material.unread())
       unknown.push_back(key);
   } else {
@@ -200,9 +203,15 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
         scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
       }
     }
+    scene.params.damping = simulation.number_in("damping", limits::damping).value_or(0.0);
+    scene.params.contact.offset =
+        simulation.number_in("contact_offset", limits::contact_offset).value_or(-1.0);
+    if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind", unknown);
     for (const std::string& key : simulation.unread())
       unknown.push_back(key);
   }
+  if (top.has("colliders"))
+    scene.params.contact.colliders = scene_colliders(path, top, "colliders");
 
   if (top.has("pins")) {
     scene.pins = scene_pins(top, "pins", scene.network.V, shape.cloth_resolution);

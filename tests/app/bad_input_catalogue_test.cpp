@@ -633,6 +633,106 @@ std::vector<BadInput> value_and_output_catalogue() {
   };
 }
 
+// Issue 14's keys and options: colliders, friction, damping, the contact offset and wind.
+std::vector<BadInput> contact_catalogue() {
+  const auto scene = [](const std::string& keys) {
+    return "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 4}, " + keys + "}";
+  };
+  std::string too_many = "\"colliders\": [";
+  for (int i = 0; i < 65; ++i)
+    too_many += std::string(i ? ", " : "") + "{\"type\": \"ground\"}";
+  too_many += "]";
+  return {
+      {"collider_negative_radius",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"ground\"}, {\"type\": \"sphere\", "
+                         "\"center\": [0, 0, 0], \"radius\": -1}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[1].radius", "positive number within the limits 0.0001 to 10000 m",
+        "got -1"}},
+      {"colliders_not_a_list",
+       {{"c.json", scene("\"colliders\": \"ground\"")}},
+       "{dir}/c.json",
+       {"c.json", "colliders", "a list of collider objects"}},
+      {"collider_center_wrong_type",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"sphere\", \"center\": 1, "
+                         "\"radius\": 1}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].center", "three numbers"}},
+      {"collider_unknown_type",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"torus\"}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].type", "\"capsule\"", "\"torus\""}},
+      {"collider_missing_radius",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"capsule\", \"from\": [0, 0, 0], "
+                         "\"to\": [1, 0, 0]}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].radius", "missing", "from, to, radius"}},
+      {"collider_zero_plane_normal",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"plane\", \"point\": [0, 0, 0], "
+                         "\"normal\": [0, 0, 0]}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].normal", "non-zero"}},
+      {"too_many_colliders",
+       {{"c.json", scene(too_many)}},
+       "{dir}/c.json",
+       {"c.json", "colliders", "65 colliders", "at most 64"}},
+      {"collider_unknown_key",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"ground\", \"hieght\": 1}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].hieght", "unknown key", "height, friction"}},
+      {"collider_key_of_another_type",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"box\", \"center\": [0, 0, 0], "
+                         "\"size\": [1, 1, 1], \"radius\": 1}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].radius", "not a key of a box collider"}},
+      {"collider_friction_above_limit",
+       {{"c.json", scene("\"colliders\": [{\"type\": \"ground\", \"friction\": 11}]")}},
+       "{dir}/c.json",
+       {"c.json", "colliders[0].friction", "0 to 10", "got 11"}},
+      {"material_friction_above_limit",
+       {{"f.json", scene("\"material\": {\"friction\": 11}")}},
+       "{dir}/f.json",
+       {"f.json", "material.friction", "0 to 10", "got 11"}},
+      {"material_friction_wrong_type",
+       {{"f.json", scene("\"material\": {\"friction\": \"high\"}")}},
+       "{dir}/f.json",
+       {"f.json", "material.friction", "expected a number"}},
+      {"scene_damping_negative",
+       {{"d.json", scene("\"simulation\": {\"damping\": -1}")}},
+       "{dir}/d.json",
+       {"d.json", "simulation.damping", "0 to 1000 1/s", "got -1"}},
+      {"scene_damping_wrong_type",
+       {{"d.json", scene("\"simulation\": {\"damping\": [1]}")}},
+       "{dir}/d.json",
+       {"d.json", "simulation.damping", "expected a number"}},
+      {"contact_offset_above_limit",
+       {{"o.json", scene("\"simulation\": {\"contact_offset\": 100}")}},
+       "{dir}/o.json",
+       {"o.json", "simulation.contact_offset", "0 to 10 m"}},
+      {"wind_gusts_above_limit",
+       {{"w.json", scene("\"simulation\": {\"wind\": {\"velocity\": [4, 0, 1], \"gusts\": 2}}")}},
+       "{dir}/w.json",
+       {"w.json", "simulation.wind.gusts", "0 to 1", "got 2"}},
+      {"wind_missing_velocity",
+       {{"w.json", scene("\"simulation\": {\"wind\": {\"drag\": 1}}")}},
+       "{dir}/w.json",
+       {"w.json", "simulation.wind.velocity", "missing"}},
+      {"wind_wrong_type",
+       {{"w.json", scene("\"simulation\": {\"wind\": true}")}},
+       "{dir}/w.json",
+       {"w.json", "simulation.wind", "an object"}},
+      {"wind_velocity_above_limit",
+       {{"w.json", scene("\"simulation\": {\"wind\": {\"velocity\": [1e9, 0, 0]}}")}},
+       "{dir}/w.json",
+       {"w.json", "simulation.wind.velocity", "-1000 to 1000 m/s"}},
+      {"damping_negative", {}, "cloth --damping -1", {"--damping", "0 to 1000 1/s", "'-1'"}},
+      {"damping_not_a_number", {}, "cloth --damping lots", {"--damping", "'lots'"}},
+      {"damping_nan", {}, "cloth --damping nan", {"--damping", "'nan'"}},
+      {"friction_above_limit", {}, "cloth --friction 11", {"--friction", "0 to 10", "'11'"}},
+      {"friction_negative", {}, "cloth --friction -0.5", {"--friction", "'-0.5'"}},
+  };
+}
+
 // The address space a refusal may take: 200 MiB, except under AddressSanitizer, whose shadow
 // memory alone reserves terabytes of address space.
 #if defined(__SANITIZE_ADDRESS__)  // GCC
@@ -755,6 +855,10 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BadInput, Catalogue, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+INSTANTIATE_TEST_SUITE_P(BadContactInput, Catalogue, ::testing::ValuesIn(contact_catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });
