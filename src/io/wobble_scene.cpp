@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "io/json_fields.h"
 #include "io/load_mesh.h"
@@ -30,6 +31,12 @@ std::string relative_to(const std::string& scene_path, const std::string& file) 
   const std::filesystem::path path(file);
   if (path.is_absolute()) return file;
   return (std::filesystem::path(scene_path).parent_path() / path).lexically_normal().string();
+}
+
+// A generator's `offset` [x, y, z] (m): where its shape moves from where it is made.
+void move_by_offset(JsonFields& mesh, Eigen::MatrixXd& V) {
+  const std::optional<Eigen::Vector3d> offset = mesh.vector3_in("offset", limits::coordinate);
+  if (offset) V.rowwise() += offset->transpose();
 }
 
 Shape cloth_shape(JsonFields& mesh) {
@@ -75,6 +82,7 @@ Shape cloth_shape(JsonFields& mesh) {
   } else {
     V.col(1).array() += height;
   }
+  move_by_offset(mesh, V);
   // Texture coordinates: u along columns, v up from the bottom row, as OBJ's vt.
   const int n = options.resolution;
   shape.mesh.uv.resize(n * n, 2);
@@ -95,6 +103,7 @@ Shape jelly_shape(JsonFields& mesh) {
   Shape shape;
   shape.mesh.kind = LoadedMesh::Kind::volume;
   shape.mesh.network = make_jelly_block(options);
+  move_by_offset(mesh, shape.mesh.network.V);
   shape.default_k = 1500.0;
   return shape;
 }
