@@ -50,9 +50,13 @@ void add_swept_sphere(const Eigen::Vector3f& from, const Eigen::Vector3f& to, fl
       const float latitude = (end == 0 ? -1.0f + float(r) / per_half : float(r) / per_half) * 0.5f * pi;
       for (int j = 0; j < around; ++j) {
         const float longitude = 2.0f * pi * j / around;
+        // The poles exactly on the axis, so their triangles collapse cleanly instead of
+        // turning by a rounding error.
+        const bool pole = (end == 0 && r == 0) || (end == 1 && r == per_half);
+        const float across = pole ? 0.0f : std::cos(latitude);
+        const float up = pole ? (end == 0 ? -1.0f : 1.0f) : std::sin(latitude);
         const Eigen::Vector3f normal =
-            std::cos(latitude) * (std::cos(longitude) * u + std::sin(longitude) * v) +
-            std::sin(latitude) * axis;
+            across * (std::cos(longitude) * u + std::sin(longitude) * v) + up * axis;
         add_vertex(mesh, center + radius * normal, normal);
       }
       ++rings;
