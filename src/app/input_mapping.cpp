@@ -13,8 +13,12 @@ ViewerCommand command_for_key(int key) {
       return ViewerCommand::step_once;
     case GLFW_KEY_R:
       return ViewerCommand::reset;
-    case GLFW_KEY_W:
+    case GLFW_KEY_E:
       return ViewerCommand::toggle_wireframe;
+    case GLFW_KEY_W:
+      return ViewerCommand::toggle_wind;
+    case GLFW_KEY_C:
+      return ViewerCommand::toggle_colliders;
     case GLFW_KEY_P:
       return ViewerCommand::toggle_points;
     case GLFW_KEY_L:
@@ -31,12 +35,14 @@ ViewerCommand command_for_key(int key) {
 }
 
 MouseGesture gesture_for_press(int button, bool control, bool shift, bool over_ui, bool over_pin,
-                               bool over_vertex) {
+                               bool over_vertex, bool alt, bool over_collider) {
   if (over_ui) return MouseGesture::none;
   if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
     return MouseGesture::pan;
   }
   if (button != GLFW_MOUSE_BUTTON_LEFT) return MouseGesture::none;
+  // Alt is only for colliders: a missed Alt+click must not grab the cloth or turn the camera.
+  if (alt) return over_collider ? MouseGesture::grab_collider : MouseGesture::none;
   if (control) return over_vertex ? MouseGesture::toggle_pin : MouseGesture::none;
   // Shift+drag pans, for touchpads without a middle or right button.
   if (shift) return MouseGesture::pan;
@@ -50,7 +56,9 @@ const std::vector<Binding>& viewer_bindings() {
       {"Space", "pause / play"},
       {"S", "step once"},
       {"R", "reset the scene"},
-      {"W", "wireframe on / off"},
+      {"W", "wind on / off"},
+      {"E", "wireframe on / off"},
+      {"C", "colliders shown / hidden"},
       {"P", "vertices as points on / off"},
       {"L", "springs as lines on / off"},
       {"F", "frame the mesh"},
@@ -59,6 +67,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"Left-drag a pin", "move the pin; the shape follows"},
       {"Left-drag a vertex", "hold it while dragging; let go to throw"},
       {"Ctrl+click a vertex", "pin / unpin it"},
+      {"Alt+left-drag a collider", "move the sphere, box or capsule"},
       {"Left-drag elsewhere", "orbit the camera"},
       {"Right/middle or Shift+left-drag", "pan"},
       {"Wheel", "zoom"},

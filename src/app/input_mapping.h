@@ -13,6 +13,8 @@ enum class ViewerCommand {
   step_once,
   reset,
   toggle_wireframe,
+  toggle_wind,
+  toggle_colliders,
   toggle_points,
   toggle_springs,
   toggle_help,
@@ -29,14 +31,16 @@ enum class MouseGesture {
   grab_pin,          // drag a pinned vertex's target
   grab_free_vertex,  // pin a free vertex for the length of the drag, then let it go
   toggle_pin,        // Ctrl+click: pin or unpin the vertex under the cursor
+  grab_collider,     // Alt+drag: move the sphere, box or capsule under the cursor
   orbit,             // turn the camera about its target
   pan,               // slide the camera and its target
 };
 
 // `button` is a GLFW mouse button. `over_ui` is ImGui's io.WantCaptureMouse; `over_pin` and
-// `over_vertex` say whether a pinned (or any) vertex is within the picking radius.
+// `over_vertex` say whether a pinned (or any) vertex is within the picking radius;
+// `over_collider` whether the cursor ray meets a collider that can be grabbed.
 MouseGesture gesture_for_press(int button, bool control, bool shift, bool over_ui, bool over_pin,
-                               bool over_vertex);
+                               bool over_vertex, bool alt = false, bool over_collider = false);
 
 // Every key and mouse action, for the help overlay and the README: {input, what it does}.
 struct Binding {

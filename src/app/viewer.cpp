@@ -7,6 +7,7 @@
 
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
+#include "environment_controls.h"
 #include "scene_catalog.h"
 
 namespace wobble {
@@ -94,6 +95,7 @@ void Viewer::load(Scene scene) {
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
   drag_.cancel();
+  collider_drag_.cancel();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
   step_warning_.clear();
   mode_ = Mode::idle;
@@ -110,8 +112,9 @@ void Viewer::load(Scene scene) {
   panel_.k = static_cast<float>(scene_.params.k);
   panel_.dt = static_cast<float>(scene_.params.dt);
   panel_.iterations = scene_.params.iterations;
-  panel_.gravity = static_cast<float>(-scene_.params.gravity.y());
+  panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
   panel_.chebyshev = scene_.params.chebyshev;
+  show_environment_in_panel();
 
   const SpringNetwork& network = scene_.network;
   // Springs without faces (a chain, a net) draw no surface, so without their springs and
@@ -141,6 +144,7 @@ void Viewer::load(Scene scene) {
   marks_.resize(n);
   pinned_flags_.resize(n);
   update_vertex_arrays();
+  place_ground();
   frame_on_next_render_ = true;
   framing_new_scene_ = true;
   const SceneLook& look = scene_.look;
@@ -189,19 +193,7 @@ void Viewer::attach_renderer() {
   }
   renderer_->set_texture(texture);
 
-  // The ground sits under the scene (or at y = 0, whichever is lower), with lines at a round
-  // fraction of the scene's size.
-  Eigen::Vector3f lower, upper;
-  bounds(positions_.data(), topology.vertex_count, lower, upper);
-  const float size = std::max((upper - lower).maxCoeff(), 1e-3f);
-  GroundGrid ground;
-  ground.height = std::min(0.0f, lower.y());
-  ground.center_x = 0.5f * (lower.x() + upper.x());
-  ground.center_z = 0.5f * (lower.z() + upper.z());
-  ground.spacing = 0.25f * std::pow(10.0f, std::round(std::log10(size)));
-  ground.half_extent =
-      8.0f * ground.spacing * std::max(1.0f, std::ceil(size / (4 * ground.spacing)));
-  renderer_->set_ground(ground);
+  renderer_->set_ground(ground_);
 }
 
 void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
@@ -212,6 +204,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.step_ms = static_cast<float>(step.total_ms);
   stats.local_ms = static_cast<float>(step.local_ms);
   stats.global_ms = static_cast<float>(step.global_ms);
+  stats.forces_ms = static_cast<float>(step.forces_ms);
+  stats.contact_ms = static_cast<float>(step.contact_ms);
 
   const PanelRequests requests = draw_control_panel(panel_, stats, scene_labels_, ui_scale);
   std::vector<std::pair<std::string, std::string>> help;
@@ -245,9 +239,12 @@ void Viewer::apply_panel_settings() {
   if (static_cast<float>(params.dt) != panel_.dt) simulation_->set_dt(panel_.dt);
   if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
   if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
-  if (static_cast<float>(-params.gravity.y()) != panel_.gravity) {
-    simulation_->set_gravity(Eigen::Vector3d(0.0, -panel_.gravity, 0.0), params.gravity_model);
+  // The slider is gravity's strength: the scene's direction stays, sideways part included.
+  if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
+    simulation_->set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
+                             params.gravity_model);
   }
+  apply_environment_settings();
 }
 
 void Viewer::advance() {
@@ -273,6 +270,9 @@ PanelStats Viewer::stats() const {
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
   stats.notes = scene_.notes;
+  stats.has_colliders = !simulation_->colliders().empty();
+  stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
+  stats.contacts = simulation_->contact_count();
   stats.warning = step_warning_;
   return stats;
 }
@@ -299,12 +299,12 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
     Eigen::Vector3f lower, upper;
     bounds(positions_.data(), n, lower, upper);
     if (framing_new_scene_) {
-      // A fresh scene is framed with room to move: down to the ground, where hanging cloth
-      // falls, and a quarter of its size to every side, where it swings.
+      // A fresh scene is framed with room to move: down to the ground, below where hanging
+      // cloth can fall, and a quarter of its size to every side, where it swings.
       const float room = 0.25f * (upper - lower).maxCoeff();
       lower -= Eigen::Vector3f(room, 0.0f, room);
       upper += Eigen::Vector3f(room, 0.0f, room);
-      lower.y() = std::min(lower.y(), 0.0f);
+      lower.y() = std::min(lower.y(), ground_.height);
     }
     frame_box(camera_, lower, upper, aspect);
     frame_on_next_render_ = false;
@@ -322,7 +322,15 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   if (hovered_pin_ >= 0) marks_[hovered_pin_] = 2;
   if (drag_.active()) marks_[drag_.vertex()] = 2;
 
+  update_collider_mesh();
   if (!renderer_) return;
+  SolidMesh solids;
+  solids.positions = collider_mesh_.positions.data();
+  solids.normals = collider_mesh_.normals.data();
+  solids.vertex_count = collider_mesh_.vertex_count();
+  solids.triangles = collider_mesh_.triangles.data();
+  solids.triangle_count = collider_mesh_.triangle_count();
+  renderer_->set_solids(solids);
   MeshFrame frame;
   frame.positions = positions_.data();
   frame.normals = normals_.data();
@@ -339,6 +347,7 @@ ViewLayers Viewer::layers() const {
   layers.springs = panel_.springs;
   layers.points = panel_.points;
   layers.ground = panel_.ground;
+  layers.solids = panel_.colliders;
   return layers;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "collider_drag.h"
+#include "collider_mesh.h"
 #include "command_line.h"
 #include "drag_script.h"
 #include "input_mapping.h"
@@ -80,10 +82,19 @@ class Viewer {
   PanelStats stats() const;
   // The layers render() draws, as the panel's checkboxes show them.
   ViewLayers layers() const;
+  // The ground grid under the scene (see ground_grid_height), set when a scene loads.
+  const GroundGrid& ground() const { return ground_; }
+  // The colliders' triangles as the last render() drew them (empty while they are hidden).
+  const ColliderTriangles& collider_mesh() const { return collider_mesh_; }
 
  private:
   void apply(ViewerCommand command);
   void apply_panel_settings();
+  // viewer_environment.cpp: damping, friction, wind and colliders.
+  void show_environment_in_panel();
+  void apply_environment_settings();
+  void place_ground();
+  void update_collider_mesh();
   void update_vertex_arrays();
   int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
   Ray ray_at(const Eigen::Vector2f& cursor) const;
@@ -108,6 +119,7 @@ class Viewer {
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
   VertexDrag drag_;
+  ColliderDrag collider_drag_;
   Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);
   Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
   bool cursor_over_ui_ = false;
@@ -119,6 +131,11 @@ class Viewer {
   std::vector<unsigned char> marks_, pinned_flags_;
   std::vector<float> uv_;  // #V by 2, or empty
   RgbaImage texture_;
+  GroundGrid ground_;
+  ColliderTriangles collider_mesh_;
+  // The wind's speed and heading as the panel last showed them, so that only a slider the user
+  // moved changes the wind.
+  float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
   std::unique_ptr<Renderer> renderer_;

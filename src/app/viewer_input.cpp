@@ -1,6 +1,9 @@
 // The viewer's mouse and keys: what each event does to the camera, the pins and the playback.
 #include "viewer.h"
 
+#include "collider_picking.h"
+#include "environment_controls.h"
+
 namespace wobble {
 
 namespace {
@@ -31,11 +34,20 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         if (!ui_wants_keyboard) apply(command_for_key(event.code));
         break;
       case InputEvent::Type::button_press: {
-        if (drag_.active() || mode_ != Mode::idle) break;  // one gesture at a time
+        // One gesture at a time.
+        if (drag_.active() || collider_drag_.active() || mode_ != Mode::idle) break;
         const int pin = pick(at, /*pinned_only=*/true);
         const int vertex = pin >= 0 ? pin : pick(at, /*pinned_only=*/false);
+        // Hidden colliders cannot be grabbed.
+        const std::optional<ColliderHit> collider =
+            event.alt && panel_.colliders ? pick_collider(ray_at(at), simulation_->colliders())
+                                          : std::nullopt;
         switch (gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse, pin >= 0,
-                                  vertex >= 0)) {
+                                  vertex >= 0, event.alt, collider.has_value())) {
+          case MouseGesture::grab_collider:
+            collider_drag_.grab(*simulation_, collider->index, collider->point,
+                                camera_forward(camera_));
+            break;
           case MouseGesture::grab_pin:
           case MouseGesture::grab_free_vertex:
             drag_.grab(*simulation_, vertex, ray_at(at), camera_forward(camera_));
@@ -60,11 +72,13 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
       }
       case InputEvent::Type::button_release:
         drag_.release(*simulation_);
+        collider_drag_.release();
         mode_ = Mode::idle;
         break;
       case InputEvent::Type::cursor_move: {
         const Eigen::Vector2f delta = at - cursor_;
         if (drag_.active()) drag_.move(*simulation_, ray_at(at));
+        if (collider_drag_.active()) collider_drag_.move(*simulation_, ray_at(at));
         if (mode_ == Mode::orbit) orbit_camera(camera_, delta.x(), delta.y(), window_size_.y());
         if (mode_ == Mode::pan) pan_camera(camera_, delta.x(), delta.y(), window_size_.y());
         cursor_ = at;
@@ -88,12 +102,21 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::reset:
       if (drag_.active()) drag_.cancel();
+      collider_drag_.cancel();  // reset puts the colliders back
       simulation_->reset();
       drag_script_.restart();
       step_warning_.clear();
       break;
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;
+      break;
+    case ViewerCommand::toggle_wind:
+      simulation_->set_wind(toggled_wind(simulation_->params().wind));
+      show_environment_in_panel();
+      break;
+    case ViewerCommand::toggle_colliders:
+      panel_.colliders = !panel_.colliders;
+      if (!panel_.colliders) collider_drag_.cancel();
       break;
     case ViewerCommand::toggle_points:
       panel_.points = !panel_.points;

@@ -29,6 +29,7 @@ struct GlfwCallbacks {
   static void push(GLFWwindow* window, InputEvent event, int mods) {
     event.control = (mods & GLFW_MOD_CONTROL) != 0;
     event.shift = (mods & GLFW_MOD_SHIFT) != 0;
+    event.alt = (mods & GLFW_MOD_ALT) != 0;
     owner(window).events_.push_back(event);
   }
   static void key(GLFWwindow* window, int key, int, int action, int mods) {

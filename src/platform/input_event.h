@@ -11,6 +11,7 @@ struct InputEvent {
   int code = 0;  // GLFW key for key_press, GLFW mouse button for button_press/button_release
   bool control = false;
   bool shift = false;
+  bool alt = false;
   double x = 0.0, y = 0.0;  // cursor position; for scroll, the wheel offsets
 };
 

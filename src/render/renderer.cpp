@@ -27,12 +27,15 @@ struct Renderer::Resources {
   bool textured = false, has_uv = false;
   GLuint surface_array = 0, spring_array = 0, point_array = 0;
   GLuint grid_array = 0, grid_vertices = 0, empty_array = 0;
+  // The solids have buffers of their own, drawn through the surface's program.
+  GLuint solid_array = 0, solid_positions = 0, solid_normals = 0, solid_indices = 0;
   int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
+  int solid_triangle_count = 0;
   SurfaceColors colors;
 
   Resources() {
-    GLuint buffers[7];
-    glGenBuffers(7, buffers);
+    GLuint buffers[10];
+    glGenBuffers(10, buffers);
     positions = buffers[0];
     normals = buffers[1];
     marks = buffers[2];
@@ -40,14 +43,18 @@ struct Renderer::Resources {
     spring_indices = buffers[4];
     grid_vertices = buffers[5];
     uvs = buffers[6];
+    solid_positions = buffers[7];
+    solid_normals = buffers[8];
+    solid_indices = buffers[9];
     glGenTextures(1, &texture);
-    GLuint arrays[5];
-    glGenVertexArrays(5, arrays);
+    GLuint arrays[6];
+    glGenVertexArrays(6, arrays);
     surface_array = arrays[0];
     spring_array = arrays[1];
     point_array = arrays[2];
     grid_array = arrays[3];
     empty_array = arrays[4];
+    solid_array = arrays[5];
 
     glBindVertexArray(surface_array);
     attribute(positions, position_location, 3, GL_FLOAT);
@@ -65,15 +72,25 @@ struct Renderer::Resources {
 
     glBindVertexArray(grid_array);
     attribute(grid_vertices, position_location, 3, GL_FLOAT);
+
+    glBindVertexArray(solid_array);
+    attribute(solid_positions, position_location, 3, GL_FLOAT);
+    attribute(solid_normals, normal_location, 3, GL_FLOAT);
+    // The surface's program reads uv; the solids have none, so the attribute is a constant.
+    glDisableVertexAttribArray(uv_location);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, solid_indices);
     glBindVertexArray(0);
   }
 
   ~Resources() {
-    const GLuint buffers[6] = {positions,        normals,        marks,
-                               triangle_indices, spring_indices, grid_vertices};
-    glDeleteBuffers(6, buffers);
-    const GLuint arrays[5] = {surface_array, spring_array, point_array, grid_array, empty_array};
-    glDeleteVertexArrays(5, arrays);
+    const GLuint buffers[10] = {positions,      normals,       marks,           triangle_indices,
+                                spring_indices, grid_vertices, uvs,             solid_positions,
+                                solid_normals,  solid_indices};
+    glDeleteBuffers(10, buffers);
+    glDeleteTextures(1, &texture);
+    const GLuint arrays[6] = {surface_array, spring_array, point_array,
+                              grid_array,    empty_array,  solid_array};
+    glDeleteVertexArrays(6, arrays);
   }
 
   static void attribute(GLuint buffer, GLuint location, int size, GLenum type) {
@@ -156,6 +173,23 @@ void Renderer::set_texture(const TextureImage& image) {
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+void Renderer::set_solids(const SolidMesh& solids) {
+  Resources& r = *resources_;
+  r.solid_triangle_count = solids.vertex_count > 0 ? solids.triangle_count : 0;
+  if (r.solid_triangle_count == 0) return;
+  glBindVertexArray(0);
+  glBindBuffer(GL_ARRAY_BUFFER, r.solid_positions);
+  glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * solids.vertex_count, solids.positions,
+               GL_DYNAMIC_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, r.solid_normals);
+  glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * solids.vertex_count, solids.normals,
+               GL_DYNAMIC_DRAW);
+  glBindVertexArray(r.solid_array);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.solid_triangle_count,
+               solids.triangles, GL_DYNAMIC_DRAW);
+  glBindVertexArray(0);
+}
+
 void Renderer::update(const MeshFrame& frame) {
   const Resources& r = *resources_;
   glBindBuffer(GL_ARRAY_BUFFER, r.positions);
@@ -216,6 +250,16 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glBindTexture(GL_TEXTURE_2D, 0);
+  }
+  if (layers.solids && r.solid_triangle_count > 0) {
+    r.mesh.use();
+    glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
+    glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
+    glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.solid.data());
+    glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.solid.data());
+    glUniform1i(r.mesh.uniform("use_texture"), 0);
+    glBindVertexArray(r.solid_array);
+    glDrawElements(GL_TRIANGLES, 3 * r.solid_triangle_count, GL_UNSIGNED_INT, nullptr);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
   glEnable(GL_BLEND);

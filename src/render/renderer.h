@@ -36,6 +36,7 @@ struct ViewLayers {
   bool springs = false;    // every spring as a line, interior ones included
   bool points = false;     // every vertex as a dot (pins are always marked)
   bool ground = true;      // grid on the ground plane
+  bool solids = true;      // the solid meshes of set_solids (colliders)
 };
 
 // The square grid on the ground plane y = height, centred under (center_x, center_z).
@@ -46,10 +47,21 @@ struct GroundGrid {
   float spacing = 0.25f;     // m between lines
 };
 
+// Shaded solids drawn with the surface's two-sided lighting in one colour (the colliders). Plain
+// arrays; they may change every frame.
+struct SolidMesh {
+  const float* positions = nullptr;     // #V by 3 (m)
+  const float* normals = nullptr;       // #V by 3 outward unit normals
+  int vertex_count = 0;
+  const unsigned* triangles = nullptr;  // #F by 3 indices, counter-clockwise from outside
+  int triangle_count = 0;
+};
+
 // Colours of the surface, linear RGB in [0, 1].
 struct SurfaceColors {
   Eigen::Vector3f front{0.95f, 0.55f, 0.22f};
   Eigen::Vector3f back{0.26f, 0.55f, 0.85f};
+  Eigen::Vector3f solid{0.62f, 0.64f, 0.67f};  // colliders: a neutral grey, inside and out
 };
 
 // Draws one frame into whatever framebuffer is bound: a window's or an offscreen one. It never
@@ -68,6 +80,8 @@ class Renderer {
   // Paint the surface with `image` through the topology's uv; an empty image goes back to the
   // plain colours. Without uv the texture is not used.
   void set_texture(const TextureImage& image);
+  // Replace the solids (an empty mesh draws none).
+  void set_solids(const SolidMesh& solids);
   // Upload this frame's vertices (topology.vertex_count of each array).
   void update(const MeshFrame& frame);
   // Clear and draw the scene in a viewport of width × height pixels. `pixel_ratio` scales point

@@ -75,6 +75,22 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity, "%.2f",
                      ImGuiSliderFlags_AlwaysClamp);
 
+  section("environment");
+  ImGui::SliderFloat("damping (1/s)", &settings.damping, 0.0f, PanelSettings::max_damping, "%.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
+  if (stats.has_colliders) {
+    ImGui::SliderFloat("friction", &settings.friction, 0.0f, PanelSettings::max_friction, "%.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
+  }
+  ImGui::Checkbox("wind", &settings.wind);
+  if (stats.aerodynamic_wind) {
+    ImGui::SliderFloat("wind (m/s)", &settings.wind_speed, 0.0f, PanelSettings::max_wind_speed,
+                       "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("wind heading", &settings.wind_heading, 0.0f, 360.0f, "%.0f deg",
+                       ImGuiSliderFlags_AlwaysClamp);
+  }
+  if (stats.has_colliders) ImGui::Checkbox("colliders", &settings.colliders);
+
   section("view");
   ImGui::Checkbox("surface", &settings.surface);
   ImGui::SameLine();
@@ -91,6 +107,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     stat_row("step", "%.2f ms", stats.step_ms);
     stat_row("  local", "%.2f ms", stats.local_ms);
     stat_row("  global", "%.2f ms", stats.global_ms);
+    if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
+    if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
   } else {
     ImGui::TextDisabled("timings hidden (headless)");
   }
@@ -98,6 +116,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   stat_row("vertices", "%.0f", stats.vertices);
   stat_row("springs", "%.0f", stats.springs);
   stat_row("pins", "%.0f", stats.pins);
+  if (stats.has_colliders) stat_row("contacts", "%.0f", stats.contacts);
   for (const std::string& note : stats.notes)
     ImGui::TextWrapped("%s", note.c_str());
   ImGui::PopItemWidth();

@@ -12,8 +12,14 @@ struct PanelSettings {
   float k = 400.0f;         // N/m
   float dt = 1.0f / 60.0f;  // s
   int iterations = 50;      //
-  float gravity = 9.81f;    // m/s², downwards
+  float gravity = 9.81f;    // m/s², its strength along the scene's own direction
   bool chebyshev = false;   // Chebyshev acceleration of the iterations
+  float damping = 0.0f;     // 1/s, mass-proportional
+  float friction = 0.0f;    // Coulomb μ against the colliders
+  bool wind = false;        // wind on
+  float wind_speed = 0.0f;  // m/s (aerodynamic wind only)
+  float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
+  bool colliders = true;    // colliders shown
   bool paused = false;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
   int scene = 0;  // index into the scene names
@@ -23,6 +29,7 @@ struct PanelSettings {
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
   static constexpr int min_iterations = 1, max_iterations = 100;
   static constexpr float max_gravity = 30.0f;
+  static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
 };
 
 // Numbers the panel shows.
@@ -32,9 +39,13 @@ struct PanelStats {
   bool show_timings = true;
   float fps = 0.0f;
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
+  float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;
+  bool has_colliders = false;    // friction, the colliders' checkbox and contacts show only then
+  bool aerodynamic_wind = true;  // the wind has a speed and heading (the course's has neither)
+  int contacts = 0;              // vertices the last step moved out of a collider
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
 };
@@ -47,7 +58,8 @@ struct PanelRequests {
   bool scene_changed = false;  // settings.scene now names another scene
 };
 
-// The "Wobble" panel: scene picker, play controls, sliders, view toggles and stats. Call between
+// The "Wobble" panel: scene picker, play controls, simulation and environment (damping,
+// friction, wind, colliders) sliders, view toggles and stats. Call between
 // ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
 PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
                                  const std::vector<std::string>& scene_names, float ui_scale);

@@ -17,7 +17,9 @@ TEST(InputMapping, KeysTheIssueAsksFor) {
       {GLFW_KEY_SPACE, ViewerCommand::toggle_pause},
       {GLFW_KEY_S, ViewerCommand::step_once},
       {GLFW_KEY_R, ViewerCommand::reset},
-      {GLFW_KEY_W, ViewerCommand::toggle_wireframe},
+      {GLFW_KEY_E, ViewerCommand::toggle_wireframe},
+      {GLFW_KEY_W, ViewerCommand::toggle_wind},
+      {GLFW_KEY_C, ViewerCommand::toggle_colliders},
       {GLFW_KEY_P, ViewerCommand::toggle_points},
       {GLFW_KEY_H, ViewerCommand::toggle_help},
       {GLFW_KEY_F, ViewerCommand::frame_mesh},
@@ -35,7 +37,8 @@ TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
   const std::map<int, std::string> names = {
       {GLFW_KEY_SPACE, "Space"}, {GLFW_KEY_S, "S"}, {GLFW_KEY_R, "R"},
       {GLFW_KEY_W, "W"},         {GLFW_KEY_P, "P"}, {GLFW_KEY_L, "L"},
-      {GLFW_KEY_H, "H"},         {GLFW_KEY_F, "F"}, {GLFW_KEY_ESCAPE, "Esc"}};
+      {GLFW_KEY_H, "H"},         {GLFW_KEY_F, "F"}, {GLFW_KEY_ESCAPE, "Esc"},
+      {GLFW_KEY_E, "E"},         {GLFW_KEY_C, "C"}};
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (wobble::command_for_key(key) == ViewerCommand::none) continue;
     ASSERT_TRUE(names.count(key)) << "key " << key << " has a command but no name here";
@@ -70,6 +73,26 @@ TEST(InputMapping, LeftButtonDependsOnWhatIsUnderTheCursor) {
             MouseGesture::toggle_pin);
   EXPECT_EQ(wobble::gesture_for_press(left, true, false, false, false, false), MouseGesture::none);
   EXPECT_EQ(wobble::gesture_for_press(left, false, true, false, false, false), MouseGesture::pan);
+}
+
+TEST(InputMapping, AltLeftGrabsAColliderOrNothing) {
+  const int left = GLFW_MOUSE_BUTTON_LEFT;
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, false, false, /*alt=*/true,
+                                      /*over_collider=*/true),
+            MouseGesture::grab_collider);
+  // Even over a pin, Alt means the collider.
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, true, true, true, true),
+            MouseGesture::grab_collider);
+  // A missed Alt+click neither grabs the cloth nor orbits.
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, true, true, true, false),
+            MouseGesture::none);
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, false, false, true, false),
+            MouseGesture::none);
+  // Without Alt a collider under the cursor changes nothing.
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, false, false, false, false, true),
+            MouseGesture::orbit);
+  EXPECT_EQ(wobble::gesture_for_press(left, false, false, true, false, false, true, true),
+            MouseGesture::none);
 }
 
 TEST(InputMapping, RightAndMiddlePan) {
