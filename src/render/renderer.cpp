@@ -258,8 +258,13 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.solid.data());
     glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.solid.data());
     glUniform1i(r.mesh.uniform("use_texture"), 0);
+    // Pushed back further than the surface, so that a cloth resting on a collider a contact
+    // offset (a few mm) above it is never hidden by it.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(4.0f, 64.0f);
     glBindVertexArray(r.solid_array);
     glDrawElements(GL_TRIANGLES, 3 * r.solid_triangle_count, GL_UNSIGNED_INT, nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
   glEnable(GL_BLEND);

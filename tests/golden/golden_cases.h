@@ -50,6 +50,12 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"course_banner_texture", "@ASSETS@/course/banner.json --frames 20 --width 320 --height 240"},
       // A course-format scene of springs without faces: its springs and masses show by default.
       {"course_rope_springs", "@ASSETS@/course/rope.json --frames 30 --width 320 --height 240"},
+      // Contact (issue 14): a cloth resting on a ball, a tablecloth on a box table, a flag in
+      // gusty wind beside its capsule pole, a jelly at rest on the ground grid.
+      {"drape", "@ASSETS@/drape.json --frames 120 --width 320 --height 240"},
+      {"tablecloth", "@ASSETS@/tablecloth.json --frames 120 --width 320 --height 240"},
+      {"flag", "@ASSETS@/flag.json --frames 60 --width 320 --height 240"},
+      {"jelly_drop", "@ASSETS@/jelly_drop.json --frames 150 --width 320 --height 240"},
   };
   return cases;
 }
