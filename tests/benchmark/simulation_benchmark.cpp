@@ -12,6 +12,7 @@
 
 #include "benchmark_scenes.h"
 #include "chebyshev_curve.h"
+#include "contact_cost.h"
 #include "sim/simulation.h"
 
 namespace {
@@ -199,6 +200,7 @@ int main(int argc, char** argv) {
   print_table(reporter);
   print_single_precision_error();
   wobble::benchmark::print_chebyshev_curve(wobble::benchmark::benchmark_scenes().front());
+  wobble::benchmark::print_contact_cost();
   benchmark::Shutdown();
   return 0;
 }

@@ -292,3 +292,62 @@ TEST(CourseSceneFidelity, SimulationMatchesTheDenseSeedFrameByFrame) {
 }
 
 }  // namespace
+
+namespace {
+
+// With the course's wind on (its W key, Wobble's --wind), a course scene moves as the dense seed
+// does when fed the program's wind formula each frame, with φ = x_i/bbd + t and t the simulated
+// time at the start of the step.
+TEST(CourseSceneFidelity, CourseWindMatchesTheProgramsFormula) {
+  wobble::testing::TemporaryFolder folder;
+  const CourseCase c = course_cases()[1];  // the 4×4 quad sheet held at two corners
+  wobble::Scene scene = wobble::load_course_scene(write_case(c, folder));
+  ASSERT_EQ(scene.params.wind.model, wobble::WindModel::course);
+  ASSERT_FALSE(scene.params.wind.on) << "off until --wind or W";
+  scene.params.wind.on = true;
+
+  const Eigen::Index n = static_cast<Eigen::Index>(c.vertices.size());
+  Eigen::MatrixXd V(n, 3);
+  for (Eigen::Index i = 0; i < n; ++i)
+    V.row(i) = c.vertices[i];
+  const double bbd = (V.colwise().maxCoeff() - V.colwise().minCoeff()).norm();
+  const Eigen::MatrixXi E = course_springs(c);
+  int obtuse = 0;
+  const Eigen::VectorXd m = geometric_masses(c, obtuse);
+  Eigen::VectorXi b(2);
+  b << c.pins[0] - 1, c.pins[1] - 1;
+  Eigen::VectorXd r;
+  Eigen::MatrixXd M, A, C;
+  Eigen::LLT<Eigen::MatrixXd> llt;
+  ASSERT_TRUE(fast_mass_springs_precomputation_dense(V, E, c.k, m, b, course_dt, r, M, A, C, llt));
+
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params, scene.initial_velocity);
+  wobble::Scene calm_scene = scene;
+  calm_scene.params.wind.on = false;
+  wobble::Simulation calm(calm_scene.network, calm_scene.pins, calm_scene.params);
+  Eigen::MatrixXd previous = V, current = V, next;
+  double worst = 0.0;
+  for (int frame = 0; frame < frames; ++frame) {
+    Eigen::MatrixXd fext = Eigen::RowVector3d(0, -9.8, 0).replicate(n, 1);
+    const double t = frame * course_dt;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double phi = current(i, 0) / bbd + t;
+      fext(i, 0) = 3.0 + 1.5 * (1.0 + std::cos(5.0 * phi));
+      fext(i, 2) = std::sin(phi);
+      fext(i, 1) += 1.0 + std::cos(0.3 + phi);
+    }
+    fast_mass_springs_step_dense(V, E, c.k, b, course_dt, fext, r, M, A, C, llt, previous,
+                                 current, next);
+    previous = current;
+    current = next;
+    simulation.step();
+    calm.step();
+    worst = std::max(worst, (simulation.positions() - current).cwiseAbs().maxCoeff() / bbd);
+  }
+  EXPECT_LE(worst, 1e-6);
+  // The wind must matter, or matching would prove nothing.
+  EXPECT_GT((calm.positions() - current).cwiseAbs().maxCoeff() / bbd, 0.01);
+  std::cout << "[ fidelity ] course wind: max |p_wobble - p_seed| / diagonal = " << worst << "\n";
+}
+
+}  // namespace

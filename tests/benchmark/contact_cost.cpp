@@ -1,0 +1,54 @@
+#include "contact_cost.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "sim/shapes/cloth_grid.h"
+#include "sim/simulation.h"
+
+namespace wobble::benchmark {
+
+namespace {
+
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+}  // namespace
+
+void print_contact_cost() {
+  ClothGridOptions options;
+  options.resolution = 128;
+  SpringNetwork cloth = make_cloth_grid(options);
+  cloth.V.col(1).array() += 1.0;
+  SimulationParams params;
+  params.iterations = 50;
+  Collider ground, ball;
+  ball.type = ColliderType::sphere;
+  ball.center = Eigen::Vector3d(0, 0.5, 0);
+  ball.radius = 0.3;
+  params.contact.colliders = {ground, ball};
+  params.contact.friction = 0.4;
+  for (const bool windy : {false, true}) {
+    params.wind = windy ? WindParams::default_breeze() : WindParams();
+    Simulation simulation(cloth, {}, params);
+    for (int step = 0; step < 40; ++step)
+      simulation.step();  // fall onto the ball
+    std::vector<double> total, contact, wind;
+    for (int step = 0; step < 40; ++step) {
+      simulation.step();
+      total.push_back(simulation.last_step_timing().total_ms);
+      contact.push_back(simulation.last_step_timing().contact_ms);
+      wind.push_back(simulation.last_step_timing().forces_ms);
+    }
+    const double step_ms = median(total);
+    std::printf("contact/128x128 drape%s  %d contacts  step %.2f ms  contact %.3f ms (%.1f%%)  "
+                "wind %.3f ms (%.1f%%)\n",
+                windy ? " + wind" : "", simulation.contact_count(), step_ms, median(contact),
+                100.0 * median(contact) / step_ms, median(wind), 100.0 * median(wind) / step_ms);
+  }
+}
+
+}  // namespace wobble::benchmark
