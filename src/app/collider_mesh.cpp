@@ -47,7 +47,8 @@ void add_swept_sphere(const Eigen::Vector3f& from, const Eigen::Vector3f& to, fl
     const Eigen::Vector3f& center = end == 0 ? from : to;
     for (int r = 0; r <= per_half; ++r) {
       // Latitude from −90° to 0° around `from`, then 0° to 90° around `to`.
-      const float latitude = (end == 0 ? -1.0f + float(r) / per_half : float(r) / per_half) * 0.5f * pi;
+      const float latitude =
+          (end == 0 ? -1.0f + float(r) / per_half : float(r) / per_half) * 0.5f * pi;
       for (int j = 0; j < around; ++j) {
         const float longitude = 2.0f * pi * j / around;
         // The poles exactly on the axis, so their triangles collapse cleanly instead of
@@ -81,7 +82,8 @@ void add_box(const Eigen::Vector3f& center, const Eigen::Vector3f& size, Collide
       const Eigen::Vector3f t1 = Eigen::Vector3f::Unit((axis + 1) % 3);
       const Eigen::Vector3f t2 = side * Eigen::Vector3f::Unit((axis + 2) % 3);
       const unsigned first = static_cast<unsigned>(mesh.vertex_count());
-      for (const auto& [a, b] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
+      for (const auto& [a, b] :
+           {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {1.0f, 1.0f}, {-1.0f, 1.0f}}) {
         add_vertex(mesh, center + half.cwiseProduct(normal + a * t1 + b * t2), normal);
       }
       add_quad(mesh, first, first + 1, first + 2, first + 3);

@@ -26,8 +26,7 @@ struct ColliderTriangles {
 //                    plane nearest `plane_focus`, two triangles
 //   ground           nothing: the viewer draws it as the ground grid
 void append_collider_triangles(const Collider& collider, const Eigen::Vector3f& plane_focus,
-                               float plane_half_extent, ColliderTriangles& mesh,
-                               int segments = 32);
+                               float plane_half_extent, ColliderTriangles& mesh, int segments = 32);
 
 // Every collider's triangles, in one mesh.
 ColliderTriangles collider_triangles(const std::vector<Collider>& colliders,

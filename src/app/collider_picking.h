@@ -12,9 +12,9 @@ namespace wobble {
 
 // Where a cursor ray first meets a collider that can be grabbed.
 struct ColliderHit {
-  int index = -1;                                    // into the colliders
-  float distance = 0.0f;                             // along the ray from its origin (m)
-  Eigen::Vector3f point = Eigen::Vector3f::Zero();   // on the collider's surface (m)
+  int index = -1;                                   // into the colliders
+  float distance = 0.0f;                            // along the ray from its origin (m)
+  Eigen::Vector3f point = Eigen::Vector3f::Zero();  // on the collider's surface (m)
 };
 
 // The nearest sphere, box or capsule the ray meets in front of its origin, within

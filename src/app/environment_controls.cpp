@@ -37,9 +37,9 @@ WindParams wind_with_speed_and_heading(const WindParams& wind, double speed,
   const double elevation = v.isZero(0.0) ? 0.0 : std::atan2(v.y(), std::hypot(v.x(), v.z()));
   const double heading = heading_degrees * pi / 180.0;
   WindParams changed = wind;
-  changed.velocity = speed * Eigen::Vector3d(std::cos(elevation) * std::cos(heading),
-                                             std::sin(elevation),
-                                             std::cos(elevation) * std::sin(heading));
+  changed.velocity =
+      speed * Eigen::Vector3d(std::cos(elevation) * std::cos(heading), std::sin(elevation),
+                              std::cos(elevation) * std::sin(heading));
   return changed;
 }
 

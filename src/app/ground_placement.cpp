@@ -19,8 +19,8 @@ double ground_grid_height(const Eigen::MatrixXd& V, const Eigen::MatrixXi& E,
   if (n == 0) return 0.0;
   const double rest_lowest = V.col(1).minCoeff();
   const double margin =
-      ground_margin_share * std::max((V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(),
-                                     1e-3);
+      ground_margin_share *
+      std::max((V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(), 1e-3);
   if (pins.empty()) return rest_lowest - margin;
 
   // One Dijkstra from every pin at once. cost(v) = min over pins of (1.1·d(v, pin) − pin_y), so

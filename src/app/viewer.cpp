@@ -5,9 +5,9 @@
 #include <exception>
 #include <utility>
 
+#include "environment_controls.h"
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
-#include "environment_controls.h"
 #include "scene_catalog.h"
 
 namespace wobble {

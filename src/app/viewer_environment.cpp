@@ -15,14 +15,14 @@ void Viewer::show_environment_in_panel() {
   panel_.friction = static_cast<float>(params.contact.friction);
   panel_.wind = params.wind.on;
   panel_.wind_speed = shown_wind_speed_ = static_cast<float>(wind_speed(params.wind));
-  panel_.wind_heading = shown_wind_heading_ =
-      static_cast<float>(wind_heading_degrees(params.wind));
+  panel_.wind_heading = shown_wind_heading_ = static_cast<float>(wind_heading_degrees(params.wind));
 }
 
 void Viewer::apply_environment_settings() {
   const SimulationParams& params = simulation_->params();
   // Damping re-factorizes Q; friction and wind cost nothing.
-  if (static_cast<float>(params.damping) != panel_.damping) simulation_->set_damping(panel_.damping);
+  if (static_cast<float>(params.damping) != panel_.damping)
+    simulation_->set_damping(panel_.damping);
   if (static_cast<float>(params.contact.friction) != panel_.friction) {
     simulation_->set_friction(panel_.friction);
   }

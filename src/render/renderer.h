@@ -50,8 +50,8 @@ struct GroundGrid {
 // Shaded solids drawn with the surface's two-sided lighting in one colour (the colliders). Plain
 // arrays; they may change every frame.
 struct SolidMesh {
-  const float* positions = nullptr;     // #V by 3 (m)
-  const float* normals = nullptr;       // #V by 3 outward unit normals
+  const float* positions = nullptr;  // #V by 3 (m)
+  const float* normals = nullptr;    // #V by 3 outward unit normals
   int vertex_count = 0;
   const unsigned* triangles = nullptr;  // #F by 3 indices, counter-clockwise from outside
   int triangle_count = 0;

@@ -58,7 +58,8 @@ ColliderSurface capsule_surface(const Collider& capsule, const Eigen::Vector3d& 
   if ((point - nearest).squaredNorm() == 0.0 && length2 > 0.0) {
     // On the axis: any direction across it will do; take the one across the axis nearest +y.
     Eigen::Vector3d across = Eigen::Vector3d::UnitY() - axis * (axis.y() / length2);
-    if (across.squaredNorm() < 1e-12) across = Eigen::Vector3d::UnitX() - axis * (axis.x() / length2);
+    if (across.squaredNorm() < 1e-12)
+      across = Eigen::Vector3d::UnitX() - axis * (axis.x() / length2);
     surface.normal = across.normalized();
   }
   return surface;
@@ -79,11 +80,16 @@ void check_number(double value, const ValueRange& range, const std::string& what
 
 const char* collider_type_name(ColliderType type) {
   switch (type) {
-    case ColliderType::ground: return "ground";
-    case ColliderType::plane: return "plane";
-    case ColliderType::sphere: return "sphere";
-    case ColliderType::box: return "box";
-    case ColliderType::capsule: return "capsule";
+    case ColliderType::ground:
+      return "ground";
+    case ColliderType::plane:
+      return "plane";
+    case ColliderType::sphere:
+      return "sphere";
+    case ColliderType::box:
+      return "box";
+    case ColliderType::capsule:
+      return "capsule";
   }
   return "collider";
 }
