@@ -83,8 +83,8 @@ struct Renderer::Resources {
   }
 
   ~Resources() {
-    const GLuint buffers[10] = {positions,      normals,       marks,           triangle_indices,
-                                spring_indices, grid_vertices, uvs,             solid_positions,
+    const GLuint buffers[10] = {positions,      normals,       marks, triangle_indices,
+                                spring_indices, grid_vertices, uvs,   solid_positions,
                                 solid_normals,  solid_indices};
     glDeleteBuffers(10, buffers);
     glDeleteTextures(1, &texture);
@@ -232,39 +232,36 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glDrawArrays(GL_LINES, 0, r.grid_vertex_count);
   }
 
-  if (layers.surface && r.triangle_count > 0) {
+  // Shaded triangles through the surface's program (two-sided lighting), pushed back in depth by
+  // glPolygonOffset(factor, units).
+  const auto shaded = [&](const Eigen::Vector3f& front, const Eigen::Vector3f& back, bool textured,
+                          float factor, float units, GLuint array, int count) {
     r.mesh.use();
     glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
-    glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.front.data());
-    glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.back.data());
-    const bool textured = r.textured && r.has_uv;
+    glUniform3fv(r.mesh.uniform("front_color"), 1, front.data());
+    glUniform3fv(r.mesh.uniform("back_color"), 1, back.data());
     glUniform1i(r.mesh.uniform("use_texture"), textured ? 1 : 0);
     glUniform1i(r.mesh.uniform("surface_texture"), 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, textured ? r.texture : 0);
-    // Push the surface back a little so edges drawn on it win the depth test.
     glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(1.0f, 1.0f);
-    glBindVertexArray(r.surface_array);
-    glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
+    glPolygonOffset(factor, units);
+    glBindVertexArray(array);
+    glDrawElements(GL_TRIANGLES, 3 * count, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
     glBindTexture(GL_TEXTURE_2D, 0);
+  };
+  if (layers.surface && r.triangle_count > 0) {
+    // Pushed back a little so edges drawn on it win the depth test.
+    shaded(r.colors.front, r.colors.back, r.textured && r.has_uv, 1.0f, 1.0f, r.surface_array,
+           r.triangle_count);
   }
   if (layers.solids && r.solid_triangle_count > 0) {
-    r.mesh.use();
-    glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
-    glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
-    glUniform3fv(r.mesh.uniform("front_color"), 1, r.colors.solid.data());
-    glUniform3fv(r.mesh.uniform("back_color"), 1, r.colors.solid.data());
-    glUniform1i(r.mesh.uniform("use_texture"), 0);
     // Pushed back further than the surface, so that a cloth resting on a collider a contact
     // offset (a few mm) above it is never hidden by it.
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(4.0f, 64.0f);
-    glBindVertexArray(r.solid_array);
-    glDrawElements(GL_TRIANGLES, 3 * r.solid_triangle_count, GL_UNSIGNED_INT, nullptr);
-    glDisable(GL_POLYGON_OFFSET_FILL);
+    shaded(r.colors.solid, r.colors.solid, false, 4.0f, 64.0f, r.solid_array,
+           r.solid_triangle_count);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
   glEnable(GL_BLEND);
