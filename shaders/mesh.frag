@@ -4,11 +4,13 @@
 in vec3 world_position;
 in vec3 world_normal;
 in vec2 texture_uv;
+in vec3 vertex_color;
 
 uniform vec3 eye;
 uniform vec3 front_color;
 uniform vec3 back_color;
 uniform bool use_texture;
+uniform bool use_vertex_colors;  // coloured by a quantity: both sides alike, no texture
 uniform sampler2D surface_texture;
 
 out vec4 color;
@@ -17,10 +19,12 @@ void main() {
   vec3 n = normalize(world_normal);
   vec3 base = front_color;
   if (use_texture) base = texture(surface_texture, texture_uv).rgb;
+  if (use_vertex_colors) base = vertex_color;
   if (!gl_FrontFacing) {
     n = -n;
-    // A textured back shows the texture through, a little darker, as printed fabric does.
-    base = use_texture ? 0.8 * base : back_color;
+    // A textured back shows the texture through, a little darker, as printed fabric does. A
+    // quantity reads the same from either side.
+    if (!use_vertex_colors) base = use_texture ? 0.8 * base : back_color;
   }
   vec3 to_eye = normalize(eye - world_position);
   // A key light just above the viewer keeps the lit side facing the camera while orbiting. It

@@ -3,16 +3,19 @@
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 3) in vec2 uv;
+layout(location = 4) in vec3 color;  // by a quantity (strain, speed), when use_vertex_colors
 
 uniform mat4 view_projection;
 
 out vec3 world_position;
 out vec3 world_normal;
 out vec2 texture_uv;
+out vec3 vertex_color;
 
 void main() {
   world_position = position;
   world_normal = normal;
+  vertex_color = color;
   // OBJ's v grows upwards; image rows (as uploaded) grow downwards.
   texture_uv = vec2(uv.x, 1.0 - uv.y);
   gl_Position = view_projection * vec4(position, 1.0);

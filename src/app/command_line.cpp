@@ -93,7 +93,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, obj_sequence, damping, friction;
+      record, yaw, pitch, obj_sequence, damping, friction, color_by;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -128,6 +128,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--wireframe", command.wireframe, "Start with the wireframe shown");
   app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
   app.add_flag("--points", command.points, "Start with every vertex shown as a point");
+  app.add_option("--color-by", color_by,
+                 "Colour the shape by spring strain or vertex speed, with a legend: material, "
+                 "strain or speed (default material; the V key cycles)");
   app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
   app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
@@ -192,6 +195,13 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (pitch) {
     command.camera_pitch = number_between("--camera-pitch", *pitch, -CommandLine::max_camera_pitch,
                                           CommandLine::max_camera_pitch);
+  }
+  if (color_by) {
+    const std::optional<ColorQuantity> quantity = color_quantity_named(*color_by);
+    if (!quantity) {
+      throw InputError("--color-by: expected material, strain or speed, got '" + *color_by + "'");
+    }
+    command.color_by = *quantity;
   }
   return command;
 }

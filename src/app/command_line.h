@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drag_script.h"
+#include "quantity_colors.h"
 #include "sim/simulation.h"
 
 namespace wobble {
@@ -35,6 +36,7 @@ struct CommandLine {
   bool ui = false;                 // headless: draw the ImGui panel too
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;  // degrees
+  ColorQuantity color_by = ColorQuantity::material;  // strain or speed: coloured, with a legend
 
   bool writes_images() const { return !screenshot.empty() || !record.empty(); }
 

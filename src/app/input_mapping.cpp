@@ -23,6 +23,8 @@ ViewerCommand command_for_key(int key) {
       return ViewerCommand::toggle_points;
     case GLFW_KEY_L:
       return ViewerCommand::toggle_springs;
+    case GLFW_KEY_V:
+      return ViewerCommand::cycle_color_by;
     case GLFW_KEY_H:
       return ViewerCommand::toggle_help;
     case GLFW_KEY_F:
@@ -61,6 +63,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"C", "colliders shown / hidden"},
       {"P", "vertices as points on / off"},
       {"L", "springs as lines on / off"},
+      {"V", "colour by material / strain / speed"},
       {"F", "frame the mesh"},
       {"H", "this help on / off"},
       {"Esc", "quit"},

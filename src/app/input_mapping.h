@@ -17,6 +17,7 @@ enum class ViewerCommand {
   toggle_colliders,
   toggle_points,
   toggle_springs,
+  cycle_color_by,  // material → strain → speed → material
   toggle_help,
   frame_mesh,
   quit,

@@ -48,8 +48,11 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   EglContext context;
   OffscreenTarget target(options.width, options.height);
   RendererAttachment attachment(viewer);
+  // ImGui draws the panel (--ui) and the colour legend, which shows whenever the shape is
+  // coloured by a quantity.
+  const bool legend = viewer.color_by() != ColorQuantity::material;
   std::unique_ptr<HeadlessUi> ui;
-  if (options.ui) ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  if (options.ui || legend) ui = std::make_unique<HeadlessUi>(options.width, options.height);
   if (report) report->context = context.description();
 
   const Eigen::Vector2f size(static_cast<float>(options.width), static_cast<float>(options.height));
@@ -63,7 +66,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
     if (ui) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui::NewFrame();
-      viewer.build_ui(timings, 1.0f);
+      if (options.ui) viewer.build_ui(timings, 1.0f);
     }
     viewer.advance();
     // A rolled-back step stops the run: the frames so far stay written, nothing else is.
@@ -81,6 +84,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
       report->local_ms.push_back(step.local_ms);
       report->global_ms.push_back(step.global_ms);
     }
+    if (ui) viewer.build_legend(1.0f);
 
     const auto start = std::chrono::steady_clock::now();
     target.bind();

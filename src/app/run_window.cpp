@@ -5,11 +5,13 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <chrono>
 #include <memory>
 
 #include "image_outputs.h"
 #include "obj_sequence.h"
 #include "platform/glfw_window.h"
+#include "real_time_meter.h"
 #include "render/offscreen_target.h"
 #include "scene_catalog.h"
 #include "viewer.h"
@@ -55,6 +57,8 @@ int run_window(const CommandLine& command, std::ostream& progress) {
 
   RgbaImage image;
   long frame = 0;
+  RealTimeMeter real_time;
+  const auto start = std::chrono::steady_clock::now();
   while (!window.should_close() && !viewer.quit_requested()) {
     // 1. poll
     const std::vector<InputEvent> events = window.poll_events();
@@ -72,9 +76,14 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     // 3. UI
     PanelStats timings;
     timings.fps = io.Framerate;
+    timings.real_time_factor = static_cast<float>(real_time.real_time_factor());
+    timings.steps_per_second = static_cast<float>(real_time.steps_per_second());
     viewer.build_ui(timings, ui_scale);
     // 4. step: one fixed dt per frame
     viewer.advance();
+    real_time.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                     viewer.simulation().time(), viewer.simulation().steps_taken());
+    viewer.build_legend(ui_scale);
     obj_sequence.write(frame + 1, viewer.simulation().positions(), viewer.scene().network);
     // 5. render
     ImGui::Render();

@@ -55,6 +55,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
   settings.drags = command.drags;
+  settings.color_by = command.color_by;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -75,6 +76,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.springs = settings.layers.springs;
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
+  panel_.color_by = static_cast<int>(settings.color_by);
   if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
   if (settings.camera_pitch_degrees) {
     settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees, -OrbitCamera::max_pitch,
@@ -200,6 +202,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   PanelStats stats = this->stats();
   stats.show_timings = timings.show_timings;
   stats.fps = timings.fps;
+  stats.real_time_factor = timings.real_time_factor;
+  stats.steps_per_second = timings.steps_per_second;
   const StepTiming& step = simulation_->last_step_timing();
   stats.step_ms = static_cast<float>(step.total_ms);
   stats.local_ms = static_cast<float>(step.local_ms);
@@ -248,7 +252,10 @@ void Viewer::apply_panel_settings() {
 }
 
 void Viewer::advance() {
-  if (panel_.paused && !step_requested_) return;
+  if (panel_.paused && !step_requested_) {
+    update_quantity_colors();  // a paused shape still moves under a dragged pin
+    return;
+  }
   step_requested_ = false;
   const long frame = simulation_->steps_taken() + 1;
   drag_script_.before_step(*simulation_, frame);
@@ -260,6 +267,7 @@ void Viewer::advance() {
     step_warning_ =
         "Paused at step " + std::to_string(frame) + ": " + Simulation::describe(status) + ".";
   }
+  update_quantity_colors();
 }
 
 PanelStats Viewer::stats() const {
@@ -335,6 +343,13 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.positions = positions_.data();
   frame.normals = normals_.data();
   frame.marks = marks_.data();
+  // Colours from advance(), for this shape (a scene loaded since has none until its advance).
+  const std::vector<float>& vertex_colors = quantity_colors_.vertex_colors();
+  const std::vector<float>& spring_colors = quantity_colors_.spring_colors();
+  if (vertex_colors.size() == positions_.size() && spring_colors.size() == 3 * springs_.size() / 2) {
+    frame.vertex_colors = vertex_colors.data();
+    frame.spring_colors = spring_colors.data();
+  }
   renderer_->update(frame);
   renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width,
                   framebuffer_height, pixel_ratio);

@@ -14,6 +14,7 @@
 #include "input_mapping.h"
 #include "io/png_image.h"
 #include "platform/input_event.h"
+#include "quantity_colors.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "sim/shapes/builtin_scenes.h"
@@ -31,6 +32,7 @@ struct ViewerSettings {
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
+  ColorQuantity color_by = ColorQuantity::material;
 };
 
 // The start-up settings a command line asks for.
@@ -39,7 +41,7 @@ ViewerSettings viewer_settings(const CommandLine& command);
 // Everything the window and the headless mode share: the scene and its simulation, the camera,
 // the mouse and keys, the ImGui panel, and the renderer. Only the GL context and the frame loop
 // around it differ between the two modes. One frame is, in this order:
-//   handle_events → build_ui → advance → render
+//   handle_events → build_ui → advance → build_legend → render
 class Viewer {
  public:
   // `scene_sources` are what the scene picker offers (built-in names and scene files, as
@@ -65,8 +67,12 @@ class Viewer {
   // The panel and the help overlay (ImGui, between NewFrame and Render). Applies what changed.
   void build_ui(const PanelStats& timings, float ui_scale);
   // One time step, unless paused. A step the simulation rolls back pauses the viewer and sets
-  // step_warning().
+  // step_warning(). Then, paused or not, the colours of color_by() for the state to be drawn.
   void advance();
+  // viewer_colors.cpp: the colour bar of color_by() (ImGui, after advance so that it shows the
+  // range this frame is drawn with, and before ImGui::Render); nothing for material.
+  void build_legend(float ui_scale);
+  ColorQuantity color_by() const { return static_cast<ColorQuantity>(panel_.color_by); }
   // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
   // `pixel_ratio` is framebuffer pixels per window unit.
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
@@ -96,6 +102,7 @@ class Viewer {
   void place_ground();
   void update_collider_mesh();
   void update_vertex_arrays();
+  void update_quantity_colors();  // viewer_colors.cpp
   int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
   Ray ray_at(const Eigen::Vector2f& cursor) const;
 
@@ -133,6 +140,7 @@ class Viewer {
   RgbaImage texture_;
   GroundGrid ground_;
   ColliderTriangles collider_mesh_;
+  QuantityColors quantity_colors_;  // empty while coloured by material
   // The wind's speed and heading as the panel last showed them, so that only a slider the user
   // moved changes the wind.
   float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;

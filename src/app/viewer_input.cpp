@@ -124,6 +124,9 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::toggle_springs:
       panel_.springs = !panel_.springs;
       break;
+    case ViewerCommand::cycle_color_by:
+      panel_.color_by = static_cast<int>(next_color_quantity(color_by()));
+      break;
     case ViewerCommand::toggle_help:
       panel_.show_help = !panel_.show_help;
       break;

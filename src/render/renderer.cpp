@@ -5,12 +5,15 @@
 #include <vector>
 
 #include "shader_program.h"
+#include "spring_color_table.h"
 
 namespace wobble {
 
 namespace {
 
-constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3;
+constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3,
+                color_location = 4;
+constexpr int spring_color_unit = 1;  // the surface's texture has unit 0
 
 }  // namespace
 
@@ -19,6 +22,7 @@ struct Renderer::Resources {
   ShaderProgram line{"line.vert", "line.frag"};
   ShaderProgram point{"point.vert", "point.frag"};
   ShaderProgram background{"background.vert", "background.frag"};
+  ShaderProgram colored_springs{"line.vert", "spring_colors.frag"};
 
   // One position buffer feeds three vertex arrays, each with its own element buffer: the surface
   // (with normals), the springs, and the markers (with marks).
@@ -29,13 +33,17 @@ struct Renderer::Resources {
   GLuint grid_array = 0, grid_vertices = 0, empty_array = 0;
   // The solids have buffers of their own, drawn through the surface's program.
   GLuint solid_array = 0, solid_positions = 0, solid_normals = 0, solid_indices = 0;
+  // Colours by a quantity, used while the last update() had them.
+  GLuint vertex_colors = 0;
+  SpringColorTable spring_colors;
+  bool vertex_colored = false, springs_colored = false;
   int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
   int solid_triangle_count = 0;
   SurfaceColors colors;
 
   Resources() {
-    GLuint buffers[10];
-    glGenBuffers(10, buffers);
+    GLuint buffers[11];
+    glGenBuffers(11, buffers);
     positions = buffers[0];
     normals = buffers[1];
     marks = buffers[2];
@@ -46,6 +54,7 @@ struct Renderer::Resources {
     solid_positions = buffers[7];
     solid_normals = buffers[8];
     solid_indices = buffers[9];
+    vertex_colors = buffers[10];
     glGenTextures(1, &texture);
     GLuint arrays[6];
     glGenVertexArrays(6, arrays);
@@ -60,6 +69,7 @@ struct Renderer::Resources {
     attribute(positions, position_location, 3, GL_FLOAT);
     attribute(normals, normal_location, 3, GL_FLOAT);
     attribute(uvs, uv_location, 2, GL_FLOAT);
+    attribute(vertex_colors, color_location, 3, GL_FLOAT);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_indices);
 
     glBindVertexArray(spring_array);
@@ -83,10 +93,10 @@ struct Renderer::Resources {
   }
 
   ~Resources() {
-    const GLuint buffers[10] = {positions,      normals,       marks, triangle_indices,
-                                spring_indices, grid_vertices, uvs,   solid_positions,
-                                solid_normals,  solid_indices};
-    glDeleteBuffers(10, buffers);
+    const GLuint buffers[11] = {positions,       normals,       marks,        triangle_indices,
+                                spring_indices,  grid_vertices, uvs,          solid_positions,
+                                solid_normals,   solid_indices, vertex_colors};
+    glDeleteBuffers(11, buffers);
     glDeleteTextures(1, &texture);
     const GLuint arrays[6] = {surface_array, spring_array, point_array,
                               grid_array,    empty_array,  solid_array};
@@ -118,6 +128,9 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, r.marks);
   glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, r.vertex_colors);
+  glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
+  r.vertex_colored = r.springs_colored = false;
   // Without uv the buffer still holds zeros, so the attribute never reads past its end.
   r.has_uv = topology.uv != nullptr;
   const std::vector<float> no_uv(r.has_uv ? 0 : 2 * r.vertex_count, 0.0f);
@@ -191,13 +204,21 @@ void Renderer::set_solids(const SolidMesh& solids) {
 }
 
 void Renderer::update(const MeshFrame& frame) {
-  const Resources& r = *resources_;
+  Resources& r = *resources_;
   glBindBuffer(GL_ARRAY_BUFFER, r.positions);
   glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.positions);
   glBindBuffer(GL_ARRAY_BUFFER, r.normals);
   glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.normals);
   glBindBuffer(GL_ARRAY_BUFFER, r.marks);
   glBufferSubData(GL_ARRAY_BUFFER, 0, r.vertex_count, frame.marks);
+  // Colours cost an upload only while they are shown.
+  r.vertex_colored = frame.vertex_colors != nullptr;
+  if (r.vertex_colored) {
+    glBindBuffer(GL_ARRAY_BUFFER, r.vertex_colors);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.vertex_colors);
+  }
+  r.springs_colored = frame.spring_colors != nullptr && r.spring_count > 0;
+  if (r.springs_colored) r.spring_colors.upload(frame.spring_colors, r.spring_count);
 }
 
 void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
@@ -235,13 +256,15 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   // Shaded triangles through the surface's program (two-sided lighting), pushed back in depth by
   // glPolygonOffset(factor, units).
   const auto shaded = [&](const Eigen::Vector3f& front, const Eigen::Vector3f& back, bool textured,
-                          float factor, float units, GLuint array, int count) {
+                          bool vertex_colored, float factor, float units, GLuint array,
+                          int count) {
     r.mesh.use();
     glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
     glUniform3fv(r.mesh.uniform("front_color"), 1, front.data());
     glUniform3fv(r.mesh.uniform("back_color"), 1, back.data());
     glUniform1i(r.mesh.uniform("use_texture"), textured ? 1 : 0);
+    glUniform1i(r.mesh.uniform("use_vertex_colors"), vertex_colored ? 1 : 0);
     glUniform1i(r.mesh.uniform("surface_texture"), 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, textured ? r.texture : 0);
@@ -254,13 +277,13 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   };
   if (layers.surface && r.triangle_count > 0) {
     // Pushed back a little so edges drawn on it win the depth test.
-    shaded(r.colors.front, r.colors.back, r.textured && r.has_uv, 1.0f, 1.0f, r.surface_array,
-           r.triangle_count);
+    shaded(r.colors.front, r.colors.back, r.textured && r.has_uv && !r.vertex_colored,
+           r.vertex_colored, 1.0f, 1.0f, r.surface_array, r.triangle_count);
   }
   if (layers.solids && r.solid_triangle_count > 0) {
     // Pushed back further than the surface, so that a cloth resting on a collider a contact
     // offset (a few mm) above it is never hidden by it.
-    shaded(r.colors.solid, r.colors.solid, false, 4.0f, 64.0f, r.solid_array,
+    shaded(r.colors.solid, r.colors.solid, false, false, 4.0f, 64.0f, r.solid_array,
            r.solid_triangle_count);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
@@ -274,7 +297,18 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
-  if (layers.springs && r.spring_count > 0) {
+  if (layers.springs && r.spring_count > 0 && r.springs_colored) {
+    // More opaque than plain springs, so that each line's colour reads.
+    r.colored_springs.use();
+    glUniformMatrix4fv(r.colored_springs.uniform("view_projection"), 1, GL_FALSE,
+                       view_projection.data());
+    glUniform1i(r.colored_springs.uniform("spring_colors"), spring_color_unit);
+    glUniform1f(r.colored_springs.uniform("alpha"), 0.8f);
+    r.spring_colors.bind(spring_color_unit);
+    glBindVertexArray(r.spring_array);
+    glDrawElements(GL_LINES, 2 * r.spring_count, GL_UNSIGNED_INT, nullptr);
+    r.spring_colors.unbind(spring_color_unit);
+  } else if (layers.springs && r.spring_count > 0) {
     const float spring_color[4] = {0.55f, 0.95f, 0.85f, 0.45f};
     lines(spring_color);
     glBindVertexArray(r.spring_array);

@@ -27,6 +27,10 @@ struct MeshFrame {
   const float* positions = nullptr;      // #V by 3 (m)
   const float* normals = nullptr;        // #V by 3 unit normals
   const unsigned char* marks = nullptr;  // #V: 0 free, 1 pinned, 2 highlighted
+  // Colours by a quantity (strain, speed), linear RGB in [0, 1]; null for the material colours.
+  // Set, they replace the surface's colours and texture (still lit) and the springs' one colour.
+  const float* vertex_colors = nullptr;  // #V by 3, interpolated across the triangles
+  const float* spring_colors = nullptr;  // #E by 3, one colour per spring line
 };
 
 // Which layers to draw.

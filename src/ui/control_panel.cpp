@@ -24,6 +24,21 @@ void section(const char* title) {
 
 const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
 
+// Whether the motion on screen is the simulation's own speed: with one fixed step per frame it
+// runs in slow motion when a frame takes longer than a step simulates.
+void real_time_rows(const PanelStats& stats, bool paused) {
+  ImGui::TextUnformatted("real time");
+  ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
+  if (paused) {
+    ImGui::TextUnformatted("paused");
+    return;
+  }
+  const bool slow = stats.real_time_factor < 0.95f;
+  // "\xc3\x97" is U+00D7, the multiplication sign: in the default font's Latin-1 range.
+  ImGui::Text("\xc3\x97%.2f%s", stats.real_time_factor, slow ? " (slow motion)" : "");
+  stat_row("steps", "%.0f /s", stats.steps_per_second);
+}
+
 }  // namespace
 
 PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
@@ -100,10 +115,13 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::Checkbox("springs", &settings.springs);
   ImGui::SameLine();
   ImGui::Checkbox("points", &settings.points);
+  const char* const color_names[] = {"material", "strain", "speed"};
+  ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
 
   section("stats");
   if (stats.show_timings) {
     stat_row("fps", "%.1f", stats.fps);
+    real_time_rows(stats, settings.paused);
     stat_row("step", "%.2f ms", stats.step_ms);
     stat_row("  local", "%.2f ms", stats.local_ms);
     stat_row("  global", "%.2f ms", stats.global_ms);

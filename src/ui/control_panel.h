@@ -22,6 +22,7 @@ struct PanelSettings {
   bool colliders = true;    // colliders shown
   bool paused = false;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
+  int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
   int scene = 0;  // index into the scene names
   bool show_help = false;
 
@@ -40,6 +41,9 @@ struct PanelStats {
   float fps = 0.0f;
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
   float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
+  // Over about the last second: simulated seconds per wall-clock second (< 1: slow motion), and
+  // steps per wall-clock second.
+  float real_time_factor = 0.0f, steps_per_second = 0.0f;
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;

@@ -1,0 +1,42 @@
+#include "spring_color_table.h"
+
+namespace wobble {
+
+SpringColorTable::SpringColorTable() {
+  glGenBuffers(1, &buffer_);
+  glGenTextures(1, &texture_);
+}
+
+SpringColorTable::~SpringColorTable() {
+  glDeleteTextures(1, &texture_);
+  glDeleteBuffers(1, &buffer_);
+}
+
+void SpringColorTable::upload(const float* rgb, int spring_count) {
+  const GLsizeiptr bytes = 3 * sizeof(float) * static_cast<GLsizeiptr>(spring_count);
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer_);
+  if (spring_count != capacity_) {
+    // The texture's view of the buffer is set again whenever its storage is replaced.
+    glBufferData(GL_TEXTURE_BUFFER, bytes, rgb, GL_STREAM_DRAW);
+    glBindTexture(GL_TEXTURE_BUFFER, texture_);
+    glTexBuffer(GL_TEXTURE_BUFFER, GL_R32F, buffer_);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    capacity_ = spring_count;
+  } else {
+    glBufferSubData(GL_TEXTURE_BUFFER, 0, bytes, rgb);
+  }
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+void SpringColorTable::bind(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, texture_);
+}
+
+void SpringColorTable::unbind(int unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+}  // namespace wobble
