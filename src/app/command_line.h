@@ -35,7 +35,7 @@ struct CommandLine {
   std::string record;              // folder for one PNG per frame; empty: none
   bool ui = false;                 // headless: draw the ImGui panel too
   bool wireframe = false, springs = false, points = false;
-  std::optional<double> camera_yaw, camera_pitch;  // degrees
+  std::optional<double> camera_yaw, camera_pitch;    // degrees
   ColorQuantity color_by = ColorQuantity::material;  // strain or speed: coloured, with a legend
 
   bool writes_images() const { return !screenshot.empty() || !record.empty(); }

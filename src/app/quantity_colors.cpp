@@ -146,7 +146,8 @@ float QuantityColors::range() const {
   return 0.0f;
 }
 
-void QuantityColors::update(ColorQuantity quantity, const Simulation& simulation) {
+void QuantityColors::update(ColorQuantity quantity, const Simulation& simulation,
+                            bool with_springs) {
   // A quantity chosen afresh starts from its own maximum rather than an old one.
   if (quantity != quantity_) {
     strain_range_.restart();
@@ -161,13 +162,14 @@ void QuantityColors::update(ColorQuantity quantity, const Simulation& simulation
   const Eigen::MatrixXi& E = simulation.rest().E;
   const Eigen::Index vertex_count = simulation.positions().rows();
   vertex_colors_.resize(3 * vertex_count);
-  spring_colors_.resize(3 * E.rows());
+  spring_colors_.resize(with_springs ? 3 * E.rows() : 0);
+  const Eigen::Index colored_springs = with_springs ? E.rows() : 0;
   if (quantity == ColorQuantity::strain) {
     spring_strains(simulation.positions(), E, simulation.rest_lengths(), spring_values_);
     const float range = strain_range_.update(robust_maximum(spring_values_, scratch_));
     vertex_mean_of_springs(E, spring_values_, static_cast<int>(vertex_count), vertex_values_,
                            counts_);
-    for (Eigen::Index e = 0; e < E.rows(); ++e)
+    for (Eigen::Index e = 0; e < colored_springs; ++e)
       put(spring_colors_, e, diverging_color(spring_values_[e] / range));
     for (Eigen::Index i = 0; i < vertex_count; ++i)
       put(vertex_colors_, i, diverging_color(vertex_values_[i] / range));
@@ -178,7 +180,7 @@ void QuantityColors::update(ColorQuantity quantity, const Simulation& simulation
   const float range = speed_range_.update(robust_maximum(vertex_values_, scratch_));
   for (Eigen::Index i = 0; i < vertex_count; ++i)
     put(vertex_colors_, i, sequential_color(vertex_values_[i] / range));
-  for (Eigen::Index e = 0; e < E.rows(); ++e) {
+  for (Eigen::Index e = 0; e < colored_springs; ++e) {
     const float mean = 0.5f * (vertex_values_[E(e, 0)] + vertex_values_[E(e, 1)]);
     put(spring_colors_, e, sequential_color(mean / range));
   }

@@ -81,8 +81,9 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     viewer.build_ui(timings, ui_scale);
     // 4. step: one fixed dt per frame
     viewer.advance();
-    real_time.record(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                     viewer.simulation().time(), viewer.simulation().steps_taken());
+    real_time.record(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        viewer.simulation().time(), viewer.simulation().steps_taken());
     viewer.build_legend(ui_scale);
     obj_sequence.write(frame + 1, viewer.simulation().positions(), viewer.scene().network);
     // 5. render

@@ -346,8 +346,8 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // Colours from advance(), for this shape (a scene loaded since has none until its advance).
   const std::vector<float>& vertex_colors = quantity_colors_.vertex_colors();
   const std::vector<float>& spring_colors = quantity_colors_.spring_colors();
-  if (vertex_colors.size() == positions_.size() && spring_colors.size() == 3 * springs_.size() / 2) {
-    frame.vertex_colors = vertex_colors.data();
+  if (vertex_colors.size() == positions_.size()) frame.vertex_colors = vertex_colors.data();
+  if (spring_colors.size() == 3 * springs_.size() / 2 && !spring_colors.empty()) {
     frame.spring_colors = spring_colors.data();
   }
   renderer_->update(frame);

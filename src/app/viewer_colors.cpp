@@ -13,7 +13,7 @@ constexpr int legend_samples = 33;
 
 void Viewer::update_quantity_colors() {
   // Coloured by material, this only clears what was there: no per-frame work.
-  quantity_colors_.update(color_by(), *simulation_);
+  quantity_colors_.update(color_by(), *simulation_, /*with_springs=*/panel_.springs);
 }
 
 void Viewer::build_legend(float ui_scale) {

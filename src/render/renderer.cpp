@@ -12,7 +12,7 @@ namespace wobble {
 namespace {
 
 constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3,
-                color_location = 4;
+                 color_location = 4;
 constexpr int spring_color_unit = 1;  // the surface's texture has unit 0
 
 }  // namespace
@@ -93,9 +93,9 @@ struct Renderer::Resources {
   }
 
   ~Resources() {
-    const GLuint buffers[11] = {positions,       normals,       marks,        triangle_indices,
-                                spring_indices,  grid_vertices, uvs,          solid_positions,
-                                solid_normals,   solid_indices, vertex_colors};
+    const GLuint buffers[11] = {positions,      normals,       marks,        triangle_indices,
+                                spring_indices, grid_vertices, uvs,          solid_positions,
+                                solid_normals,  solid_indices, vertex_colors};
     glDeleteBuffers(11, buffers);
     glDeleteTextures(1, &texture);
     const GLuint arrays[6] = {surface_array, spring_array, point_array,
@@ -256,8 +256,7 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   // Shaded triangles through the surface's program (two-sided lighting), pushed back in depth by
   // glPolygonOffset(factor, units).
   const auto shaded = [&](const Eigen::Vector3f& front, const Eigen::Vector3f& back, bool textured,
-                          bool vertex_colored, float factor, float units, GLuint array,
-                          int count) {
+                          bool vertex_colored, float factor, float units, GLuint array, int count) {
     r.mesh.use();
     glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());

@@ -12,10 +12,10 @@ namespace wobble {
 //   -2.1%      0      +2.1%     0               3.4
 //   compression blue, stretch red
 struct ColorLegend {
-  std::string title;               // the quantity and its unit
-  std::string low, middle, high;   // labels under the bar's left end, centre and right end
-  std::string note;                // a line under the labels (what the colours mean), or empty
-  std::vector<float> colors;       // n by 3 linear RGB samples of the map, left to right, n ≥ 2
+  std::string title;              // the quantity and its unit
+  std::string low, middle, high;  // labels under the bar's left end, centre and right end
+  std::string note;               // a line under the labels (what the colours mean), or empty
+  std::vector<float> colors;      // n by 3 linear RGB samples of the map, left to right, n ≥ 2
 };
 
 // Draws the legend in a small undecorated window at the bottom right of the display, clear of the

@@ -9,21 +9,21 @@ namespace wobble {
 // What the panel edits. The app compares it with the simulation after each frame's UI and applies
 // what changed, so the panel itself touches neither the simulation nor GL.
 struct PanelSettings {
-  float k = 400.0f;         // N/m
-  float dt = 1.0f / 60.0f;  // s
-  int iterations = 50;      //
-  float gravity = 9.81f;    // m/s², its strength along the scene's own direction
-  bool chebyshev = false;   // Chebyshev acceleration of the iterations
-  float damping = 0.0f;     // 1/s, mass-proportional
-  float friction = 0.0f;    // Coulomb μ against the colliders
-  bool wind = false;        // wind on
-  float wind_speed = 0.0f;  // m/s (aerodynamic wind only)
+  float k = 400.0f;           // N/m
+  float dt = 1.0f / 60.0f;    // s
+  int iterations = 50;        //
+  float gravity = 9.81f;      // m/s², its strength along the scene's own direction
+  bool chebyshev = false;     // Chebyshev acceleration of the iterations
+  float damping = 0.0f;       // 1/s, mass-proportional
+  float friction = 0.0f;      // Coulomb μ against the colliders
+  bool wind = false;          // wind on
+  float wind_speed = 0.0f;    // m/s (aerodynamic wind only)
   float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
-  bool colliders = true;    // colliders shown
+  bool colliders = true;      // colliders shown
   bool paused = false;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
   int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
-  int scene = 0;  // index into the scene names
+  int scene = 0;     // index into the scene names
   bool show_help = false;
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
@@ -47,9 +47,9 @@ struct PanelStats {
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;
-  bool has_colliders = false;    // friction, the colliders' checkbox and contacts show only then
-  bool aerodynamic_wind = true;  // the wind has a speed and heading (the course's has neither)
-  int contacts = 0;              // vertices the last step moved out of a collider
+  bool has_colliders = false;      // friction, the colliders' checkbox and contacts show only then
+  bool aerodynamic_wind = true;    // the wind has a speed and heading (the course's has neither)
+  int contacts = 0;                // vertices the last step moved out of a collider
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
 };

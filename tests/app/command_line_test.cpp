@@ -72,7 +72,8 @@ TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
       {"--headless --dt 0", "--dt"},
       {"--headless --iterations 20000", "5000"},
       {"curtain --headless", "curtain"},
-      {"--headless --color-by stress", "--color-by: expected material, strain or speed, got 'stress'"},
+      {"--headless --color-by stress",
+       "--color-by: expected material, strain or speed, got 'stress'"},
       {"--headless --color-by ''", "--color-by: expected material, strain or speed, got ''"},
   };
   for (const auto& [arguments, expected] : cases) {

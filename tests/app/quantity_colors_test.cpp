@@ -169,6 +169,11 @@ TEST(QuantityColors, ColoursAStretchedSpringRedAndACompressedOneBlue) {
   const Eigen::Map<const Eigen::Vector3f> middle(colors.vertex_colors().data() + 3);
   EXPECT_TRUE(middle.isApprox(wobble::diverging_color(0.0f), 1e-4f));
 
+  // Springs that are not drawn get no colours; the vertices still do.
+  colors.update(ColorQuantity::strain, simulation, /*with_springs=*/false);
+  EXPECT_TRUE(colors.spring_colors().empty());
+  EXPECT_EQ(colors.vertex_colors().size(), 9u);
+
   colors.update(ColorQuantity::material, simulation);
   EXPECT_TRUE(colors.vertex_colors().empty());
   EXPECT_TRUE(colors.spring_colors().empty());

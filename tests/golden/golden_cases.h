@@ -56,6 +56,10 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"tablecloth", "@ASSETS@/tablecloth.json --frames 120 --width 320 --height 240"},
       {"flag", "@ASSETS@/flag.json --frames 60 --width 320 --height 240"},
       {"jelly_drop", "@ASSETS@/jelly_drop.json --frames 150 --width 320 --height 240"},
+      // Colour by strain (issue: classroom instruments): the drape stretched red over the ball's
+      // top, its folds compressed blue, and the legend, which needs 480 × 320 to leave room.
+      {"drape_strain",
+       "@ASSETS@/drape.json --frames 120 --color-by strain --width 480 --height 320"},
   };
   return cases;
 }
