@@ -73,6 +73,8 @@ class Viewer {
   // range this frame is drawn with, and before ImGui::Render); nothing for material.
   void build_legend(float ui_scale);
   ColorQuantity color_by() const { return static_cast<ColorQuantity>(panel_.color_by); }
+  // The colours the last advance() computed (empty while coloured by material).
+  const QuantityColors& quantity_colors() const { return quantity_colors_; }
   // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
   // `pixel_ratio` is framebuffer pixels per window unit.
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,

@@ -280,3 +280,55 @@ TEST(Viewer, TheUserCanHideThemAndAMeshWithFacesGetsItsOwnLayersBack) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Viewer, VCyclesTheColouringAndMaterialComputesNoColours) {
+  ViewerFixture fixture;
+  wobble::Viewer& viewer = fixture.viewer;
+  const std::size_t vertices = viewer.scene().network.V.rows();
+  const std::size_t springs = viewer.scene().network.E.rows();
+  fixture.frame();
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
+  EXPECT_TRUE(viewer.quantity_colors().vertex_colors().empty());
+
+  fixture.press_key(GLFW_KEY_V);
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::strain);
+  fixture.frame();
+  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
+  // The springs are not drawn, so they get no colours.
+  EXPECT_TRUE(viewer.quantity_colors().spring_colors().empty());
+  fixture.press_key(GLFW_KEY_L);
+  fixture.frame();
+  EXPECT_EQ(viewer.quantity_colors().spring_colors().size(), 3 * springs);
+
+  fixture.press_key(GLFW_KEY_V);
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::speed);
+  fixture.frame();
+  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::speed);
+  EXPECT_GT(viewer.quantity_colors().range(), wobble::QuantityColors::speed_floor)
+      << "the cloth is falling";
+
+  fixture.press_key(GLFW_KEY_V);
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
+  fixture.frame();
+  EXPECT_TRUE(viewer.quantity_colors().vertex_colors().empty());
+  EXPECT_TRUE(viewer.quantity_colors().spring_colors().empty());
+}
+
+TEST(Viewer, StartsColouredAsAskedAndColoursAPausedShape) {
+  wobble::ViewerSettings settings;
+  settings.color_by = wobble::ColorQuantity::strain;
+  wobble::Viewer viewer(wobble::make_builtin_scene("cloth"), settings,
+                        wobble::builtin_scene_names());
+  InputEvent space;
+  space.type = InputEvent::Type::key_press;
+  space.code = GLFW_KEY_SPACE;
+  viewer.handle_events({space}, false, false, window);
+  viewer.advance();
+  EXPECT_EQ(viewer.simulation().steps_taken(), 0);
+  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::strain);
+  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3u * viewer.scene().network.V.rows());
+}
+
+}  // namespace

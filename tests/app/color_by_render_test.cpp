@@ -1,0 +1,76 @@
+// --color-by in headless images: the quantity's colours replace the material's, and the legend
+// shows at the bottom right, with or without --ui.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cloth_pixels.h"
+#include "io/png_image.h"
+#include "run_wobble.h"
+
+namespace {
+
+using wobble::testing::run_wobble;
+using wobble::testing::TemporaryFolder;
+
+constexpr int width = 640, height = 400;
+
+wobble::RgbaImage render(const TemporaryFolder& folder, const std::string& name,
+                         const std::string& options) {
+  const auto run = run_wobble("cloth --headless --frames 30 --width 640 --height 400 " + options +
+                                  " --screenshot '" + folder.file(name) + "'",
+                              "DISPLAY= WAYLAND_DISPLAY=");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return wobble::read_png(folder.file(name));
+}
+
+long count_pixels(const wobble::RgbaImage& image, bool (*test)(const unsigned char*)) {
+  long count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x)
+      count += test(image.pixel(x, y)) ? 1 : 0;
+  }
+  return count;
+}
+
+// Pixels that differ between two images, in the box [x0, x1) × [y0, y1).
+long differences(const wobble::RgbaImage& a, const wobble::RgbaImage& b, int x0, int y0, int x1,
+                 int y1) {
+  long count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const unsigned char *p = a.pixel(x, y), *q = b.pixel(x, y);
+      count += (p[0] != q[0] || p[1] != q[1] || p[2] != q[2]) ? 1 : 0;
+    }
+  }
+  return count;
+}
+
+TEST(ColorByRender, StrainReplacesTheMaterialAndTheLegendSitsAtTheBottomRight) {
+  TemporaryFolder folder;
+  const wobble::RgbaImage material = render(folder, "material.png", "");
+  const wobble::RgbaImage strain = render(folder, "strain.png", "--color-by strain");
+  ASSERT_EQ(strain.width, width);
+  // The orange front is gone: the cloth is near-white, pink and red.
+  const long orange = count_pixels(material, wobble::testing::is_cloth_front);
+  EXPECT_GT(orange, 5000);
+  EXPECT_LT(count_pixels(strain, wobble::testing::is_cloth_front), orange / 10);
+  // The legend changes the bottom-right corner, and nothing changes where there is neither cloth
+  // nor legend: the top of the picture and its bottom left.
+  EXPECT_GT(differences(material, strain, width - 200, height - 60, width, height), 8000);
+  EXPECT_EQ(differences(material, strain, 0, 0, width, 60), 0);
+  EXPECT_EQ(differences(material, strain, 0, height - 100, width / 2, height), 0);
+}
+
+TEST(ColorByRender, SpeedAndStrainDifferAndThePanelKeepsTheLegend) {
+  TemporaryFolder folder;
+  const wobble::RgbaImage strain = render(folder, "strain.png", "--color-by strain");
+  const wobble::RgbaImage speed = render(folder, "speed.png", "--color-by speed");
+  const wobble::RgbaImage speed_ui = render(folder, "speed_ui.png", "--color-by speed --ui");
+  EXPECT_GT(differences(strain, speed, 0, 0, width, height), 5000);
+  // The panel is at the top left; the legend at the bottom right is the same with it.
+  EXPECT_EQ(differences(speed, speed_ui, width - 200, height - 60, width, height), 0);
+  EXPECT_GT(differences(speed, speed_ui, 0, 0, 300, 200), 20000);
+}
+
+}  // namespace
