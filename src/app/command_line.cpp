@@ -100,6 +100,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
   app.add_option("--export-obj-sequence", obj_sequence,
                  "Write every frame as DIR/frame_00001.obj, ...");
+  std::optional<std::string> convergence_csv, energy_csv;
+  app.add_option("--convergence-csv", convergence_csv,
+                 "Write frame,iteration,energy,gradient_norm of every iterate of every step");
+  app.add_option("--energy-csv", energy_csv,
+                 "Write frame,time,kinetic,spring,gravity,potential,total of every frame (J)");
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
@@ -183,6 +188,16 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (obj_sequence) {
     command.export_obj_sequence = path_value("--export-obj-sequence", *obj_sequence, "folder path");
+  }
+  if (convergence_csv) {
+    command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
+  }
+  if (energy_csv) command.energy_csv = path_value("--energy-csv", *energy_csv, "file path");
+  if (!command.headless && !command.frames &&
+      (!command.convergence_csv.empty() || !command.energy_csv.empty())) {
+    throw InputError(std::string(command.convergence_csv.empty() ? "--energy-csv"
+                                                                 : "--convergence-csv") +
+                     ": in a window, needs --frames (how long to record)");
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");

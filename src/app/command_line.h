@@ -18,6 +18,8 @@ struct CommandLine {
   std::optional<long> frames;  // steps to run; headless runs default to default_headless_frames
   std::string export_obj;      // empty: no export
   std::string export_obj_sequence;  // folder for one OBJ per frame; empty: none
+  std::string convergence_csv;      // every iterate's objective and gradient; empty: none
+  std::string energy_csv;           // every frame's kinetic and potential energy; empty: none
   bool fill = false;                // fill a closed OBJ surface with tetrahedra
   std::optional<double> k;
   std::optional<double> dt;

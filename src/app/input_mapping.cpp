@@ -27,6 +27,8 @@ ViewerCommand command_for_key(int key) {
       return ViewerCommand::toggle_help;
     case GLFW_KEY_F:
       return ViewerCommand::frame_mesh;
+    case GLFW_KEY_G:
+      return ViewerCommand::toggle_plots;
     case GLFW_KEY_ESCAPE:
       return ViewerCommand::quit;
     default:
@@ -62,6 +64,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"P", "vertices as points on / off"},
       {"L", "springs as lines on / off"},
       {"F", "frame the mesh"},
+      {"G", "convergence and energy plots on / off"},
       {"H", "this help on / off"},
       {"Esc", "quit"},
       {"Left-drag a pin", "move the pin; the shape follows"},

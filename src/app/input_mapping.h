@@ -18,6 +18,7 @@ enum class ViewerCommand {
   toggle_points,
   toggle_springs,
   toggle_help,
+  toggle_plots,  // the convergence and energy plots
   frame_mesh,
   quit,
 };

@@ -75,6 +75,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
     if (options.obj_sequence != nullptr) {
       options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
     }
+    if (options.instruments != nullptr) options.instruments->record(frame, viewer.simulation());
     if (report) {
       const StepTiming& step = viewer.simulation().last_step_timing();
       report->step_ms.push_back(step.total_ms);

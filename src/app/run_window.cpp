@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "image_outputs.h"
+#include "instrument_csv.h"
 #include "obj_sequence.h"
 #include "platform/glfw_window.h"
 #include "render/offscreen_target.h"
@@ -46,6 +47,10 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
   Viewer viewer = open_viewer(command);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv,
+                            command.frames.value_or(0), viewer.simulation().params().iterations);
+  viewer.set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.simulation());
 
   GlfwWindow window(command.width, command.height, "Wobble: " + viewer.scene().name);
   const float ui_scale = window.content_scale();
@@ -74,8 +79,13 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     timings.fps = io.Framerate;
     viewer.build_ui(timings, ui_scale);
     // 4. step: one fixed dt per frame
+    const long steps_before = viewer.simulation().steps_taken();
     viewer.advance();
     obj_sequence.write(frame + 1, viewer.simulation().positions(), viewer.scene().network);
+    // Rows for steps taken (none while paused), numbered by the simulation's step count.
+    if (viewer.simulation().steps_taken() != steps_before) {
+      instruments.record(viewer.simulation().steps_taken(), viewer.simulation());
+    }
     // 5. render
     ImGui::Render();
     if (width > 0 && height > 0) {  // a minimized window has no pixels
@@ -103,6 +113,7 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     outputs.write(frame, /*last=*/true, image);
   }
   viewer.detach_renderer();
+  instruments.write();
   return 0;
 }
 

@@ -101,6 +101,8 @@ void Viewer::load(Scene scene) {
   mode_ = Mode::idle;
   scene_ = std::move(scene);
   simulation_ = std::move(simulation);
+  clear_instruments();
+  update_recording();
   // The picker shows the scene as current; a scene from elsewhere joins the list.
   const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
   if (found == scene_labels_.end()) {
@@ -205,6 +207,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.local_ms = static_cast<float>(step.local_ms);
   stats.global_ms = static_cast<float>(step.global_ms);
   stats.forces_ms = static_cast<float>(step.forces_ms);
+  stats.instruments_ms = static_cast<float>(step.instruments_ms);
   stats.contact_ms = static_cast<float>(step.contact_ms);
 
   const PanelRequests requests = draw_control_panel(panel_, stats, scene_labels_, ui_scale);
@@ -212,6 +215,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
+  show_instruments(ui_scale);
   draw_step_warning(step_warning_, ui_scale);
 
   if (requests.scene_changed) {
@@ -252,9 +256,11 @@ void Viewer::advance() {
   step_requested_ = false;
   const long frame = simulation_->steps_taken() + 1;
   drag_script_.before_step(*simulation_, frame);
+  update_recording();
   const StepStatus status = simulation_->step();
   if (status == StepStatus::ok) {
     step_warning_.clear();
+    record_instruments();
   } else {
     panel_.paused = true;
     step_warning_ =

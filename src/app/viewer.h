@@ -17,11 +17,19 @@
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "sim/shapes/builtin_scenes.h"
+#include "sim/instruments/frame_energy.h"
 #include "sim/simulation.h"
 #include "ui/control_panel.h"
 #include "vertex_drag.h"
 
 namespace wobble {
+
+// The energy plot's samples, one a step, over the last seconds of simulated time.
+struct EnergyHistory {
+  std::vector<double> time, kinetic, spring, gravity, total;  // s, J
+  void add(double time, const FrameEnergy& energy);
+  void clear();
+};
 
 // How the viewer starts: overrides of the scene's parameters, and what to show.
 struct ViewerSettings {
@@ -72,6 +80,10 @@ class Viewer {
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
               float pixel_ratio);
 
+  // Keep the simulation recording its convergence whether or not the plot shows it (for
+  // --convergence-csv), through scene changes too.
+  void set_convergence_required(bool required);
+
   bool quit_requested() const { return quit_; }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
@@ -93,6 +105,11 @@ class Viewer {
   // viewer_environment.cpp: damping, friction, wind and colliders.
   void show_environment_in_panel();
   void apply_environment_settings();
+  // viewer_instruments.cpp: the convergence and energy plots.
+  void update_recording();
+  void record_instruments();
+  void clear_instruments();
+  void show_instruments(float ui_scale);
   void place_ground();
   void update_collider_mesh();
   void update_vertex_arrays();
@@ -115,6 +132,10 @@ class Viewer {
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;
+  bool convergence_required_ = false;
+  ConvergenceTrace shown_trace_;  // what the convergence window shows
+  long shown_trace_step_ = 0;
+  EnergyHistory energy_history_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;

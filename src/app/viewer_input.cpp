@@ -104,9 +104,17 @@ void Viewer::apply(ViewerCommand command) {
       if (drag_.active()) drag_.cancel();
       collider_drag_.cancel();  // reset puts the colliders back
       simulation_->reset();
+      clear_instruments();
       drag_script_.restart();
       step_warning_.clear();
       break;
+    case ViewerCommand::toggle_plots: {
+      // Both plots together: a class wants the two side by side.
+      const bool show = !(panel_.show_convergence && panel_.show_energy);
+      panel_.show_convergence = panel_.show_energy = show;
+      update_recording();
+      break;
+    }
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;
       break;

@@ -101,6 +101,11 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::SameLine();
   ImGui::Checkbox("points", &settings.points);
 
+  section("instruments");
+  ImGui::Checkbox("convergence", &settings.show_convergence);
+  ImGui::SameLine();
+  ImGui::Checkbox("energy", &settings.show_energy);
+
   section("stats");
   if (stats.show_timings) {
     stat_row("fps", "%.1f", stats.fps);
@@ -108,6 +113,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     stat_row("  local", "%.2f ms", stats.local_ms);
     stat_row("  global", "%.2f ms", stats.global_ms);
     if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
+    if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
     if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
   } else {
     ImGui::TextDisabled("timings hidden (headless)");

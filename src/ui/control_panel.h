@@ -24,6 +24,8 @@ struct PanelSettings {
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
   int scene = 0;  // index into the scene names
   bool show_help = false;
+  bool show_convergence = false;  // the last step's convergence plot
+  bool show_energy = false;       // the energy-over-time plot
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
@@ -40,6 +42,7 @@ struct PanelStats {
   float fps = 0.0f;
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
   float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
+  float instruments_ms = 0.0f;                // recording the convergence plot's numbers
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;
