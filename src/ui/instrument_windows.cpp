@@ -50,8 +50,12 @@ const char* convergence_hint(ConvergenceLight light) {
 }
 
 void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale) {
-  ImGui::SetNextWindowPos(ImVec2(350.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420.0f * ui_scale, 430.0f * ui_scale), ImGuiCond_FirstUseEver);
+  // Top right, out of the way of the panel (top left) and of a shape framed in the middle.
+  const float width = 380.0f * ui_scale;
+  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - width - 10.0f * ui_scale,
+                                 10.0f * ui_scale),
+                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, 390.0f * ui_scale), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Convergence of the last step", &open)) {
     ImGui::End();
     return;
@@ -72,10 +76,14 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
                                               0.45f * line, ImGui::GetColorU32(color));
   ImGui::Dummy(ImVec2(line, line));
   ImGui::SameLine();
-  ImGui::TextColored(color, "%s: |grad| fell to %.2g of its start", convergence_label(data.light),
+  ImGui::TextColored(color, "%s: |grad| at %.2g of start", convergence_label(data.light),
                      data.reduction);
   const char* hint = convergence_hint(data.light);
-  if (hint[0] != '\0') ImGui::TextColored(color, "%s", hint);
+  if (hint[0] != '\0') {
+    ImGui::PushStyleColor(ImGuiCol_Text, color);
+    ImGui::TextWrapped("%s", hint);
+    ImGui::PopStyleColor();
+  }
   ImGui::Text("step %ld, %d %s iterations", data.step, iterations,
               data.chebyshev ? "Chebyshev" : "plain");
 
@@ -115,8 +123,11 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
 }
 
 void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) {
-  ImGui::SetNextWindowPos(ImVec2(350.0f * ui_scale, 450.0f * ui_scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(420.0f * ui_scale, 260.0f * ui_scale), ImGuiCond_FirstUseEver);
+  const float width = 380.0f * ui_scale;
+  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - width - 10.0f * ui_scale,
+                                 410.0f * ui_scale),
+                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, 250.0f * ui_scale), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Energy over time", &open)) {
     ImGui::End();
     return;

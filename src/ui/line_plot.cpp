@@ -142,7 +142,20 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
   }
   draw->PopClipRect();
 
-  // The legend, top right, one name a line.
+  // The legend, top right, one name a line, on a shaded box so that curves do not hide it.
+  float legend_width = 0.0f;
+  int names = 0;
+  for (const PlotSeries& s : series) {
+    if (s.name == nullptr || s.name[0] == '\0') continue;
+    legend_width = std::max(legend_width, ImGui::CalcTextSize(s.name).x);
+    ++names;
+  }
+  if (names > 0) {
+    draw->AddRectFilled(
+        ImVec2(bottom_right.x - legend_width - 1.6f * line, top_left.y + 0.1f * line),
+        ImVec2(bottom_right.x - 0.1f * line, top_left.y + (names + 0.3f) * line),
+        IM_COL32(20, 22, 26, 210));
+  }
   float y = top_left.y + 0.2f * line;
   for (const PlotSeries& s : series) {
     if (s.name == nullptr || s.name[0] == '\0') continue;
