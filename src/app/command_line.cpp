@@ -100,7 +100,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
   app.add_option("--export-obj-sequence", obj_sequence,
                  "Write every frame as DIR/frame_00001.obj, ...");
-  std::optional<std::string> convergence_csv, energy_csv;
+  std::optional<std::string> convergence_csv, energy_csv, compare;
+  app.add_option("--compare", compare,
+                 "Split view: the right side with these settings, e.g. \"iterations=5\" "
+                 "(iterations, chebyshev=on|off, dt, k; comma-separated)");
   app.add_option("--convergence-csv", convergence_csv,
                  "Write frame,iteration,energy,gradient_norm of every iterate of every step");
   app.add_option("--energy-csv", energy_csv,
@@ -192,6 +195,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (convergence_csv) {
     command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
   }
+  if (compare) command.compare = parse_compare_settings(*compare);
   if (energy_csv) command.energy_csv = path_value("--energy-csv", *energy_csv, "file path");
   if (!command.headless && !command.frames &&
       (!command.convergence_csv.empty() || !command.energy_csv.empty())) {

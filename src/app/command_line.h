@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compare_settings.h"
 #include "drag_script.h"
 #include "sim/simulation.h"
 
@@ -20,6 +21,7 @@ struct CommandLine {
   std::string export_obj_sequence;  // folder for one OBJ per frame; empty: none
   std::string convergence_csv;      // every iterate's objective and gradient; empty: none
   std::string energy_csv;           // every frame's kinetic and potential energy; empty: none
+  std::optional<CompareSettings> compare;  // --compare: the split view's right side
   bool fill = false;                // fill a closed OBJ surface with tetrahedra
   std::optional<double> k;
   std::optional<double> dt;

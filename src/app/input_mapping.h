@@ -19,6 +19,7 @@ enum class ViewerCommand {
   toggle_springs,
   toggle_help,
   toggle_plots,  // the convergence and energy plots
+  toggle_split,  // the split view: the scene twice, side by side
   frame_mesh,
   quit,
 };

@@ -48,8 +48,11 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   EglContext context;
   OffscreenTarget target(options.width, options.height);
   RendererAttachment attachment(viewer);
+  // ImGui draws the panel, and the split view's corner labels even without the panel.
   std::unique_ptr<HeadlessUi> ui;
-  if (options.ui) ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  if (options.ui || viewer.right_side() != nullptr) {
+    ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  }
   if (report) report->context = context.description();
 
   const Eigen::Vector2f size(static_cast<float>(options.width), static_cast<float>(options.height));
@@ -63,7 +66,11 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
     if (ui) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui::NewFrame();
-      viewer.build_ui(timings, 1.0f);
+      if (options.ui) {
+        viewer.build_ui(timings, 1.0f);
+      } else {
+        viewer.draw_overlays(1.0f);
+      }
     }
     viewer.advance();
     // A rolled-back step stops the run: the frames so far stay written, nothing else is.

@@ -55,6 +55,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
   settings.drags = command.drags;
+  settings.compare = command.compare;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -84,6 +85,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   camera_.pitch = settings_pitch_.value_or(default_pitch);
   load(std::move(scene));
   drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
+  if (settings.compare) start_split(*settings.compare);
 }
 
 Viewer::~Viewer() = default;
@@ -94,6 +96,10 @@ void Viewer::load(Scene scene) {
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
+  // A split view stays split, its right side keeping its own settings on the new scene.
+  std::optional<CompareSettings> split;
+  if (twin_) split = twin_settings();
+  twin_.reset();
   drag_.cancel();
   collider_drag_.cancel();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
@@ -173,6 +179,7 @@ void Viewer::load(Scene scene) {
     }
   }
   texture_ = std::move(texture);
+  if (split) start_split(*split);
   if (renderer_) attach_renderer();
 }
 
@@ -217,6 +224,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_help_overlay(help, panel_.show_help);
   show_instruments(ui_scale);
   draw_step_warning(step_warning_, ui_scale);
+  draw_overlays(ui_scale);
 
   if (requests.scene_changed) {
     // A scene file that fails to load leaves the current scene running, with the reason shown.
@@ -249,6 +257,7 @@ void Viewer::apply_panel_settings() {
                              params.gravity_model);
   }
   apply_environment_settings();
+  apply_split_settings();
 }
 
 void Viewer::advance() {
@@ -261,6 +270,7 @@ void Viewer::advance() {
   if (status == StepStatus::ok) {
     step_warning_.clear();
     record_instruments();
+    advance_twin(simulation_->params().dt);
   } else {
     panel_.paused = true;
     step_warning_ =
@@ -297,10 +307,12 @@ void Viewer::update_vertex_arrays() {
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio) {
-  window_size_ = window_size;
+  // Split, each side gets half the width, under the same camera.
+  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
+  const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
   update_vertex_arrays();
   const int n = static_cast<int>(positions_.size() / 3);
-  const float aspect = static_cast<float>(framebuffer_width) / std::max(framebuffer_height, 1);
+  const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   if (frame_on_next_render_) {
     Eigen::Vector3f lower, upper;
     bounds(positions_.data(), n, lower, upper);
@@ -342,8 +354,21 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.normals = normals_.data();
   frame.marks = marks_.data();
   renderer_->update(frame);
-  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width,
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), left_width,
                   framebuffer_height, pixel_ratio);
+  if (!twin_) return;
+  const Eigen::MatrixXd& p = twin_->positions();
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      twin_positions_[3 * i + k] = static_cast<float>(p(i, k));
+  }
+  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
+  frame.positions = twin_positions_.data();
+  frame.normals = twin_normals_.data();
+  renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(),
+                  framebuffer_width - left_width, framebuffer_height, pixel_ratio, left_width);
 }
 
 ViewLayers Viewer::layers() const {

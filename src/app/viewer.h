@@ -10,6 +10,7 @@
 #include "collider_drag.h"
 #include "collider_mesh.h"
 #include "command_line.h"
+#include "compare_settings.h"
 #include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
@@ -39,6 +40,7 @@ struct ViewerSettings {
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
+  std::optional<CompareSettings> compare;  // open in the split view with this right side
 };
 
 // The start-up settings a command line asks for.
@@ -84,6 +86,12 @@ class Viewer {
   // --convergence-csv), through scene changes too.
   void set_convergence_required(bool required);
 
+  // Overlays drawn without the panel (the split view's corner labels); build_ui draws them too.
+  // Between ImGui's NewFrame and Render.
+  void draw_overlays(float ui_scale);
+  // The split view's right side, or null when the view is not split.
+  const Simulation* right_side() const { return twin_.get(); }
+
   bool quit_requested() const { return quit_; }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
@@ -110,6 +118,15 @@ class Viewer {
   void record_instruments();
   void clear_instruments();
   void show_instruments(float ui_scale);
+  // viewer_compare.cpp: the split view.
+  void start_split(const CompareSettings& settings);
+  void stop_split();
+  void show_twin_in_panel();
+  CompareSettings twin_settings() const;
+  void apply_split_settings();
+  void sync_twin();
+  void advance_twin(double seconds);
+  void reset_twin();
   void place_ground();
   void update_collider_mesh();
   void update_vertex_arrays();
@@ -136,12 +153,19 @@ class Viewer {
   ConvergenceTrace shown_trace_;  // what the convergence window shows
   long shown_trace_step_ = 0;
   EnergyHistory energy_history_;
+  // The split view's right side: its simulation, how much simulated time it is behind the
+  // left, why it stopped (empty while it runs), and its vertex arrays.
+  std::unique_ptr<Simulation> twin_;
+  double twin_behind_ = 0.0;
+  std::string twin_warning_;
+  std::vector<float> twin_positions_, twin_normals_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
   VertexDrag drag_;
   ColliderDrag collider_drag_;
-  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);
+  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);  // in the half under it when split
+  Eigen::Vector2f raw_cursor_ = Eigen::Vector2f(-1e9f, -1e9f);  // in the window
   Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
   bool cursor_over_ui_ = false;
   int hovered_pin_ = -1;

@@ -106,6 +106,19 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::SameLine();
   ImGui::Checkbox("energy", &settings.show_energy);
 
+  section("compare");
+  ImGui::Checkbox("split view: right side", &settings.split);
+  if (settings.split) {
+    ImGui::SliderFloat("k right", &settings.right_k, PanelSettings::min_k, PanelSettings::max_k,
+                       "%.1f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt,
+                       "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderInt("iterations right", &settings.right_iterations,
+                     PanelSettings::min_iterations, PanelSettings::max_iterations, "%d",
+                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+  }
+
   section("stats");
   if (stats.show_timings) {
     stat_row("fps", "%.1f", stats.fps);

@@ -26,6 +26,11 @@ struct PanelSettings {
   bool show_help = false;
   bool show_convergence = false;  // the last step's convergence plot
   bool show_energy = false;       // the energy-over-time plot
+  // The split view and its right side's own settings.
+  bool split = false;
+  float right_k = 400.0f, right_dt = 1.0f / 60.0f;
+  int right_iterations = 5;
+  bool right_chebyshev = false;
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
