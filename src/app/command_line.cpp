@@ -133,6 +133,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");
   app.add_option("--record", record, "Write every frame as DIR/frame_00001.png, ...");
   app.add_flag("--ui", command.ui, "Headless images show the control panel too");
+  app.add_flag("--plots", command.plots,
+               "Open the convergence and energy plots (key G), in images too");
   app.add_flag("--wireframe", command.wireframe, "Start with the wireframe shown");
   app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
   app.add_flag("--points", command.points, "Start with every vertex shown as a point");

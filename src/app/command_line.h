@@ -37,6 +37,7 @@ struct CommandLine {
   std::string screenshot;          // PNG of the frame after the last step; empty: none
   std::string record;              // folder for one PNG per frame; empty: none
   bool ui = false;                 // headless: draw the ImGui panel too
+  bool plots = false;              // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;  // degrees
 

@@ -89,7 +89,7 @@ CompareSettings parse_compare_settings(const std::string& text) {
 
 std::string describe_side(const SimulationParams& params) {
   char text[160];
-  std::snprintf(text, sizeof(text), "%d iteration%s, %s, dt %.3g ms, k %g N/m", params.iterations,
+  std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
                 params.iterations == 1 ? "" : "s", params.chebyshev ? "Chebyshev" : "plain",
                 1000.0 * params.dt, params.k);
   return text;

@@ -25,8 +25,8 @@ struct CompareSettings {
 // expected.
 CompareSettings parse_compare_settings(const std::string& text);
 
-// The settings that tell one side from the other, for its corner: "50 iterations, plain,
-// dt 16.7 ms, k 400 N/m".
+// The settings that tell one side from the other, for its corner, on two lines:
+// "50 iterations, plain\ndt 16.7 ms, k 400 N/m".
 std::string describe_side(const SimulationParams& params);
 
 // The right side a split view opens with when nothing asked for one: a tenth of the iterations

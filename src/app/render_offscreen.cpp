@@ -50,7 +50,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   RendererAttachment attachment(viewer);
   // ImGui draws the panel, and the split view's corner labels even without the panel.
   std::unique_ptr<HeadlessUi> ui;
-  if (options.ui || viewer.right_side() != nullptr) {
+  if (options.ui || viewer.has_overlays()) {
     ui = std::make_unique<HeadlessUi>(options.width, options.height);
   }
   if (report) report->context = context.description();

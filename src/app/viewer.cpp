@@ -56,6 +56,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.layers.points = command.points;
   settings.drags = command.drags;
   settings.compare = command.compare;
+  settings.plots = command.plots;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -76,6 +77,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.springs = settings.layers.springs;
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
+  panel_.show_convergence = panel_.show_energy = settings.plots;
   if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
   if (settings.camera_pitch_degrees) {
     settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees, -OrbitCamera::max_pitch,
@@ -222,7 +224,6 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
-  show_instruments(ui_scale);
   draw_step_warning(step_warning_, ui_scale);
   draw_overlays(ui_scale);
 

@@ -41,6 +41,7 @@ struct ViewerSettings {
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
   std::optional<CompareSettings> compare;  // open in the split view with this right side
+  bool plots = false;                      // open the convergence and energy plots
 };
 
 // The start-up settings a command line asks for.
@@ -86,9 +87,12 @@ class Viewer {
   // --convergence-csv), through scene changes too.
   void set_convergence_required(bool required);
 
-  // Overlays drawn without the panel (the split view's corner labels); build_ui draws them too.
-  // Between ImGui's NewFrame and Render.
+  // What ImGui draws besides the panel: the convergence and energy plots when open, the split
+  // view's corner labels. build_ui draws them too; headless images without the panel draw only
+  // these. Between ImGui's NewFrame and Render.
   void draw_overlays(float ui_scale);
+  // Whether draw_overlays has anything to draw.
+  bool has_overlays() const { return twin_ || panel_.show_convergence || panel_.show_energy; }
   // The split view's right side, or null when the view is not split.
   const Simulation* right_side() const { return twin_.get(); }
 

@@ -133,6 +133,7 @@ void Viewer::reset_twin() {
 }
 
 void Viewer::draw_overlays(float ui_scale) {
+  show_instruments(ui_scale);
   if (!twin_) return;
   SideLabels labels;
   labels.left = describe_side(simulation_->params());

@@ -50,12 +50,14 @@ const char* convergence_hint(ConvergenceLight light) {
 }
 
 void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale) {
-  // Top right, out of the way of the panel (top left) and of a shape framed in the middle.
-  const float width = 380.0f * ui_scale;
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - width - 10.0f * ui_scale,
-                                 10.0f * ui_scale),
+  // Top right, out of the way of the panel (top left) and of a shape framed in the middle; on a
+  // small display (a headless image) the two windows share the right side's height.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float width = std::min(380.0f * ui_scale, 0.45f * display.x);
+  ImGui::SetNextWindowPos(ImVec2(display.x - width - 10.0f * ui_scale, 10.0f * ui_scale),
                           ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(width, 390.0f * ui_scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, std::min(390.0f * ui_scale, 0.6f * display.y - 15.0f)),
+                           ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Convergence of the last step", &open)) {
     ImGui::End();
     return;
@@ -123,11 +125,13 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
 }
 
 void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) {
-  const float width = 380.0f * ui_scale;
-  ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - width - 10.0f * ui_scale,
-                                 410.0f * ui_scale),
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float width = std::min(380.0f * ui_scale, 0.45f * display.x);
+  const float top = std::min(410.0f * ui_scale, 0.6f * display.y + 5.0f);
+  ImGui::SetNextWindowPos(ImVec2(display.x - width - 10.0f * ui_scale, top),
                           ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(width, 250.0f * ui_scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, std::min(250.0f * ui_scale, display.y - top - 10.0f)),
+                           ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Energy over time", &open)) {
     ImGui::End();
     return;

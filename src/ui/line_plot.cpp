@@ -46,7 +46,7 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float line = ImGui::GetTextLineHeight();
   // The plotting area leaves room for the y labels on the left and the x labels below.
-  const ImVec2 top_left(origin.x + 4.5f * line, origin.y + 0.5f * line);
+  const ImVec2 top_left(origin.x + 4.5f * line, origin.y + 1.2f * line);
   const ImVec2 bottom_right(origin.x + size.x - 0.5f * line, origin.y + size.y - 2.2f * line);
   draw->AddRectFilled(top_left, bottom_right, IM_COL32(20, 22, 26, 255));
   draw->AddRect(top_left, bottom_right, IM_COL32(90, 90, 100, 255));
@@ -61,7 +61,7 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
     }
   }
   const ImU32 label_color = ImGui::GetColorU32(ImGuiCol_TextDisabled);
-  draw->AddText(ImVec2(top_left.x + 0.3f * line, top_left.y), label_color, axes.y_label);
+  draw->AddText(ImVec2(top_left.x, origin.y), label_color, axes.y_label);
   draw->AddText(ImVec2(0.5f * (top_left.x + bottom_right.x) - 2.0f * line,
                        bottom_right.y + 1.1f * line),
                 label_color, axes.x_label);

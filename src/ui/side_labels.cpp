@@ -23,11 +23,10 @@ void draw_side_labels(const SideLabels& labels, float ui_scale) {
                 2.0f * ui_scale);
   const float margin = 12.0f * ui_scale, pad = 5.0f * ui_scale;
   const ImU32 white = IM_COL32(240, 240, 240, 255);
-  corner_text(draw, ImVec2(margin, display.y - margin), "left: " + labels.left, white, pad);
-  corner_text(draw, ImVec2(half + margin, display.y - margin), "right: " + labels.right, white,
-              pad);
+  corner_text(draw, ImVec2(margin, display.y - margin), labels.left, white, pad);
+  corner_text(draw, ImVec2(half + margin, display.y - margin), labels.right, white, pad);
   if (!labels.right_warning.empty()) {
-    corner_text(draw, ImVec2(half + margin, display.y - margin - 2.0f * ImGui::GetTextLineHeight()),
+    corner_text(draw, ImVec2(half + margin, display.y - margin - 3.0f * ImGui::GetTextLineHeight()),
                 labels.right_warning, IM_COL32(255, 190, 60, 255), pad);
   }
 }
