@@ -100,6 +100,14 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
   app.add_option("--export-obj-sequence", obj_sequence,
                  "Write every frame as DIR/frame_00001.obj, ...");
+  std::optional<std::string> convergence_csv, energy_csv, compare;
+  app.add_option("--compare", compare,
+                 "Split view: the right side with these settings, e.g. \"iterations=5\" "
+                 "(iterations, chebyshev=on|off, dt, k; comma-separated)");
+  app.add_option("--convergence-csv", convergence_csv,
+                 "Write frame,iteration,energy,gradient_norm of every iterate of every step");
+  app.add_option("--energy-csv", energy_csv,
+                 "Write frame,time,kinetic,spring,gravity,potential,total of every frame (J)");
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
@@ -125,6 +133,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");
   app.add_option("--record", record, "Write every frame as DIR/frame_00001.png, ...");
   app.add_flag("--ui", command.ui, "Headless images show the control panel too");
+  app.add_flag("--plots", command.plots,
+               "Open the convergence and energy plots (key G), in images too");
   app.add_flag("--wireframe", command.wireframe, "Start with the wireframe shown");
   app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
   app.add_flag("--points", command.points, "Start with every vertex shown as a point");
@@ -186,6 +196,17 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (obj_sequence) {
     command.export_obj_sequence = path_value("--export-obj-sequence", *obj_sequence, "folder path");
+  }
+  if (convergence_csv) {
+    command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
+  }
+  if (compare) command.compare = parse_compare_settings(*compare);
+  if (energy_csv) command.energy_csv = path_value("--energy-csv", *energy_csv, "file path");
+  if (!command.headless && !command.frames &&
+      (!command.convergence_csv.empty() || !command.energy_csv.empty())) {
+    throw InputError(std::string(command.convergence_csv.empty() ? "--energy-csv"
+                                                                 : "--convergence-csv") +
+                     ": in a window, needs --frames (how long to record)");
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");

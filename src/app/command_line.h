@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "compare_settings.h"
 #include "drag_script.h"
 #include "quantity_colors.h"
 #include "sim/simulation.h"
@@ -19,6 +20,9 @@ struct CommandLine {
   std::optional<long> frames;  // steps to run; headless runs default to default_headless_frames
   std::string export_obj;      // empty: no export
   std::string export_obj_sequence;  // folder for one OBJ per frame; empty: none
+  std::string convergence_csv;      // every iterate's objective and gradient; empty: none
+  std::string energy_csv;           // every frame's kinetic and potential energy; empty: none
+  std::optional<CompareSettings> compare;  // --compare: the split view's right side
   bool fill = false;                // fill a closed OBJ surface with tetrahedra
   std::optional<double> k;
   std::optional<double> dt;
@@ -34,6 +38,7 @@ struct CommandLine {
   std::string screenshot;          // PNG of the frame after the last step; empty: none
   std::string record;              // folder for one PNG per frame; empty: none
   bool ui = false;                 // headless: draw the ImGui panel too
+  bool plots = false;              // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;    // degrees
   ColorQuantity color_by = ColorQuantity::material;  // strain or speed: coloured, with a legend

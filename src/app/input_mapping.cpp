@@ -29,6 +29,10 @@ ViewerCommand command_for_key(int key) {
       return ViewerCommand::toggle_help;
     case GLFW_KEY_F:
       return ViewerCommand::frame_mesh;
+    case GLFW_KEY_G:
+      return ViewerCommand::toggle_plots;
+    case GLFW_KEY_2:
+      return ViewerCommand::toggle_split;
     case GLFW_KEY_ESCAPE:
       return ViewerCommand::quit;
     default:
@@ -65,6 +69,8 @@ const std::vector<Binding>& viewer_bindings() {
       {"L", "springs as lines on / off"},
       {"V", "colour by material / strain / speed"},
       {"F", "frame the mesh"},
+      {"G", "convergence and energy plots on / off"},
+      {"2", "split view: the scene twice, the right side with its own settings"},
       {"H", "this help on / off"},
       {"Esc", "quit"},
       {"Left-drag a pin", "move the pin; the shape follows"},

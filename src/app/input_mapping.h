@@ -19,6 +19,8 @@ enum class ViewerCommand {
   toggle_springs,
   cycle_color_by,  // material → strain → speed → material
   toggle_help,
+  toggle_plots,  // the convergence and energy plots
+  toggle_split,  // the split view: the scene twice, side by side
   frame_mesh,
   quit,
 };

@@ -134,7 +134,7 @@ float SmoothedRange::update(float maximum) {
   return value_;
 }
 
-float QuantityColors::range() const {
+float QuantityColors::measured_range() const {
   switch (quantity_) {
     case ColorQuantity::strain:
       return strain_range_.value();
@@ -148,36 +148,49 @@ float QuantityColors::range() const {
 
 void QuantityColors::update(ColorQuantity quantity, const Simulation& simulation,
                             bool with_springs) {
+  measure(quantity, simulation);
+  paint(simulation, measured_range(), with_springs);
+}
+
+void QuantityColors::measure(ColorQuantity quantity, const Simulation& simulation) {
   // A quantity chosen afresh starts from its own maximum rather than an old one.
   if (quantity != quantity_) {
     strain_range_.restart();
     speed_range_.restart();
   }
   quantity_ = quantity;
-  if (quantity == ColorQuantity::material) {
+  const Eigen::MatrixXi& E = simulation.rest().E;
+  if (quantity == ColorQuantity::strain) {
+    spring_strains(simulation.positions(), E, simulation.rest_lengths(), spring_values_);
+    strain_range_.update(robust_maximum(spring_values_, scratch_));
+    vertex_mean_of_springs(E, spring_values_, static_cast<int>(simulation.positions().rows()),
+                           vertex_values_, counts_);
+  } else if (quantity == ColorQuantity::speed) {
+    vertex_speeds(simulation.positions(), simulation.previous_positions(), simulation.params().dt,
+                  vertex_values_);
+    speed_range_.update(robust_maximum(vertex_values_, scratch_));
+  }
+}
+
+void QuantityColors::paint(const Simulation& simulation, float range, bool with_springs) {
+  painted_range_ = quantity_ == ColorQuantity::material ? 0.0f : range;
+  if (quantity_ == ColorQuantity::material) {
     vertex_colors_.clear();
     spring_colors_.clear();
     return;
   }
   const Eigen::MatrixXi& E = simulation.rest().E;
-  const Eigen::Index vertex_count = simulation.positions().rows();
-  vertex_colors_.resize(3 * vertex_count);
-  spring_colors_.resize(with_springs ? 3 * E.rows() : 0);
+  const Eigen::Index vertex_count = vertex_values_.size();
   const Eigen::Index colored_springs = with_springs ? E.rows() : 0;
-  if (quantity == ColorQuantity::strain) {
-    spring_strains(simulation.positions(), E, simulation.rest_lengths(), spring_values_);
-    const float range = strain_range_.update(robust_maximum(spring_values_, scratch_));
-    vertex_mean_of_springs(E, spring_values_, static_cast<int>(vertex_count), vertex_values_,
-                           counts_);
+  vertex_colors_.resize(3 * vertex_count);
+  spring_colors_.resize(3 * colored_springs);
+  if (quantity_ == ColorQuantity::strain) {
     for (Eigen::Index e = 0; e < colored_springs; ++e)
       put(spring_colors_, e, diverging_color(spring_values_[e] / range));
     for (Eigen::Index i = 0; i < vertex_count; ++i)
       put(vertex_colors_, i, diverging_color(vertex_values_[i] / range));
     return;
   }
-  vertex_speeds(simulation.positions(), simulation.previous_positions(), simulation.params().dt,
-                vertex_values_);
-  const float range = speed_range_.update(robust_maximum(vertex_values_, scratch_));
   for (Eigen::Index i = 0; i < vertex_count; ++i)
     put(vertex_colors_, i, sequential_color(vertex_values_[i] / range));
   for (Eigen::Index e = 0; e < colored_springs; ++e) {

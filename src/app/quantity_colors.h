@@ -99,9 +99,17 @@ class QuantityColors {
   // 128 × 128 cloth their 97,000 colours are half the cost.
   void update(ColorQuantity quantity, const Simulation& simulation, bool with_springs = true);
 
+  // update in two halves, for shapes shown side by side in one range (the split view): measure
+  // each, then paint each with the larger of their measured ranges, so that a colour means the
+  // same on both sides. paint needs the simulation that was measured, unchanged since.
+  void measure(ColorQuantity quantity, const Simulation& simulation);
+  void paint(const Simulation& simulation, float range, bool with_springs);
+  // This shape's own smoothed range, from the last measure.
+  float measured_range() const;
+
   ColorQuantity quantity() const { return quantity_; }
-  // strain: the map spans −range … +range (dimensionless); speed: 0 … range (m/s).
-  float range() const;
+  // The range of the colours: strain −range … +range (dimensionless), speed 0 … range (m/s).
+  float range() const { return painted_range_; }
   // #V by 3 and #E by 3 linear RGB, row-major; empty for material (and the springs' without
   // with_springs).
   const std::vector<float>& vertex_colors() const { return vertex_colors_; }
@@ -110,6 +118,7 @@ class QuantityColors {
  private:
   ColorQuantity quantity_ = ColorQuantity::material;
   SmoothedRange strain_range_{strain_floor}, speed_range_{speed_floor};
+  float painted_range_ = 0.0f;
   Eigen::VectorXf spring_values_, vertex_values_, counts_;
   std::vector<float> scratch_, vertex_colors_, spring_colors_;
 };

@@ -48,11 +48,13 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   EglContext context;
   OffscreenTarget target(options.width, options.height);
   RendererAttachment attachment(viewer);
-  // ImGui draws the panel (--ui) and the colour legend, which shows whenever the shape is
-  // coloured by a quantity.
+  // ImGui draws the panel, the split view's corner labels even without the panel, and the colour
+  // legend whenever the shape is coloured by a quantity.
   const bool legend = viewer.color_by() != ColorQuantity::material;
   std::unique_ptr<HeadlessUi> ui;
-  if (options.ui || legend) ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  if (options.ui || viewer.has_overlays() || legend) {
+    ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  }
   if (report) report->context = context.description();
 
   const Eigen::Vector2f size(static_cast<float>(options.width), static_cast<float>(options.height));
@@ -66,7 +68,11 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
     if (ui) {
       ImGui_ImplOpenGL3_NewFrame();
       ImGui::NewFrame();
-      if (options.ui) viewer.build_ui(timings, 1.0f);
+      if (options.ui) {
+        viewer.build_ui(timings, 1.0f);
+      } else {
+        viewer.draw_overlays(1.0f);
+      }
     }
     viewer.advance();
     // A rolled-back step stops the run: the frames so far stay written, nothing else is.
@@ -78,6 +84,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
     if (options.obj_sequence != nullptr) {
       options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
     }
+    if (options.instruments != nullptr) options.instruments->record(frame, viewer.simulation());
     if (report) {
       const StepTiming& step = viewer.simulation().last_step_timing();
       report->step_ms.push_back(step.total_ms);

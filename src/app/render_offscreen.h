@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "image_outputs.h"
+#include "instrument_csv.h"
 #include "io/png_image.h"
 #include "obj_sequence.h"
 #include "viewer.h"
@@ -15,6 +16,7 @@ struct OffscreenOptions {
   long frames = 1;                            // one time step each
   bool ui = false;                            // draw the ImGui panel into the images too
   const ObjSequence* obj_sequence = nullptr;  // also write each frame's positions as OBJ
+  InstrumentCsv* instruments = nullptr;       // rows of each frame's convergence and energy
 };
 
 // What an offscreen run measured.

@@ -10,6 +10,7 @@
 
 #include "drag_script.h"
 #include "image_outputs.h"
+#include "instrument_csv.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
 #include "obj_sequence.h"
@@ -67,6 +68,10 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
   const ObjSequence obj_sequence(command.export_obj_sequence);
   Viewer viewer = open_viewer(command);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames,
+                            viewer.simulation().params().iterations);
+  viewer.set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.simulation());
   print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
 
   OffscreenOptions options;
@@ -75,8 +80,15 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   options.frames = frames;
   options.ui = command.ui;
   options.obj_sequence = &obj_sequence;
+  options.instruments = &instruments;
   OffscreenReport report;
-  render_offscreen(viewer, options, &outputs, &report);
+  try {
+    render_offscreen(viewer, options, &outputs, &report);
+  } catch (...) {
+    instruments.write();  // the frames before a failure are kept, as the images are
+    throw;
+  }
+  instruments.write();
 
   const Simulation& simulation = viewer.simulation();
   if (!command.export_obj.empty()) {
@@ -113,9 +125,13 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   });
   Simulation& simulation = *simulation_pointer;
   DragScript drags(command.drags, scene.network.V.rows());
+  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames,
+                            params.iterations);
+  simulation.set_convergence_recording(instruments.wants_convergence());
+  instruments.start(simulation);
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 
-  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
   std::vector<double> step_ms, local_ms, global_ms;
   if (command.stats) {
     step_ms.reserve(frames);
@@ -127,11 +143,14 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     const StepStatus status = simulation.step();
     if (status != StepStatus::ok) {
       // The positions are still those of the last good frame, but the run did not finish:
-      // report it, and write no final export.
+      // report it, and write no final export. The instruments' rows so far are kept: they show
+      // how the run failed.
+      instruments.write();
       throw std::runtime_error("frame " + std::to_string(frame + 1) + ": " +
                                Simulation::describe(status));
     }
     obj_sequence.write(frame + 1, simulation.positions(), scene.network);
+    instruments.record(frame + 1, simulation);
     if (command.stats) {
       const StepTiming& timing = simulation.last_step_timing();
       step_ms.push_back(timing.total_ms);
@@ -140,6 +159,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     }
   }
 
+  instruments.write();
   if (!command.export_obj.empty()) {
     write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
   }

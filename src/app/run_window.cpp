@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "image_outputs.h"
+#include "instrument_csv.h"
 #include "obj_sequence.h"
 #include "platform/glfw_window.h"
 #include "real_time_meter.h"
@@ -48,6 +49,10 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
   Viewer viewer = open_viewer(command);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv,
+                            command.frames.value_or(0), viewer.simulation().params().iterations);
+  viewer.set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.simulation());
 
   GlfwWindow window(command.width, command.height, "Wobble: " + viewer.scene().name);
   const float ui_scale = window.content_scale();
@@ -80,12 +85,17 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     timings.steps_per_second = static_cast<float>(real_time.steps_per_second());
     viewer.build_ui(timings, ui_scale);
     // 4. step: one fixed dt per frame
+    const long steps_before = viewer.simulation().steps_taken();
     viewer.advance();
     real_time.record(
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
         viewer.simulation().time(), viewer.simulation().steps_taken());
     viewer.build_legend(ui_scale);
     obj_sequence.write(frame + 1, viewer.simulation().positions(), viewer.scene().network);
+    // Rows for steps taken (none while paused), numbered by the simulation's step count.
+    if (viewer.simulation().steps_taken() != steps_before) {
+      instruments.record(viewer.simulation().steps_taken(), viewer.simulation());
+    }
     // 5. render
     ImGui::Render();
     if (width > 0 && height > 0) {  // a minimized window has no pixels
@@ -113,6 +123,7 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     outputs.write(frame, /*last=*/true, image);
   }
   viewer.detach_renderer();
+  instruments.write();
   return 0;
 }
 

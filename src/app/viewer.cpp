@@ -56,6 +56,8 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.layers.points = command.points;
   settings.drags = command.drags;
   settings.color_by = command.color_by;
+  settings.compare = command.compare;
+  settings.plots = command.plots;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -77,6 +79,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
   panel_.color_by = static_cast<int>(settings.color_by);
+  panel_.show_convergence = panel_.show_energy = settings.plots;
   if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
   if (settings.camera_pitch_degrees) {
     settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees, -OrbitCamera::max_pitch,
@@ -86,6 +89,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   camera_.pitch = settings_pitch_.value_or(default_pitch);
   load(std::move(scene));
   drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
+  if (settings.compare) start_split(*settings.compare);
 }
 
 Viewer::~Viewer() = default;
@@ -96,6 +100,10 @@ void Viewer::load(Scene scene) {
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
+  // A split view stays split, its right side keeping its own settings on the new scene.
+  std::optional<CompareSettings> split;
+  if (twin_) split = twin_settings();
+  twin_.reset();
   drag_.cancel();
   collider_drag_.cancel();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
@@ -103,6 +111,8 @@ void Viewer::load(Scene scene) {
   mode_ = Mode::idle;
   scene_ = std::move(scene);
   simulation_ = std::move(simulation);
+  clear_instruments();
+  update_recording();
   // The picker shows the scene as current; a scene from elsewhere joins the list.
   const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
   if (found == scene_labels_.end()) {
@@ -173,6 +183,7 @@ void Viewer::load(Scene scene) {
     }
   }
   texture_ = std::move(texture);
+  if (split) start_split(*split);
   if (renderer_) attach_renderer();
 }
 
@@ -209,6 +220,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.local_ms = static_cast<float>(step.local_ms);
   stats.global_ms = static_cast<float>(step.global_ms);
   stats.forces_ms = static_cast<float>(step.forces_ms);
+  stats.instruments_ms = static_cast<float>(step.instruments_ms);
   stats.contact_ms = static_cast<float>(step.contact_ms);
 
   const PanelRequests requests = draw_control_panel(panel_, stats, scene_labels_, ui_scale);
@@ -217,6 +229,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
   draw_step_warning(step_warning_, ui_scale);
+  draw_overlays(ui_scale);
 
   if (requests.scene_changed) {
     // A scene file that fails to load leaves the current scene running, with the reason shown.
@@ -249,6 +262,7 @@ void Viewer::apply_panel_settings() {
                              params.gravity_model);
   }
   apply_environment_settings();
+  apply_split_settings();
 }
 
 void Viewer::advance() {
@@ -259,9 +273,12 @@ void Viewer::advance() {
   step_requested_ = false;
   const long frame = simulation_->steps_taken() + 1;
   drag_script_.before_step(*simulation_, frame);
+  update_recording();
   const StepStatus status = simulation_->step();
   if (status == StepStatus::ok) {
     step_warning_.clear();
+    record_instruments();
+    advance_twin(simulation_->params().dt);
   } else {
     panel_.paused = true;
     step_warning_ =
@@ -299,10 +316,12 @@ void Viewer::update_vertex_arrays() {
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio) {
-  window_size_ = window_size;
+  // Split, each side gets half the width, under the same camera.
+  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
+  const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
   update_vertex_arrays();
   const int n = static_cast<int>(positions_.size() / 3);
-  const float aspect = static_cast<float>(framebuffer_width) / std::max(framebuffer_height, 1);
+  const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   if (frame_on_next_render_) {
     Eigen::Vector3f lower, upper;
     bounds(positions_.data(), n, lower, upper);
@@ -343,16 +362,24 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.positions = positions_.data();
   frame.normals = normals_.data();
   frame.marks = marks_.data();
-  // Colours from advance(), for this shape (a scene loaded since has none until its advance).
-  const std::vector<float>& vertex_colors = quantity_colors_.vertex_colors();
-  const std::vector<float>& spring_colors = quantity_colors_.spring_colors();
-  if (vertex_colors.size() == positions_.size()) frame.vertex_colors = vertex_colors.data();
-  if (spring_colors.size() == 3 * springs_.size() / 2 && !spring_colors.empty()) {
-    frame.spring_colors = spring_colors.data();
-  }
+  add_quantity_colors(quantity_colors_, frame);
   renderer_->update(frame);
-  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width,
-                  framebuffer_height, pixel_ratio);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), left_width, framebuffer_height,
+                  pixel_ratio);
+  if (!twin_) return;
+  const Eigen::MatrixXd& p = twin_->positions();
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      twin_positions_[3 * i + k] = static_cast<float>(p(i, k));
+  }
+  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
+  frame.positions = twin_positions_.data();
+  frame.normals = twin_normals_.data();
+  add_quantity_colors(twin_colors_, frame);
+  renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width - left_width,
+                  framebuffer_height, pixel_ratio, left_width);
 }
 
 ViewLayers Viewer::layers() const {

@@ -10,6 +10,7 @@
 #include "collider_drag.h"
 #include "collider_mesh.h"
 #include "command_line.h"
+#include "compare_settings.h"
 #include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
@@ -17,12 +18,20 @@
 #include "quantity_colors.h"
 #include "render/camera.h"
 #include "render/renderer.h"
+#include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "ui/control_panel.h"
 #include "vertex_drag.h"
 
 namespace wobble {
+
+// The energy plot's samples, one a step, over the last seconds of simulated time.
+struct EnergyHistory {
+  std::vector<double> time, kinetic, spring, gravity, total;  // s, J
+  void add(double time, const FrameEnergy& energy);
+  void clear();
+};
 
 // How the viewer starts: overrides of the scene's parameters, and what to show.
 struct ViewerSettings {
@@ -33,6 +42,8 @@ struct ViewerSettings {
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
   ColorQuantity color_by = ColorQuantity::material;
+  std::optional<CompareSettings> compare;  // open in the split view with this right side
+  bool plots = false;                      // open the convergence and energy plots
 };
 
 // The start-up settings a command line asks for.
@@ -80,6 +91,19 @@ class Viewer {
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
               float pixel_ratio);
 
+  // Keep the simulation recording its convergence whether or not the plot shows it (for
+  // --convergence-csv), through scene changes too.
+  void set_convergence_required(bool required);
+
+  // What ImGui draws besides the panel: the convergence and energy plots when open, the split
+  // view's corner labels. build_ui draws them too; headless images without the panel draw only
+  // these. Between ImGui's NewFrame and Render.
+  void draw_overlays(float ui_scale);
+  // Whether draw_overlays has anything to draw.
+  bool has_overlays() const { return twin_ || panel_.show_convergence || panel_.show_energy; }
+  // The split view's right side, or null when the view is not split.
+  const Simulation* right_side() const { return twin_.get(); }
+
   bool quit_requested() const { return quit_; }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
@@ -101,10 +125,26 @@ class Viewer {
   // viewer_environment.cpp: damping, friction, wind and colliders.
   void show_environment_in_panel();
   void apply_environment_settings();
+  // viewer_instruments.cpp: the convergence and energy plots.
+  void update_recording();
+  void record_instruments();
+  void clear_instruments();
+  void show_instruments(float ui_scale);
+  // viewer_compare.cpp: the split view.
+  void start_split(const CompareSettings& settings);
+  void stop_split();
+  void show_twin_in_panel();
+  CompareSettings twin_settings() const;
+  void apply_split_settings();
+  void sync_twin();
+  void advance_twin(double seconds);
+  void reset_twin();
   void place_ground();
   void update_collider_mesh();
   void update_vertex_arrays();
-  void update_quantity_colors();  // viewer_colors.cpp
+  // viewer_colors.cpp
+  void update_quantity_colors();
+  void add_quantity_colors(const QuantityColors& colors, MeshFrame& frame) const;
   int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
   Ray ray_at(const Eigen::Vector2f& cursor) const;
 
@@ -124,12 +164,23 @@ class Viewer {
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;
+  bool convergence_required_ = false;
+  ConvergenceTrace shown_trace_;  // what the convergence window shows
+  long shown_trace_step_ = 0;
+  EnergyHistory energy_history_;
+  // The split view's right side: its simulation, how much simulated time it is behind the
+  // left, why it stopped (empty while it runs), and its vertex arrays.
+  std::unique_ptr<Simulation> twin_;
+  double twin_behind_ = 0.0;
+  std::string twin_warning_;
+  std::vector<float> twin_positions_, twin_normals_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
   VertexDrag drag_;
   ColliderDrag collider_drag_;
-  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);
+  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);      // in the half under it when split
+  Eigen::Vector2f raw_cursor_ = Eigen::Vector2f(-1e9f, -1e9f);  // in the window
   Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
   bool cursor_over_ui_ = false;
   int hovered_pin_ = -1;
@@ -143,6 +194,7 @@ class Viewer {
   GroundGrid ground_;
   ColliderTriangles collider_mesh_;
   QuantityColors quantity_colors_;  // empty while coloured by material
+  QuantityColors twin_colors_;      // the split view's right side, in the same range
   // The wind's speed and heading as the panel last showed them, so that only a slider the user
   // moved changes the wind.
   float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;

@@ -1,4 +1,6 @@
 // The viewer's colouring by a quantity (spring strain, vertex speed) and its legend.
+#include <algorithm>
+
 #include "ui/color_legend.h"
 #include "viewer.h"
 
@@ -13,7 +15,29 @@ constexpr int legend_samples = 33;
 
 void Viewer::update_quantity_colors() {
   // Coloured by material, this only clears what was there: no per-frame work.
-  quantity_colors_.update(color_by(), *simulation_, /*with_springs=*/panel_.springs);
+  const bool springs = panel_.springs;
+  if (!twin_) {
+    quantity_colors_.update(color_by(), *simulation_, springs);
+    // A split view opened later starts its right side's range afresh.
+    if (twin_colors_.quantity() != ColorQuantity::material) twin_colors_ = QuantityColors();
+    return;
+  }
+  // Split, both sides share one range, so that a colour means the same on either.
+  quantity_colors_.measure(color_by(), *simulation_);
+  twin_colors_.measure(color_by(), *twin_);
+  const float range = std::max(quantity_colors_.measured_range(), twin_colors_.measured_range());
+  quantity_colors_.paint(*simulation_, range, springs);
+  twin_colors_.paint(*twin_, range, springs);
+}
+
+void Viewer::add_quantity_colors(const QuantityColors& colors, MeshFrame& frame) const {
+  // Colours from advance(), for this shape: a scene loaded since has none until its advance.
+  const std::vector<float>& vertex_colors = colors.vertex_colors();
+  const std::vector<float>& spring_colors = colors.spring_colors();
+  if (vertex_colors.size() == positions_.size()) frame.vertex_colors = vertex_colors.data();
+  if (!spring_colors.empty() && spring_colors.size() == 3 * springs_.size() / 2) {
+    frame.spring_colors = spring_colors.data();
+  }
 }
 
 void Viewer::build_legend(float ui_scale) {
@@ -40,7 +64,10 @@ void Viewer::build_legend(float ui_scale) {
     legend.high = two_significant_digits(range);
     legend.note = "range: 99th percentile, smoothed";
   }
-  draw_color_legend(legend, ui_scale);
+  LegendClearance clearance;
+  clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
+  clearance.side_labels = twin_ != nullptr;
+  draw_color_legend(legend, ui_scale, clearance);
 }
 
 }  // namespace wobble

@@ -25,10 +25,14 @@ Ray Viewer::ray_at(const Eigen::Vector2f& cursor) const {
 
 void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
                            bool ui_wants_keyboard, const Eigen::Vector2f& window_size) {
-  window_size_ = window_size;
+  // Split, each half is a view of its own under the same camera: a cursor in the right half
+  // picks and drags as at the same place in the left (pins and drags are shared).
+  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
   cursor_over_ui_ = ui_wants_mouse;
   for (const InputEvent& event : events) {
-    const Eigen::Vector2f at(static_cast<float>(event.x), static_cast<float>(event.y));
+    const Eigen::Vector2f raw(static_cast<float>(event.x), static_cast<float>(event.y));
+    Eigen::Vector2f at = raw;
+    if (twin_ && at.x() >= window_size_.x()) at.x() -= window_size_.x();
     switch (event.type) {
       case InputEvent::Type::key_press:
         if (!ui_wants_keyboard) apply(command_for_key(event.code));
@@ -76,7 +80,8 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         mode_ = Mode::idle;
         break;
       case InputEvent::Type::cursor_move: {
-        const Eigen::Vector2f delta = at - cursor_;
+        const Eigen::Vector2f delta = raw - raw_cursor_;
+        raw_cursor_ = raw;
         if (drag_.active()) drag_.move(*simulation_, ray_at(at));
         if (collider_drag_.active()) collider_drag_.move(*simulation_, ray_at(at));
         if (mode_ == Mode::orbit) orbit_camera(camera_, delta.x(), delta.y(), window_size_.y());
@@ -104,9 +109,22 @@ void Viewer::apply(ViewerCommand command) {
       if (drag_.active()) drag_.cancel();
       collider_drag_.cancel();  // reset puts the colliders back
       simulation_->reset();
+      reset_twin();
+      clear_instruments();
       drag_script_.restart();
       step_warning_.clear();
       break;
+    case ViewerCommand::toggle_split:
+      panel_.split = !panel_.split;
+      apply_split_settings();
+      break;
+    case ViewerCommand::toggle_plots: {
+      // Both plots together: a class wants the two side by side.
+      const bool show = !(panel_.show_convergence && panel_.show_energy);
+      panel_.show_convergence = panel_.show_energy = show;
+      update_recording();
+      break;
+    }
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;
       break;

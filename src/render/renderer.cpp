@@ -223,14 +223,18 @@ void Renderer::update(const MeshFrame& frame) {
 
 void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
                     const Eigen::Vector3f& eye, const ViewLayers& layers, int width, int height,
-                    float pixel_ratio) {
+                    float pixel_ratio, int x, int y) {
   const Resources& r = *resources_;
   const Eigen::Matrix4f view_projection = projection * view;
-  glViewport(0, 0, width, height);
+  glViewport(x, y, width, height);
   glDisable(GL_CULL_FACE);  // both sides of a cloth are visible
   glDisable(GL_BLEND);
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  // glClear ignores the viewport: the scissor keeps it to this one.
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, width, height);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
 
   glDisable(GL_DEPTH_TEST);
   r.background.use();

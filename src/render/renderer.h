@@ -88,11 +88,12 @@ class Renderer {
   void set_solids(const SolidMesh& solids);
   // Upload this frame's vertices (topology.vertex_count of each array).
   void update(const MeshFrame& frame);
-  // Clear and draw the scene in a viewport of width × height pixels. `pixel_ratio` scales point
-  // sizes on high-DPI framebuffers.
+  // Clear and draw the scene in a viewport of width × height pixels whose lower left corner is
+  // (x, y) (a split view draws twice, side by side; only the viewport is cleared). `pixel_ratio`
+  // scales point sizes on high-DPI framebuffers.
   void draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
             const Eigen::Vector3f& eye, const ViewLayers& layers, int width, int height,
-            float pixel_ratio = 1.0f);
+            float pixel_ratio = 1.0f, int x = 0, int y = 0);
 
  private:
   struct Resources;

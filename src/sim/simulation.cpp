@@ -241,6 +241,13 @@ StepStatus Simulation::step() {
   compute_y();
 
   start_iterate();
+  double instruments_ms = 0.0;
+  if (record_convergence_) {
+    trace_.energy.clear();
+    trace_.gradient_norm.clear();
+    trace_.chebyshev = params_.chebyshev;
+  }
+  double springs = 0.0;  // Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² at the iterate, from the local step
   if (params_.chebyshev) chebyshev_.start(next_);
   restart_iteration_ = 0;
   // Contact makes a step's problem change sharply from one iteration to the next; with ρ near 1
@@ -250,9 +257,15 @@ StepStatus Simulation::step() {
   double local_ms = 0.0, global_ms = 0.0;
   for (int iteration = 0; iteration < params_.iterations; ++iteration) {
     const auto local_start = Clock::now();
-    local_step_->apply(next_, k, y_, rhs_);
+    local_step_->apply(next_, k, y_, rhs_, record_convergence_ ? &springs : nullptr);
+    local_ms += milliseconds_since(local_start);
+    if (record_convergence_) {
+      const auto record_start = Clock::now();
+      // The first iterate is a prediction; an accelerated one is not the solve's output.
+      record_iterate(springs, iteration > 0 && !params_.chebyshev);
+      instruments_ms += milliseconds_since(record_start);
+    }
     const auto global_start = Clock::now();
-    local_ms += std::chrono::duration<double, std::milli>(global_start - local_start).count();
 
     // With acceleration every iteration but the last is accelerated; the last, plain, removes
     // what the acceleration leaves of the fast components (see chebyshev.h).
@@ -264,6 +277,13 @@ StepStatus Simulation::step() {
     }
     global_ms += milliseconds_since(global_start);
     if (observer_) observer_(iteration, next_);
+  }
+  if (record_convergence_) {
+    // The last iterate, which no local step has seen yet.
+    const auto record_start = Clock::now();
+    local_step_->apply(next_, k, y_, rhs_, &springs);
+    record_iterate(springs, /*plain_solve=*/true);  // the last iteration is never accelerated
+    instruments_ms += milliseconds_since(record_start);
   }
 
   const auto contact_start = Clock::now();
@@ -282,6 +302,7 @@ StepStatus Simulation::step() {
   timing_.global_ms = global_ms;
   timing_.forces_ms = forces_ms;
   timing_.contact_ms = contact_ms;
+  timing_.instruments_ms = instruments_ms;
   timing_.total_ms = milliseconds_since(step_start);
   return last_status_;
 }
@@ -380,26 +401,40 @@ void Simulation::set_iteration_observer(std::function<void(int, const Eigen::Mat
   observer_ = std::move(observer);
 }
 
-double Simulation::step_energy(const Eigen::MatrixXd& p) const {
-  const Eigen::MatrixXi& E = network_.E;
-  double springs = 0.0;
-  for (Eigen::Index e = 0; e < E.rows(); ++e) {
-    const double stretch = (p.row(E(e, 0)) - p.row(E(e, 1))).norm() - r_(e);
-    springs += stretch * stretch;
+StepObjectiveTerms Simulation::objective_terms() const {
+  return StepObjectiveTerms{network_.E, r_,       network_.m, params_.k,  params_.dt, params_.damping,
+                            current_,   previous_, fext_,     pinned_,   targets_,   pin_weight};
+}
+
+double Simulation::step_energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient) const {
+  return step_objective(objective_terms(), p, gradient);
+}
+
+void Simulation::set_convergence_recording(bool on) {
+  record_convergence_ = on;
+  if (!on) return;
+  // Sized once, so that recording allocates nothing per iteration.
+  trace_.energy.reserve(max_iterations + 1);
+  trace_.gradient_norm.reserve(max_iterations + 1);
+  gradient_.resize(network_.V.rows(), 3);
+  previous_rhs_.resize(network_.V.rows(), 3);
+}
+
+void Simulation::record_iterate(double springs, bool plain_solve) {
+  // rhs_ holds k Aᵀd(p) + y for the iterate p = next_, so the objective's gradient is Q p − rhs:
+  // k AᵀA p − k Aᵀd(p) is the springs' part, the rest the inertia, f_ext and the pins. When p
+  // came straight out of a double-precision solve of Q p = previous_rhs_, Q p is that right-hand
+  // side to rounding, and the product is not needed (it would cost as much as a local step).
+  if (plain_solve && !solver_.solves_in_single_precision()) {
+    gradient_ = previous_rhs_ - rhs_;
+  } else {
+    gradient_.noalias() = Q_ * next_;
+    gradient_ -= rhs_;
   }
-  // (1 + cΔt)/(2Δt²)‖p − p̂‖²_M with p̂ = ((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/(1 + cΔt): the damped inertia
-  // term, equal to the one Q and y encode up to a constant.
-  const double cdt = params_.damping * params_.dt;
-  const Eigen::MatrixXd acceleration = p - ((2.0 + cdt) * current_ - previous_) / (1.0 + cdt);
-  const double inertia = (1.0 + cdt) *
-                         (network_.m.array() * acceleration.rowwise().squaredNorm().array()).sum() /
-                         (2.0 * params_.dt * params_.dt);
-  double pins = 0.0;
-  for (std::size_t i = 0; i < pinned_.size(); ++i) {
-    if (pinned_[i]) pins += (p.row(i) - targets_.row(i)).squaredNorm();
-  }
-  return 0.5 * params_.k * springs + inertia - (p.array() * fext_.array()).sum() +
-         0.5 * pin_weight * pins;
+  previous_rhs_ = rhs_;
+  trace_.gradient_norm.push_back(gradient_.norm());
+  trace_.energy.push_back(step_objective_vertex_terms(objective_terms(), next_) +
+                          0.5 * params_.k * springs);
 }
 
 Eigen::MatrixXd Simulation::velocities() const {

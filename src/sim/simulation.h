@@ -10,6 +10,8 @@
 
 #include "sim/contact/collider_contact.h"
 #include "sim/forces/wind.h"
+#include "sim/instruments/convergence_trace.h"
+#include "sim/instruments/step_objective.h"
 #include "sim/solver/chebyshev.h"
 #include "sim/solver/cholesky_solver.h"
 #include "sim/solver/local_step.h"
@@ -67,6 +69,7 @@ struct StepTiming {
   double global_ms = 0.0;
   double forces_ms = 0.0;   // wind
   double contact_ms = 0.0;  // collider projection and friction
+  double instruments_ms = 0.0;  // the convergence trace, while it is recorded
   double total_ms = 0.0;
 };
 
@@ -182,8 +185,16 @@ class Simulation {
   // Called after every global solve of every step with the iteration number (0-based) and the
   // current iterate p (#V by 3). Meant for teaching and tests: it slows stepping down.
   void set_iteration_observer(std::function<void(int, const Eigen::MatrixXd&)> observer);
-  // The energy that the step now about to be taken minimizes, evaluated at p (#V by 3), in J.
-  double step_energy(const Eigen::MatrixXd& p) const;
+  // The energy that the step now about to be taken minimizes, evaluated at p (#V by 3), in J
+  // (see step_objective.h); `gradient`, if given, receives its gradient (#V by 3, N).
+  double step_energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient = nullptr) const;
+  // While on, every step records its objective and gradient norm at each iterate in
+  // last_convergence(): one extra pass over the springs per iteration (the cost shows in
+  // last_step_timing().instruments_ms). Off by default; off costs nothing.
+  void set_convergence_recording(bool on);
+  bool records_convergence() const { return record_convergence_; }
+  // The trace of the last step taken while recording (empty before one).
+  const ConvergenceTrace& last_convergence() const { return trace_; }
 
   const SpringNetwork& rest() const { return network_; }
   const Eigen::VectorXd& rest_lengths() const { return r_; }
@@ -195,6 +206,8 @@ class Simulation {
   Eigen::MatrixXd velocities() const;
   // #V by 3 external forces f_ext (N).
   const Eigen::MatrixXd& external_forces() const { return fext_; }
+  // #V by 3 gravity's share of f_ext (N).
+  const Eigen::MatrixXd& gravity_forces() const { return gravity_fext_; }
   long steps_taken() const { return steps_taken_; }
 
   const StepTiming& last_step_timing() const { return timing_; }
@@ -225,6 +238,11 @@ class Simulation {
   void start_iterate();
   void compute_y();
   StepStatus check_step() const;
+  StepObjectiveTerms objective_terms() const;
+  // Appends the objective and gradient norm at next_ to trace_, given rhs_ = k Aᵀd(next_) + y
+  // and springs = Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² at next_. `plain_solve`: next_ is the solution of
+  // Q p = previous_rhs_.
+  void record_iterate(double springs, bool plain_solve);
 
   SpringNetwork network_;
   SimulationParams params_;
@@ -256,6 +274,9 @@ class Simulation {
   std::unique_ptr<LocalStep> local_step_;
 
   std::function<void(int, const Eigen::MatrixXd&)> observer_;
+  bool record_convergence_ = false;
+  ConvergenceTrace trace_;
+  Eigen::MatrixXd gradient_, previous_rhs_;  // #V by 3, while recording
   StepTiming timing_;
   double precompute_ms_ = 0.0;
   int symbolic_analyses_ = 0;

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "instrument_windows.h"
+
 namespace wobble {
 
 namespace {
@@ -15,13 +17,17 @@ ImU32 packed(const std::vector<float>& colors, std::size_t sample) {
 
 }  // namespace
 
-void draw_color_legend(const ColorLegend& legend, float ui_scale) {
+void draw_color_legend(const ColorLegend& legend, float ui_scale,
+                       const LegendClearance& clearance) {
   const std::size_t samples = legend.colors.size() / 3;
   if (samples < 2) return;
-  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float margin = 10.0f * ui_scale;
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - margin, io.DisplaySize.y - margin),
-                          ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+  float right = display.x - margin, bottom = display.y - margin;
+  if (clearance.instrument_column) right -= instrument_column_width(display.x, ui_scale) + margin;
+  // The labels are two lines, and a third for the right side's warning (side_labels.cpp).
+  if (clearance.side_labels) bottom -= 3.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * margin;
+  ImGui::SetNextWindowPos(ImVec2(right, bottom), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
   ImGui::SetNextWindowBgAlpha(0.75f);
   // Not a control: it never takes the mouse from the 3-D view or the keyboard focus.
   ImGui::Begin("Colour legend", nullptr,

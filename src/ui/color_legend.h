@@ -18,10 +18,17 @@ struct ColorLegend {
   std::vector<float> colors;      // n by 3 linear RGB samples of the map, left to right, n ≥ 2
 };
 
-// Draws the legend in a small undecorated window at the bottom right of the display, clear of the
-// panel at the top left. Call between ImGui::NewFrame and ImGui::Render. `ui_scale` is the
-// high-DPI factor.
-void draw_color_legend(const ColorLegend& legend, float ui_scale);
+// What else is on screen that the legend keeps clear of.
+struct LegendClearance {
+  bool instrument_column = false;  // the plot windows at the right (instrument_windows.h)
+  bool side_labels = false;        // the split view's labels along the bottom (side_labels.h)
+};
+
+// Draws the legend in a small undecorated window at the bottom right of the view: of the display,
+// or left of the plot windows' column, and above the split view's labels; the panel is at the top
+// left. Call between ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
+void draw_color_legend(const ColorLegend& legend, float ui_scale,
+                       const LegendClearance& clearance = LegendClearance());
 
 }  // namespace wobble
 

@@ -118,6 +118,24 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   const char* const color_names[] = {"material", "strain", "speed"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
 
+  section("instruments");
+  ImGui::Checkbox("convergence", &settings.show_convergence);
+  ImGui::SameLine();
+  ImGui::Checkbox("energy", &settings.show_energy);
+
+  section("compare");
+  ImGui::Checkbox("split view: right side", &settings.split);
+  if (settings.split) {
+    ImGui::SliderFloat("k right", &settings.right_k, PanelSettings::min_k, PanelSettings::max_k,
+                       "%.1f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt,
+                       "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderInt("iterations right", &settings.right_iterations,
+                     PanelSettings::min_iterations, PanelSettings::max_iterations, "%d",
+                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+  }
+
   section("stats");
   if (stats.show_timings) {
     stat_row("fps", "%.1f", stats.fps);
@@ -126,6 +144,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     stat_row("  local", "%.2f ms", stats.local_ms);
     stat_row("  global", "%.2f ms", stats.global_ms);
     if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
+    if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
     if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
   } else {
     ImGui::TextDisabled("timings hidden (headless)");

@@ -25,6 +25,13 @@ struct PanelSettings {
   int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
   int scene = 0;     // index into the scene names
   bool show_help = false;
+  bool show_convergence = false;  // the last step's convergence plot
+  bool show_energy = false;       // the energy-over-time plot
+  // The split view and its right side's own settings.
+  bool split = false;
+  float right_k = 400.0f, right_dt = 1.0f / 60.0f;
+  int right_iterations = 5;
+  bool right_chebyshev = false;
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
@@ -44,6 +51,7 @@ struct PanelStats {
   // Over about the last second: simulated seconds per wall-clock second (< 1: slow motion), and
   // steps per wall-clock second.
   float real_time_factor = 0.0f, steps_per_second = 0.0f;
+  float instruments_ms = 0.0f;  // recording the convergence plot's numbers
   int vertices = 0, springs = 0, pins = 0;
   long steps = 0;
   double simulated_seconds = 0.0;

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <vector>
 
 #include "sim/simulation.h"
@@ -177,6 +179,29 @@ TEST(QuantityColors, ColoursAStretchedSpringRedAndACompressedOneBlue) {
   colors.update(ColorQuantity::material, simulation);
   EXPECT_TRUE(colors.vertex_colors().empty());
   EXPECT_TRUE(colors.spring_colors().empty());
+}
+
+TEST(QuantityColors, TwoShapesPaintedInOneRangeShowTheSameStrainInTheSameColour) {
+  // Left +10%/−10%, right +20%/−20%: painted in the larger range, the left's stretched spring
+  // is half-way up the map rather than at its end.
+  wobble::Simulation left = chain(), right = chain();
+  Eigen::MatrixXd p = left.positions();
+  p(1, 0) = 1.1;
+  left.set_state(p, p);
+  p(1, 0) = 1.2;
+  right.set_state(p, p);
+  wobble::QuantityColors left_colors, right_colors;
+  left_colors.measure(ColorQuantity::strain, left);
+  right_colors.measure(ColorQuantity::strain, right);
+  EXPECT_NEAR(left_colors.measured_range(), 0.1f, 1e-5f);
+  const float range = std::max(left_colors.measured_range(), right_colors.measured_range());
+  left_colors.paint(left, range, true);
+  right_colors.paint(right, range, true);
+  EXPECT_EQ(left_colors.range(), range);
+  const Eigen::Map<const Eigen::Vector3f> left_stretched(left_colors.spring_colors().data());
+  const Eigen::Map<const Eigen::Vector3f> right_stretched(right_colors.spring_colors().data());
+  EXPECT_TRUE(left_stretched.isApprox(wobble::diverging_color(0.5f), 1e-4f));
+  EXPECT_TRUE(right_stretched.isApprox(wobble::diverging_color(1.0f), 1e-4f));
 }
 
 TEST(QuantityColors, ColoursSpeedFromDarkAtRestToBrightAtTheRange) {

@@ -332,3 +332,131 @@ TEST(Viewer, StartsColouredAsAskedAndColoursAPausedShape) {
 }
 
 }  // namespace
+
+// The split view (issue 15): two sides from the same state, each with its own settings.
+namespace {
+
+std::unique_ptr<wobble::Viewer> split_viewer(const std::string& compare) {
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings(compare);
+  auto viewer = std::make_unique<wobble::Viewer>(wobble::make_builtin_scene("cloth"), settings,
+                                                 wobble::builtin_scene_names());
+  viewer->render(1280, 720, window, 1.0f);
+  return viewer;
+}
+
+double largest_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return (a - b).cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+
+TEST(SplitView, SameSettingsOnBothSidesStepAlikeToTheBit) {
+  const auto owner = split_viewer("iterations=50");
+  wobble::Viewer& viewer = *owner;
+  ASSERT_NE(viewer.right_side(), nullptr);
+  for (int frame = 0; frame < 20; ++frame)
+    viewer.advance();
+  EXPECT_EQ(viewer.right_side()->steps_taken(), 20);
+  EXPECT_EQ(largest_difference(viewer.simulation().positions(), viewer.right_side()->positions()),
+            0.0);
+}
+
+TEST(SplitView, FewerIterationsOnTheRightFallDifferently) {
+  const auto owner = split_viewer("iterations=5");
+  wobble::Viewer& viewer = *owner;
+  EXPECT_EQ(viewer.simulation().params().iterations, 50);
+  EXPECT_EQ(viewer.right_side()->params().iterations, 5);
+  for (int frame = 0; frame < 30; ++frame)
+    viewer.advance();
+  EXPECT_GT(largest_difference(viewer.simulation().positions(), viewer.right_side()->positions()),
+            0.05);
+}
+
+TEST(SplitView, HalfTheTimeStepStepsTwiceAFrameAndKeepsTheSameClock) {
+  const wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  char half_dt[32];
+  std::snprintf(half_dt, sizeof(half_dt), "dt=%.17g", scene.params.dt / 2);
+  const auto owner = split_viewer(half_dt);
+  wobble::Viewer& viewer = *owner;
+  for (int frame = 0; frame < 12; ++frame)
+    viewer.advance();
+  EXPECT_EQ(viewer.right_side()->steps_taken(), 24);
+  EXPECT_NEAR(viewer.right_side()->time(), viewer.simulation().time(), 1e-12);
+}
+
+TEST(SplitView, ADragActsOnBothSides) {
+  const auto owner = split_viewer("iterations=5");
+  wobble::Viewer& viewer = *owner;
+  const std::vector<int> pins = viewer.simulation().pinned_vertices();
+  ASSERT_FALSE(pins.empty());
+  const int pin = pins.front();
+  // Where the pin is drawn in the right half: the same place as in the left, half a window on.
+  const Eigen::Vector2f half(640.0f, 720.0f);
+  const Eigen::Matrix4f view_projection =
+      wobble::projection_matrix(viewer.camera(), half.x() / half.y()) *
+      wobble::view_matrix(viewer.camera());
+  const Eigen::Vector3f p = viewer.simulation().positions().row(pin).cast<float>();
+  const Eigen::Vector2f at =
+      wobble::project_to_window(view_projection, p, half)->head<2>() + Eigen::Vector2f(640, 0);
+  const auto send = [&](InputEvent::Type type, const Eigen::Vector2f& where) {
+    InputEvent event;
+    event.type = type;
+    event.code = GLFW_MOUSE_BUTTON_LEFT;
+    event.x = where.x();
+    event.y = where.y();
+    viewer.handle_events({event}, false, false, window);
+  };
+  const Eigen::Vector3d before = viewer.simulation().pin_target(pin);
+  send(InputEvent::Type::cursor_move, at);
+  send(InputEvent::Type::button_press, at);
+  for (int step = 1; step <= 10; ++step) {
+    send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(0.0f, 10.0f * step));
+    viewer.advance();
+    viewer.render(1280, 720, window, 1.0f);
+  }
+  send(InputEvent::Type::button_release, at + Eigen::Vector2f(0.0f, 100.0f));
+  const Eigen::Vector3d after = viewer.simulation().pin_target(pin);
+  EXPECT_LT(after.y(), before.y() - 0.05) << "dragged down in the right half";
+  EXPECT_EQ((viewer.right_side()->pin_target(pin) - after).norm(), 0.0);
+  // The right side's pinned corner is where the left side's is: both were pulled.
+  EXPECT_LT((viewer.right_side()->positions().row(pin).transpose() - after).norm(), 1e-6);
+}
+
+TEST(SplitView, KeyTwoTogglesItAndResetStartsBothSidesAgain) {
+  ViewerFixture fixture;
+  EXPECT_EQ(fixture.viewer.right_side(), nullptr);
+  fixture.press_key(GLFW_KEY_2);
+  ASSERT_NE(fixture.viewer.right_side(), nullptr);
+  EXPECT_EQ(fixture.viewer.right_side()->params().iterations, 5);  // a tenth of 50
+  for (int frame = 0; frame < 5; ++frame)
+    fixture.frame();
+  fixture.press_key(GLFW_KEY_R);
+  EXPECT_EQ(fixture.viewer.right_side()->steps_taken(), 0);
+  EXPECT_EQ(largest_difference(fixture.viewer.right_side()->positions(),
+                               fixture.viewer.simulation().positions()),
+            0.0);
+  fixture.press_key(GLFW_KEY_2);
+  EXPECT_EQ(fixture.viewer.right_side(), nullptr);
+}
+
+TEST(SplitView, EachSideIsColouredByItsOwnShapeInOneRange) {
+  const auto owner = split_viewer("iterations=5");
+  wobble::Viewer& viewer = *owner;
+  InputEvent v;
+  v.type = InputEvent::Type::key_press;
+  v.code = GLFW_KEY_V;
+  viewer.handle_events({v}, false, false, window);
+  for (int frame = 0; frame < 20; ++frame)
+    viewer.advance();
+  // The left side's colours are its own: they differ from what the right side's shape gives.
+  const wobble::QuantityColors& left = viewer.quantity_colors();
+  wobble::QuantityColors right;
+  right.measure(wobble::ColorQuantity::strain, *viewer.right_side());
+  right.paint(*viewer.right_side(), left.range(), false);
+  EXPECT_EQ(left.vertex_colors().size(), right.vertex_colors().size());
+  EXPECT_NE(left.vertex_colors(), right.vertex_colors());
+  // One range for both: five iterations leave the right side stretchier, so the left side is
+  // painted in the right side's range, wider than its own.
+  EXPECT_GT(left.range(), 1.5f * left.measured_range());
+}

@@ -56,6 +56,10 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"tablecloth", "@ASSETS@/tablecloth.json --frames 120 --width 320 --height 240"},
       {"flag", "@ASSETS@/flag.json --frames 60 --width 320 --height 240"},
       {"jelly_drop", "@ASSETS@/jelly_drop.json --frames 150 --width 320 --height 240"},
+      // Classroom instruments (issue 15): a stiff cloth far from converged at 50 iterations, with
+      // its convergence and energy plots; 5 against 50 iterations side by side.
+      {"cloth_plots", "cloth --frames 40 --k 100000 --plots --width 800 --height 500"},
+      {"compare_iterations", "cloth --frames 45 --compare iterations=5 --width 640 --height 300"},
       // Colour by strain (issue: classroom instruments): the drape stretched red over the ball's
       // top, its folds compressed blue, and the legend, which needs 480 × 320 to leave room.
       {"drape_strain",

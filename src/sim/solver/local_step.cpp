@@ -11,7 +11,12 @@ namespace wobble {
 
 LocalStep::LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const Eigen::MatrixXd& V,
                      WorkerPool& pool)
-    : E_(E), r_(r), rest_direction_(E.rows(), 3), d_(E.rows(), 3), pool_(&pool) {
+    : E_(E),
+      r_(r),
+      rest_direction_(E.rows(), 3),
+      d_(E.rows(), 3),
+      lengths_(E.rows()),
+      pool_(&pool) {
   const Eigen::Index n = V.rows();
   for (Eigen::Index e = 0; e < E.rows(); ++e) {
     rest_direction_.row(e) = V.row(E(e, 0)) - V.row(E(e, 1));
@@ -32,14 +37,16 @@ LocalStep::LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const E
 }
 
 void LocalStep::apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y,
-                      Eigen::MatrixXd& rhs) {
+                      Eigen::MatrixXd& rhs, double* spring_energy) {
   const Eigen::Index springs = E_.rows();
+  const bool keep_lengths = spring_energy != nullptr;
   const Eigen::Index n = p.rows();
   const auto directions = [&](Eigen::Index begin, Eigen::Index end) {
     // Coincident ends have no direction: fall back on the rest direction, which pushes them
     // apart along the line they started on.
     const auto store = [&](Eigen::Index e, double length, double x, double y, double z) {
       double* d = d_.data() + 3 * e;
+      if (keep_lengths) lengths_(e) = length;
       if (length > 0.0) {
         d[0] = x;
         d[1] = y;
@@ -96,10 +103,15 @@ void LocalStep::apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd&
       rhs(i, 2) = z;
     }
   };
+  // Summed here, in one fixed order, so that the energy does not depend on the threads.
+  const auto sum_energy = [&] {
+    if (keep_lengths) *spring_energy = (lengths_ - r_).squaredNorm();
+  };
   // A small network is done before a helper could wake up to help.
   if (springs < min_springs_for_threads || pool_->threads() == 1) {
     directions(0, springs);
     gather(0, n);
+    sum_energy();
     return;
   }
   // Several pieces a thread, so that the caller takes over the pieces of a helper that has no
@@ -111,6 +123,7 @@ void LocalStep::apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd&
   pool_->run(pieces, spring_piece, &spring_payoff_);
   auto vertex_piece = [&](int piece) { gather(n * piece / pieces, n * (piece + 1) / pieces); };
   pool_->run(pieces, vertex_piece, &vertex_payoff_);
+  sum_energy();
 }
 
 }  // namespace wobble

@@ -20,8 +20,10 @@ class LocalStep {
   LocalStep(const Eigen::MatrixXi& E, const Eigen::VectorXd& r, const Eigen::MatrixXd& V,
             WorkerPool& pool = WorkerPool::shared());
 
-  // rhs = y + k Aᵀd(p); p, y and rhs #V by 3, rhs already of that shape.
-  void apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y, Eigen::MatrixXd& rhs);
+  // rhs = y + k Aᵀd(p); p, y and rhs #V by 3, rhs already of that shape. If `spring_energy` is
+  // given it receives Σ(‖pᵢ − pⱼ‖ − r_e)² (m²) from the same lengths, for the convergence trace.
+  void apply(const Eigen::MatrixXd& p, double k, const Eigen::MatrixXd& y, Eigen::MatrixXd& rhs,
+             double* spring_energy = nullptr);
 
   // Below this many springs apply() runs on the calling thread alone: waking a helper costs
   // more than it saves (measured: see the README's Performance section).
@@ -36,6 +38,7 @@ class LocalStep {
   Eigen::VectorXd r_;
   Eigen::MatrixXd rest_direction_;  // #E by 3: r_e times the unit rest vector
   Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> d_;  // #E by 3: this iteration's k d
+  Eigen::VectorXd lengths_;  // #E: ‖pᵢ − pⱼ‖, kept only when the spring energy is asked for
   // Vertex i's springs are incident_[s] for s in [incident_start_[i], incident_start_[i+1]);
   // a non-negative entry e means i is the spring's first end (+d_e), ~e its second (−d_e).
   std::vector<int> incident_start_, incident_;

@@ -1,0 +1,33 @@
+#ifndef WOBBLE_SIM_INSTRUMENTS_CONVERGENCE_TRACE_H
+#define WOBBLE_SIM_INSTRUMENTS_CONVERGENCE_TRACE_H
+
+#include <vector>
+
+namespace wobble {
+
+// How one step's local-global iterations converged: the step objective (step_objective.h) and
+// the norm of its gradient at each iterate. Entry 0 is the first iterate, before any iteration;
+// entry i is the iterate after i iterations (with Chebyshev on, the accelerated iterate).
+struct ConvergenceTrace {
+  std::vector<double> energy;         // J
+  std::vector<double> gradient_norm;  // N, ‖∇‖ over all 3#V components
+  bool chebyshev = false;             // the iterations were accelerated
+
+  int iterations() const { return energy.empty() ? 0 : static_cast<int>(energy.size()) - 1; }
+  // ‖∇‖ after the last iteration over ‖∇‖ at the start of the step (the larger of the first
+  // iterate's and the first iteration's): how far the step got towards its minimum (1: nowhere).
+  // 0 for an empty trace or a step that started at its minimum.
+  double gradient_reduction() const;
+};
+
+// How converged a step looks to a class: the gradient's reduction over the step.
+enum class Convergence {
+  converged,  // reduced at least a thousandfold (or the step started at its minimum)
+  partial,    // reduced between tenfold and a thousandfold
+  far,        // reduced less than tenfold: the positions are far from the step's minimum
+};
+Convergence classify(const ConvergenceTrace& trace);
+
+}  // namespace wobble
+
+#endif

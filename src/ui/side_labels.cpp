@@ -1,0 +1,34 @@
+#include "side_labels.h"
+
+#include <imgui.h>
+
+namespace wobble {
+
+namespace {
+
+void corner_text(ImDrawList* draw, ImVec2 at, const std::string& text, ImU32 color, float pad) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  draw->AddRectFilled(ImVec2(at.x - pad, at.y - size.y - 2.0f * pad),
+                      ImVec2(at.x + size.x + pad, at.y), IM_COL32(15, 16, 20, 200), 3.0f);
+  draw->AddText(ImVec2(at.x, at.y - size.y - pad), color, text.c_str());
+}
+
+}  // namespace
+
+void draw_side_labels(const SideLabels& labels, float ui_scale) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float half = 0.5f * display.x;
+  draw->AddLine(ImVec2(half, 0.0f), ImVec2(half, display.y), IM_COL32(230, 230, 235, 255),
+                2.0f * ui_scale);
+  const float margin = 12.0f * ui_scale, pad = 5.0f * ui_scale;
+  const ImU32 white = IM_COL32(240, 240, 240, 255);
+  corner_text(draw, ImVec2(margin, display.y - margin), labels.left, white, pad);
+  corner_text(draw, ImVec2(half + margin, display.y - margin), labels.right, white, pad);
+  if (!labels.right_warning.empty()) {
+    corner_text(draw, ImVec2(half + margin, display.y - margin - 3.0f * ImGui::GetTextLineHeight()),
+                labels.right_warning, IM_COL32(255, 190, 60, 255), pad);
+  }
+}
+
+}  // namespace wobble

@@ -1,0 +1,20 @@
+#ifndef WOBBLE_UI_SIDE_LABELS_H
+#define WOBBLE_UI_SIDE_LABELS_H
+
+#include <string>
+
+namespace wobble {
+
+// What the split view's corners say.
+struct SideLabels {
+  std::string left, right;    // each side's settings
+  std::string right_warning;  // why the right side stopped, or empty
+};
+
+// Writes each half's settings in its bottom-left corner and draws the line between the halves,
+// over everything else (ImGui's foreground list; between NewFrame and Render).
+void draw_side_labels(const SideLabels& labels, float ui_scale);
+
+}  // namespace wobble
+
+#endif
