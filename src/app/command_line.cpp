@@ -204,9 +204,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (energy_csv) command.energy_csv = path_value("--energy-csv", *energy_csv, "file path");
   if (!command.headless && !command.frames &&
       (!command.convergence_csv.empty() || !command.energy_csv.empty())) {
-    throw InputError(std::string(command.convergence_csv.empty() ? "--energy-csv"
-                                                                 : "--convergence-csv") +
-                     ": in a window, needs --frames (how long to record)");
+    throw InputError(
+        std::string(command.convergence_csv.empty() ? "--energy-csv" : "--convergence-csv") +
+        ": in a window, needs --frames (how long to record)");
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");

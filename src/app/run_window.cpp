@@ -49,8 +49,8 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
   const ObjSequence obj_sequence(command.export_obj_sequence);
   Viewer viewer = open_viewer(command);
-  InstrumentCsv instruments(command.convergence_csv, command.energy_csv,
-                            command.frames.value_or(0), viewer.simulation().params().iterations);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, command.frames.value_or(0),
+                            viewer.simulation().params().iterations);
   viewer.set_convergence_required(instruments.wants_convergence());
   instruments.start(viewer.simulation());
 

@@ -425,14 +425,23 @@ void Simulation::record_iterate(double springs, bool plain_solve) {
   // k AᵀA p − k Aᵀd(p) is the springs' part, the rest the inertia, f_ext and the pins. When p
   // came straight out of a double-precision solve of Q p = previous_rhs_, Q p is that right-hand
   // side to rounding, and the product is not needed (it would cost as much as a local step).
+  double squared = 0.0;
   if (plain_solve && !solver_.solves_in_single_precision()) {
-    gradient_ = previous_rhs_ - rhs_;
+    // One pass: the difference, its norm, and the right-hand side kept for the next iterate.
+    double* previous = previous_rhs_.data();
+    const double* rhs = rhs_.data();
+    for (Eigen::Index s = 0; s < rhs_.size(); ++s) {
+      const double difference = previous[s] - rhs[s];
+      squared += difference * difference;
+      previous[s] = rhs[s];
+    }
   } else {
     gradient_.noalias() = Q_ * next_;
     gradient_ -= rhs_;
+    squared = gradient_.squaredNorm();
+    previous_rhs_ = rhs_;
   }
-  previous_rhs_ = rhs_;
-  trace_.gradient_norm.push_back(gradient_.norm());
+  trace_.gradient_norm.push_back(std::sqrt(squared));
   trace_.energy.push_back(step_objective_vertex_terms(objective_terms(), next_) +
                           0.5 * params_.k * springs);
 }

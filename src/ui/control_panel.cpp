@@ -130,9 +130,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                        "%.1f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     ImGui::SliderFloat("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt,
                        "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderInt("iterations right", &settings.right_iterations,
-                     PanelSettings::min_iterations, PanelSettings::max_iterations, "%d",
-                     ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderInt("iterations right", &settings.right_iterations, PanelSettings::min_iterations,
+                     PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
     ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
   }
 

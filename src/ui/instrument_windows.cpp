@@ -107,16 +107,10 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
   axes.x_label = "iteration";
   axes.y_label = "|grad E| (N)";
   axes.x_format = "%.0f";
-  std::vector<PlotSeries> gradient_series = {{data.chebyshev ? "Chebyshev" : "plain", x.data(),
-                                              gradient.data(), static_cast<int>(gradient.size()),
-                                              IM_COL32(110, 190, 255, 255)}};
-  std::vector<double> plain_x;
-  if (data.plain_gradient_norm != nullptr && !data.plain_gradient_norm->empty()) {
-    plain_x = iteration_numbers(data.plain_gradient_norm->size());
-    gradient_series.push_back({"plain, same step", plain_x.data(), data.plain_gradient_norm->data(),
-                               static_cast<int>(plain_x.size()), IM_COL32(170, 170, 170, 255)});
-  }
-  line_plot("gradient", gradient_series, axes, ImVec2(0.0f, plot_height));
+  line_plot("gradient",
+            {{data.chebyshev ? "Chebyshev" : "plain", x.data(), gradient.data(),
+              static_cast<int>(gradient.size()), IM_COL32(110, 190, 255, 255)}},
+            axes, ImVec2(0.0f, plot_height));
   axes.y_label = "E - lowest E (J)";
   char name[64];
   std::snprintf(name, sizeof(name), "E0 = %.6g J", energy.front());

@@ -16,10 +16,7 @@ struct ConvergencePlotData {
   bool chebyshev = false;
   ConvergenceLight light = ConvergenceLight::green;
   double reduction = 0.0;  // last gradient norm over the first
-  // The same step from the same state with plain iterations, when Chebyshev is on and the
-  // comparison was computed; else null.
-  const std::vector<double>* plain_gradient_norm = nullptr;
-  long step = 0;  // which step these are from
+  long step = 0;           // which step these are from
 };
 
 // The energy over the last seconds: one entry a step.
