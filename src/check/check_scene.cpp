@@ -22,7 +22,10 @@ CheckScene make_scene(std::string description, Eigen::MatrixXd V, Eigen::MatrixX
                       int steps) {
   CheckScene scene;
   scene.description = std::move(description);
+  // Away from the origin: a pinned vertex at (0, 0, 0) would make the pin term w CᵀC V zero,
+  // and a function that leaves it out would pass.
   scene.V = std::move(V);
+  scene.V.rowwise() += Eigen::RowVector3d(0.25, 1.5, -0.5);
   scene.E = std::move(E);
   scene.k = k;
   scene.m = std::move(m);
@@ -140,8 +143,10 @@ std::vector<CheckScene> generated_scenes() {
   CheckScene stiff =
       make_scene("a stiff 10-vertex chain (k = 1e6 N/m, 1 kg each, dt = 0.01 s), vertex 0 pinned",
                  V, E, 1e6, Eigen::VectorXd::Ones(10), Eigen::VectorXi::Zero(1), 0.01, 0.0, 4);
-  stiff.Ucur.col(0) *= 1.3;  // stretched by 30%: the springs snap back over the steps
-  stiff.Ucur.col(1) = 0.05 * stiff.Ucur.col(0).array().square();
+  // Stretched by 30% and bent: the springs snap back over the steps.
+  const Eigen::ArrayXd along = 1.3 * (stiff.V.col(0).array() - stiff.V(0, 0));
+  stiff.Ucur.col(0) = stiff.V(0, 0) + along;
+  stiff.Ucur.col(1) = stiff.V.col(1).array() + 0.05 * along.square();
   stiff.Uprev = stiff.Ucur;
   scenes.push_back(stiff);
 

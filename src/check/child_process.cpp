@@ -83,6 +83,10 @@ std::string last_line(std::FILE* output) {
     all.pop_back();
   const size_t start = all.find_last_of('\n');
   std::string line = start == std::string::npos ? all : all.substr(start + 1);
+  // An assertion's line starts with the program, file and function, which say nothing to a
+  // student; the condition that failed does.
+  const size_t assertion = line.find("Assertion `");
+  if (assertion != std::string::npos) line = line.substr(assertion);
   if (line.size() > 200) line = line.substr(0, 200) + "...";
   return line;
 }
