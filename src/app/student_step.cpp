@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/step_messages.h"
 #include "check/step_protocol.h"
 
 extern char** environ;
@@ -22,7 +23,6 @@ namespace wobble {
 namespace {
 
 using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-using RowIndices = Eigen::Matrix<std::int32_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 double now_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -36,44 +36,11 @@ std::string signal_words(int signal_number) {
   return "signal " + std::to_string(signal_number);
 }
 
-void append(std::vector<char>& message, const void* data, size_t bytes) {
-  const char* from = static_cast<const char*>(data);
-  message.insert(message.end(), from, from + bytes);
-}
-
-void append_header(std::vector<char>& message, const char (&magic)[4], std::int32_t a,
-                   std::int32_t b, std::int32_t c) {
-  step_protocol::Header header{};
-  std::memcpy(header.magic, magic, 4);
-  header.a = a;
-  header.b = b;
-  header.c = c;
-  append(message, &header, sizeof header);
-}
-
-void append_rows(std::vector<char>& message, const Eigen::MatrixXd& matrix) {
-  const RowMatrix rows = matrix;
-  append(message, rows.data(), sizeof(double) * rows.size());
-}
-
 // "5" or "0.5": a time limit as a person writes it.
 std::string number_words(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", value);
   return text;
-}
-
-// The last non-empty line a server printed, at most 200 characters; for an assertion, from the
-// condition that failed on (its program, file and function say nothing to a student).
-std::string last_output_line(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' '))
-    text.pop_back();
-  const size_t start = text.find_last_of('\n');
-  std::string line = start == std::string::npos ? text : text.substr(start + 1);
-  const size_t assertion = line.find("Assertion `");
-  if (assertion != std::string::npos) line = line.substr(assertion);
-  if (line.size() > 200) line = line.substr(0, 200) + "...";
-  return line;
 }
 
 bool indices_below(const Eigen::MatrixXi& indices, Eigen::Index count) {
@@ -89,8 +56,9 @@ StudentStep::StudentStep(const std::string& server_path, const Eigen::MatrixXd& 
   if (V.cols() != 3 || V.rows() == 0 || E.cols() != 2 || m.size() != V.rows() ||
       !indices_below(E, V.rows()) || !indices_below(b, V.rows()) ||
       V.rows() > step_protocol::kMaxCount || E.rows() > step_protocol::kMaxCount) {
-    error_ = "bad problem for the student's step: expected V #V by 3, E #E by 2 and b indices "
-             "into rows of V, m of #V masses";
+    error_ =
+        "bad problem for the student's step: expected V #V by 3, E #E by 2 and b indices "
+        "into rows of V, m of #V masses";
     return;
   }
 
@@ -140,18 +108,7 @@ StudentStep::StudentStep(const std::string& server_path, const Eigen::MatrixXd& 
   fcntl(socket_, F_SETFL, fcntl(socket_, F_GETFL) | O_NONBLOCK);
   fcntl(stderr_pipe_, F_SETFL, fcntl(stderr_pipe_, F_GETFL) | O_NONBLOCK);
 
-  std::vector<char> message;
-  append_header(message, step_protocol::kProblem, static_cast<std::int32_t>(V.rows()),
-                static_cast<std::int32_t>(E.rows()), static_cast<std::int32_t>(b.size()));
-  append(message, &k, sizeof k);
-  append(message, &delta_t, sizeof delta_t);
-  append_rows(message, V);
-  const RowIndices springs = E.cast<std::int32_t>();
-  append(message, springs.data(), sizeof(std::int32_t) * springs.size());
-  append_rows(message, m);
-  const RowIndices pins = b.cast<std::int32_t>();
-  append(message, pins.data(), sizeof(std::int32_t) * pins.size());
-
+  const std::vector<char> message = encode_problem(V, E, k, m, b, delta_t);
   const double deadline = now_seconds() + seconds_per_step_;
   step_protocol::Header reply{};
   if (!send(message.data(), message.size(), deadline) || !receive(&reply, sizeof reply, deadline))
@@ -164,7 +121,9 @@ StudentStep::StudentStep(const std::string& server_path, const Eigen::MatrixXd& 
     fail("the student's step server refused the problem (status " + std::to_string(reply.a) + ")");
 }
 
-StudentStep::~StudentStep() { stop_server(); }
+StudentStep::~StudentStep() {
+  stop_server();
+}
 
 bool StudentStep::step(const Eigen::MatrixXd& fext, const Eigen::MatrixXd& Uprev,
                        const Eigen::MatrixXd& Ucur, Eigen::MatrixXd& Unext, std::string& error) {
@@ -181,11 +140,7 @@ bool StudentStep::step(const Eigen::MatrixXd& fext, const Eigen::MatrixXd& Uprev
     }
   }
   ++steps_done_;
-  std::vector<char> message;
-  append_header(message, step_protocol::kStep, static_cast<std::int32_t>(vertex_count_), 0, 0);
-  append_rows(message, fext);
-  append_rows(message, Uprev);
-  append_rows(message, Ucur);
+  const std::vector<char> message = encode_step(fext, Uprev, Ucur);
 
   const double deadline = now_seconds() + seconds_per_step_;
   step_protocol::Header reply{};
@@ -289,8 +244,8 @@ bool StudentStep::transfer_failed(bool timed_out) {
   }
   drain_stderr();
   if (timed_out) {
-    message = "the student's fast_mass_springs_step_sparse did not finish " + during +
-              " within " + number_words(seconds_per_step_) + " s";
+    message = "the student's fast_mass_springs_step_sparse did not finish " + during + " within " +
+              number_words(seconds_per_step_) + " s";
   } else if (ended == server_ && WIFSIGNALED(status)) {
     message = "the student's fast_mass_springs_step_sparse crashed with " +
               signal_words(WTERMSIG(status)) + " in " + during;

@@ -1,9 +1,9 @@
 #ifndef WOBBLE_APP_STUDENT_STEP_H
 #define WOBBLE_APP_STUDENT_STEP_H
 
+#include <sys/types.h>
 #include <Eigen/Core>
 #include <string>
-#include <sys/types.h>
 
 namespace wobble {
 
@@ -61,8 +61,8 @@ class StudentStep {
   void stop_server();
 
   pid_t server_ = -1;
-  int socket_ = -1;        // the server's stdin and stdout
-  int stderr_pipe_ = -1;   // the server's stderr: its last line is quoted on a crash
+  int socket_ = -1;       // the server's stdin and stdout
+  int stderr_pipe_ = -1;  // the server's stderr: its last line is quoted on a crash
   std::string stderr_tail_;
   std::string error_;
   Eigen::Index vertex_count_ = 0;

@@ -19,9 +19,9 @@ std::string check_fast_mass_springs_step_dense(const CheckScene& scene);
 std::string check_fast_mass_springs_step_sparse(const CheckScene& scene);
 
 struct CheckedFunction {
-  const char* name;                          // the seed's name of the function
+  const char* name;                         // the seed's name of the function
   std::string (*check)(const CheckScene&);  // its check
-  bool sparse;                               // gets the scale check too
+  bool sparse;                              // gets the scale check too
 };
 
 // The six functions, in the assignment's order.

@@ -34,7 +34,8 @@ std::string check_signed_incidence_matrix_sparse(const CheckScene& scene) {
   Eigen::SparseMatrix<double> A;
   if (scene.outputs_prefilled) {
     A.resize(scene.E.rows(), n);
-    for (int e = 0; e < scene.E.rows(); ++e) A.insert(e, e % n) = 7.0;
+    for (int e = 0; e < scene.E.rows(); ++e)
+      A.insert(e, e % n) = 7.0;
   }
   signed_incidence_matrix_sparse(n, scene.E, A);
   std::string difference = compare_sparse("A", "#E by #V", A, expected, 0.0);

@@ -94,7 +94,8 @@ std::vector<CheckScene> course_scenes(const std::string& folder) {
   }
   std::sort(names.begin(), names.end());
   std::vector<CheckScene> scenes;
-  for (const std::string& name : names) scenes.push_back(load_course_problem(folder + "/" + name, 6));
+  for (const std::string& name : names)
+    scenes.push_back(load_course_problem(folder + "/" + name, 6));
   return scenes;
 }
 
@@ -110,8 +111,10 @@ std::string describe(const ChildOutcome& outcome, const CheckScene& scene,
   const std::string printed =
       outcome.output_tail.empty() ? "" : " (its last output: \"" + outcome.output_tail + "\")";
   switch (outcome.kind) {
-    case ChildOutcome::kDiffered: return outcome.text + on;
-    case ChildOutcome::kCrashed: return "crashed with " + outcome.signal_name + on + printed;
+    case ChildOutcome::kDiffered:
+      return outcome.text + on;
+    case ChildOutcome::kCrashed:
+      return "crashed with " + outcome.signal_name + on + printed;
     case ChildOutcome::kTimedOut:
       return "did not finish within " + number(limits.seconds) + " s" + on +
              (scene.large ? ": is a dense matrix built, or a loop over all pairs of vertices?"
@@ -121,11 +124,13 @@ std::string describe(const ChildOutcome& outcome, const CheckScene& scene,
         return "uses more than " + memory_words(limits.memory_bytes) + on +
                ": is a dense matrix built and converted (.sparseView())?";
       return "ran out of memory (more than " + memory_words(limits.memory_bytes) + ")" + on;
-    case ChildOutcome::kThrew: return "threw an exception (" + outcome.text + ")" + on;
+    case ChildOutcome::kThrew:
+      return "threw an exception (" + outcome.text + ")" + on;
     case ChildOutcome::kExited:
       return "ended the whole program (exit code " + std::to_string(outcome.exit_code) + ")" + on +
              printed;
-    case ChildOutcome::kAgreed: break;
+    case ChildOutcome::kAgreed:
+      break;
   }
   return "";
 }
@@ -135,9 +140,8 @@ std::string describe(const ChildOutcome& outcome, const CheckScene& scene,
 int main(int argc, char** argv) {
   const Options options = parse_options(argc, argv);
   const auto& functions = checked_functions();
-  const auto found = std::find_if(functions.begin(), functions.end(), [&](const auto& f) {
-    return options.function == f.name;
-  });
+  const auto found = std::find_if(functions.begin(), functions.end(),
+                                  [&](const auto& f) { return options.function == f.name; });
   if (found == functions.end()) bad_usage("unknown function " + options.function);
 
   std::vector<CheckScene> scenes = generated_scenes();
@@ -156,8 +160,7 @@ int main(int argc, char** argv) {
   if (found->sparse) scenes.push_back(large_chain(options.large_vertices));
 
   for (const CheckScene& scene : scenes) {
-    const ChildOutcome outcome =
-        run_in_child([&] { return found->check(scene); }, options.limits);
+    const ChildOutcome outcome = run_in_child([&] { return found->check(scene); }, options.limits);
     if (outcome.kind != ChildOutcome::kAgreed) {
       std::printf("FAIL  %s: %s\n", found->name, describe(outcome, scene, options.limits).c_str());
       return 1;

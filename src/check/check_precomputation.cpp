@@ -69,9 +69,8 @@ std::string check_fast_mass_springs_precomputation_sparse(const CheckScene& scen
   Eigen::VectorXd r0;
   Sparse M0, A0, C0;
   Eigen::SimplicialLLT<Sparse> factor0;
-  if (!reference_fast_mass_springs_precomputation_sparse(scene.V, scene.E, scene.k, scene.m,
-                                                         scene.b, scene.delta_t, r0, M0, A0, C0,
-                                                         factor0))
+  if (!reference_fast_mass_springs_precomputation_sparse(
+          scene.V, scene.E, scene.k, scene.m, scene.b, scene.delta_t, r0, M0, A0, C0, factor0))
     return kReferenceFailed;
 
   Eigen::VectorXd r;
@@ -82,7 +81,8 @@ std::string check_fast_mass_springs_precomputation_sparse(const CheckScene& scen
     M = 7.0 * M0;
     A = 7.0 * A0;
     C.resize(pins, n);
-    for (Eigen::Index c = 0; c < pins; ++c) C.insert(c, (c + 1) % n) = 7.0;
+    for (Eigen::Index c = 0; c < pins; ++c)
+      C.insert(c, (c + 1) % n) = 7.0;
   }
   if (!fast_mass_springs_precomputation_sparse(scene.V, scene.E, scene.k, scene.m, scene.b,
                                                scene.delta_t, r, M, A, C, factor))

@@ -11,7 +11,8 @@ namespace {
 Eigen::MatrixXd wobble_offsets(int rows, double amplitude, double phase) {
   Eigen::MatrixXd offsets(rows, 3);
   for (int i = 0; i < rows; ++i)
-    for (int c = 0; c < 3; ++c) offsets(i, c) = amplitude * std::sin(1.7 * i + 2.3 * c + phase);
+    for (int c = 0; c < 3; ++c)
+      offsets(i, c) = amplitude * std::sin(1.7 * i + 2.3 * c + phase);
   return offsets;
 }
 
@@ -61,14 +62,16 @@ void cloth_grid(int nx, int ny, double h, Eigen::MatrixXd& V, Eigen::MatrixXi& E
     }
   }
   E.resize(static_cast<int>(springs.size()), 2);
-  for (int e = 0; e < E.rows(); ++e) E.row(e) << springs[e].first, springs[e].second;
+  for (int e = 0; e < E.rows(); ++e)
+    E.row(e) << springs[e].first, springs[e].second;
 }
 
 // A chain of n vertices along x, h apart; every other spring written backwards when asked, so
 // a function that assumes E(e,0) < E(e,1) is caught.
 void chain(int n, double h, bool alternate, Eigen::MatrixXd& V, Eigen::MatrixXi& E) {
   V = Eigen::MatrixXd::Zero(n, 3);
-  for (int i = 0; i < n; ++i) V(i, 0) = h * i;
+  for (int i = 0; i < n; ++i)
+    V(i, 0) = h * i;
   E.resize(n - 1, 2);
   for (int e = 0; e + 1 < n; ++e) {
     if (alternate && e % 2 == 1)
@@ -119,9 +122,9 @@ std::vector<CheckScene> generated_scenes() {
                               Eigen::VectorXi::Constant(1, 2), 0.01, 0.1, 3));
 
   chain(4, 1.0, false, V, E);
-  CheckScene seed = make_scene("the seed's example E = [0 1; 1 2; 2 3], 4 vertices, vertex 0 pinned",
-                               V, E, 100.0, Eigen::VectorXd::Ones(4), Eigen::VectorXi::Zero(1),
-                               0.01, 0.2, 3);
+  CheckScene seed =
+      make_scene("the seed's example E = [0 1; 1 2; 2 3], 4 vertices, vertex 0 pinned", V, E, 100.0,
+                 Eigen::VectorXd::Ones(4), Eigen::VectorXi::Zero(1), 0.01, 0.2, 3);
   scenes.push_back(seed);
   seed.description += ", with the outputs passed in already holding values of their shape";
   seed.outputs_prefilled = true;
@@ -130,7 +133,8 @@ std::vector<CheckScene> generated_scenes() {
   chain(6, 0.3, true, V, E);
   V.col(1) = wobble_offsets(6, 0.1, 2.0).col(1);
   Eigen::VectorXd masses(6);
-  for (int i = 0; i < 6; ++i) masses(i) = 0.5 + 0.25 * i;
+  for (int i = 0; i < 6; ++i)
+    masses(i) = 0.5 + 0.25 * i;
   Eigen::VectorXi ends(2);
   ends << 0, 5;
   scenes.push_back(make_scene(
@@ -152,7 +156,8 @@ std::vector<CheckScene> generated_scenes() {
 
   cloth_grid(4, 3, 0.2, V, E);
   Eigen::VectorXd grid_masses(12);
-  for (int i = 0; i < 12; ++i) grid_masses(i) = 0.05 * (1 + i % 3);
+  for (int i = 0; i < 12; ++i)
+    grid_masses(i) = 0.05 * (1 + i % 3);
   Eigen::VectorXi corners(2);
   corners << 0, 3;
   scenes.push_back(make_scene("a 4 by 3 cloth grid with shear springs, two corners pinned", V, E,

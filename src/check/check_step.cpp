@@ -24,10 +24,9 @@ std::string compare_steps(const CheckScene& scene, ReferenceStep reference, Stud
     Eigen::MatrixXd expected, Unext;
     reference(Uprev, Ucur, expected);
     student(Uprev, Ucur, Unext);
-    const std::string difference =
-        compare_vertices("Unext (step " + std::to_string(step) + " of " +
-                             std::to_string(scene.steps) + ")",
-                         Unext, expected, tolerance);
+    const std::string difference = compare_vertices(
+        "Unext (step " + std::to_string(step) + " of " + std::to_string(scene.steps) + ")", Unext,
+        expected, tolerance);
     if (!difference.empty()) return difference;
     Uprev = Ucur;
     Ucur = expected;
@@ -61,9 +60,8 @@ std::string check_fast_mass_springs_step_sparse(const CheckScene& scene) {
   Eigen::VectorXd r;
   Sparse M, A, C;
   Eigen::SimplicialLLT<Sparse> factor;
-  if (!reference_fast_mass_springs_precomputation_sparse(scene.V, scene.E, scene.k, scene.m,
-                                                         scene.b, scene.delta_t, r, M, A, C,
-                                                         factor))
+  if (!reference_fast_mass_springs_precomputation_sparse(
+          scene.V, scene.E, scene.k, scene.m, scene.b, scene.delta_t, r, M, A, C, factor))
     return kReferenceFailed;
   return compare_steps(
       scene,

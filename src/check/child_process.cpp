@@ -95,17 +95,28 @@ std::string last_line(std::FILE* output) {
 
 std::string signal_name(int signal_number) {
   switch (signal_number) {
-    case SIGSEGV: return "SIGSEGV";
-    case SIGABRT: return "SIGABRT";
-    case SIGFPE: return "SIGFPE";
-    case SIGILL: return "SIGILL";
-    case SIGBUS: return "SIGBUS";
-    case SIGKILL: return "SIGKILL";
-    case SIGTERM: return "SIGTERM";
-    case SIGTRAP: return "SIGTRAP";
-    case SIGPIPE: return "SIGPIPE";
-    case SIGXCPU: return "SIGXCPU";
-    default: return "signal " + std::to_string(signal_number);
+    case SIGSEGV:
+      return "SIGSEGV";
+    case SIGABRT:
+      return "SIGABRT";
+    case SIGFPE:
+      return "SIGFPE";
+    case SIGILL:
+      return "SIGILL";
+    case SIGBUS:
+      return "SIGBUS";
+    case SIGKILL:
+      return "SIGKILL";
+    case SIGTERM:
+      return "SIGTERM";
+    case SIGTRAP:
+      return "SIGTRAP";
+    case SIGPIPE:
+      return "SIGPIPE";
+    case SIGXCPU:
+      return "SIGXCPU";
+    default:
+      return "signal " + std::to_string(signal_number);
   }
 }
 
@@ -137,8 +148,7 @@ ChildOutcome run_in_child(const std::function<std::string()>& check, const Child
       break;
     }
     pollfd wait_for{result_pipe[0], POLLIN, 0};
-    if (poll(&wait_for, 1, static_cast<int>(std::min<long long>(left, 1000))) < 0 &&
-        errno != EINTR)
+    if (poll(&wait_for, 1, static_cast<int>(std::min<long long>(left, 1000))) < 0 && errno != EINTR)
       break;
     if (wait_for.revents & (POLLIN | POLLHUP | POLLERR)) {
       char buffer[4096];

@@ -8,7 +8,7 @@
 // (crash, loop forever, allocate without end, print, call exit) the checker itself goes on.
 
 struct ChildLimits {
-  double seconds = 10;           // wall clock; the child is killed when it runs longer
+  double seconds = 10;                 // wall clock; the child is killed when it runs longer
   long long memory_bytes = 2LL << 30;  // address space (RLIMIT_AS) of the child
 };
 

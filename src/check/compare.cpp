@@ -1,5 +1,6 @@
 #include "compare.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -16,18 +17,27 @@ double difference(double a, double b) {
   return std::isnan(d) ? std::numeric_limits<double>::infinity() : d;
 }
 
+// Enough significant digits for two values `difference` apart to print differently: a step
+// off by 1.5e-5 m at 1.55 m needs 7, not the default 6.
+int digits_to_show(double magnitude, double difference) {
+  if (!(difference > 0) || !std::isfinite(difference) || !std::isfinite(magnitude)) return 6;
+  const int digits = 2 + static_cast<int>(std::ceil(std::log10(std::abs(magnitude) / difference)));
+  return std::clamp(digits, 6, 17);
+}
+
 std::string off_by(double worst, Eigen::Index others, double tolerance) {
-  std::string text = ": off by " + number(worst) + ", tolerance " + number(tolerance);
+  std::string text = ": off by " + number(worst, 3) + ", tolerance " + number(tolerance, 3);
   if (others > 0)
-    text += "; " + std::to_string(others) + " more entr" + (others == 1 ? "y differs" : "ies differ");
+    text +=
+        "; " + std::to_string(others) + " more entr" + (others == 1 ? "y differs" : "ies differ");
   return text;
 }
 
 }  // namespace
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6g", value);
+std::string number(double value, int digits) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
   return text;
 }
 
@@ -47,9 +57,10 @@ std::string compare_dense(const std::string& name, const std::string& shape,
     }
   }
   if (count == 0) return "";
+  const int digits = digits_to_show(expected(worst_row, worst_col), worst);
   return name + "(" + std::to_string(worst_row) + "," + std::to_string(worst_col) + ") is " +
-         number(got(worst_row, worst_col)) + ", expected " +
-         number(expected(worst_row, worst_col)) + off_by(worst, count - 1, tolerance);
+         number(got(worst_row, worst_col), digits) + ", expected " +
+         number(expected(worst_row, worst_col), digits) + off_by(worst, count - 1, tolerance);
 }
 
 std::string compare_vector(const std::string& name, const std::string& shape,
@@ -66,8 +77,10 @@ std::string compare_vector(const std::string& name, const std::string& shape,
     if (d > worst) worst = d, worst_index = i;
   }
   if (count == 0) return "";
-  return name + "(" + std::to_string(worst_index) + ") is " + number(got(worst_index)) +
-         ", expected " + number(expected(worst_index)) + off_by(worst, count - 1, tolerance);
+  const int digits = digits_to_show(expected(worst_index), worst);
+  return name + "(" + std::to_string(worst_index) + ") is " + number(got(worst_index), digits) +
+         ", expected " + number(expected(worst_index), digits) +
+         off_by(worst, count - 1, tolerance);
 }
 
 std::string compare_vertices(const std::string& name, const Eigen::MatrixXd& got,
@@ -84,15 +97,17 @@ std::string compare_vertices(const std::string& name, const Eigen::MatrixXd& got
     if (d > worst) worst = d, worst_vertex = i;
   }
   if (count == 0) return "";
+  const int digits = digits_to_show(expected.row(worst_vertex).cwiseAbs().maxCoeff(), worst);
   const auto row = [&](const Eigen::MatrixXd& U) {
-    return "(" + number(U(worst_vertex, 0)) + ", " + number(U(worst_vertex, 1)) + ", " +
-           number(U(worst_vertex, 2)) + ")";
+    return "(" + number(U(worst_vertex, 0), digits) + ", " + number(U(worst_vertex, 1), digits) +
+           ", " + number(U(worst_vertex, 2), digits) + ")";
   };
   std::string text = name + " vertex " + std::to_string(worst_vertex) + " is " + row(got) +
-                     ", expected " + row(expected) + ": off by " + number(worst) +
-                     " m, tolerance " + number(tolerance) + " m";
+                     ", expected " + row(expected) + ": off by " + number(worst, 3) +
+                     " m, tolerance " + number(tolerance, 3) + " m";
   if (count > 1)
-    text += "; " + std::to_string(count - 1) + " more vert" + (count == 2 ? "ex differs" : "ices differ");
+    text += "; " + std::to_string(count - 1) + " more vert" +
+            (count == 2 ? "ex differs" : "ices differ");
   return text;
 }
 
@@ -114,9 +129,10 @@ std::string compare_sparse(const std::string& name, const std::string& shape,
     }
   }
   if (count == 0) return "";
+  const int digits = digits_to_show(expected.coeff(worst_row, worst_col), worst);
   return name + "(" + std::to_string(worst_row) + "," + std::to_string(worst_col) + ") is " +
-         number(got.coeff(worst_row, worst_col)) + ", expected " +
-         number(expected.coeff(worst_row, worst_col)) + off_by(worst, count - 1, tolerance);
+         number(got.coeff(worst_row, worst_col), digits) + ", expected " +
+         number(expected.coeff(worst_row, worst_col), digits) + off_by(worst, count - 1, tolerance);
 }
 
 std::string check_sparse_storage(const std::string& name, const Eigen::SparseMatrix<double>& got,

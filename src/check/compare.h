@@ -33,7 +33,7 @@ std::string compare_sparse(const std::string& name, const std::string& shape,
 std::string check_sparse_storage(const std::string& name, const Eigen::SparseMatrix<double>& got,
                                  Eigen::Index nonzeros, const std::string& count_words);
 
-// A number as a FAIL line prints it: 6 significant digits.
-std::string number(double value);
+// A number as a FAIL line prints it: 6 significant digits unless told more.
+std::string number(double value, int digits = 6);
 
 #endif

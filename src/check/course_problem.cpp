@@ -52,7 +52,8 @@ void read_obj(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& E) {
       if (face.size() < 2) throw std::runtime_error(where + ": a face needs 2 or more vertices");
       if (keyword == "l") {
         // A polyline is its segments, each a two-vertex face.
-        for (size_t s = 0; s + 1 < face.size(); ++s) faces.push_back({face[s], face[s + 1]});
+        for (size_t s = 0; s + 1 < face.size(); ++s)
+          faces.push_back({face[s], face[s + 1]});
       } else {
         faces.push_back(face);
       }
@@ -60,13 +61,15 @@ void read_obj(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& E) {
   }
   if (vertices.empty()) throw problem(path, "no vertices");
   V.resize(static_cast<int>(vertices.size()), 3);
-  for (int i = 0; i < V.rows(); ++i) V.row(i) = vertices[i];
+  for (int i = 0; i < V.rows(); ++i)
+    V.row(i) = vertices[i];
 
   std::vector<std::pair<int, int>> springs;
   const bool only_pairs =
       std::all_of(faces.begin(), faces.end(), [](const auto& f) { return f.size() == 2; });
   if (only_pairs) {
-    for (const auto& f : faces) springs.emplace_back(f[0], f[1]);
+    for (const auto& f : faces)
+      springs.emplace_back(f[0], f[1]);
   } else {
     std::set<std::pair<int, int>> unique;
     for (const auto& f : faces)
@@ -77,7 +80,8 @@ void read_obj(const std::string& path, Eigen::MatrixXd& V, Eigen::MatrixXi& E) {
   }
   if (springs.empty()) throw problem(path, "no springs (faces or lines)");
   E.resize(static_cast<int>(springs.size()), 2);
-  for (int e = 0; e < E.rows(); ++e) E.row(e) << springs[e].first, springs[e].second;
+  for (int e = 0; e < E.rows(); ++e)
+    E.row(e) << springs[e].first, springs[e].second;
 }
 
 }  // namespace

@@ -29,12 +29,14 @@ bool reference_fast_mass_springs_precomputation_sparse(
     Eigen::SparseMatrix<double>& M, Eigen::SparseMatrix<double>& A, Eigen::SparseMatrix<double>& C,
     Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>& prefactorization);
 
-void reference_fast_mass_springs_step_dense(
-    const Eigen::MatrixXd& V, const Eigen::MatrixXi& E, const double k, const Eigen::VectorXi& b,
-    const double delta_t, const Eigen::MatrixXd& fext, const Eigen::VectorXd& r,
-    const Eigen::MatrixXd& M, const Eigen::MatrixXd& A, const Eigen::MatrixXd& C,
-    const Eigen::LLT<Eigen::MatrixXd>& prefactorization, const Eigen::MatrixXd& Uprev,
-    const Eigen::MatrixXd& Ucur, Eigen::MatrixXd& Unext);
+void reference_fast_mass_springs_step_dense(const Eigen::MatrixXd& V, const Eigen::MatrixXi& E,
+                                            const double k, const Eigen::VectorXi& b,
+                                            const double delta_t, const Eigen::MatrixXd& fext,
+                                            const Eigen::VectorXd& r, const Eigen::MatrixXd& M,
+                                            const Eigen::MatrixXd& A, const Eigen::MatrixXd& C,
+                                            const Eigen::LLT<Eigen::MatrixXd>& prefactorization,
+                                            const Eigen::MatrixXd& Uprev,
+                                            const Eigen::MatrixXd& Ucur, Eigen::MatrixXd& Unext);
 
 void reference_fast_mass_springs_step_sparse(
     const Eigen::MatrixXd& V, const Eigen::MatrixXi& E, const double k, const Eigen::VectorXi& b,

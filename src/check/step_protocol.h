@@ -34,10 +34,10 @@ constexpr char kQuit[4] = {'W', 'S', 'P', 'Q'};
 
 // Statuses of kReady and kNext.
 constexpr std::int32_t kOk = 0;
-constexpr std::int32_t kBadMessage = 1;      // a count or an index out of range
-constexpr std::int32_t kNotFactored = 2;     // the reference precomputation failed (Q not SPD)
-constexpr std::int32_t kWrongShape = 3;      // Unext is rows×cols, not #V×3
-constexpr std::int32_t kThrew = 4;           // the step threw; its what() follows
+constexpr std::int32_t kBadMessage = 1;   // a count or an index out of range
+constexpr std::int32_t kNotFactored = 2;  // the reference precomputation failed (Q not SPD)
+constexpr std::int32_t kWrongShape = 3;   // Unext is rows×cols, not #V×3
+constexpr std::int32_t kThrew = 4;        // the step threw; its what() follows
 
 // Larger problems are refused as malformed, so a corrupt count cannot ask for terabytes.
 constexpr std::int32_t kMaxCount = 50000000;

@@ -80,7 +80,8 @@ int main() {
   protocol_out = dup(STDOUT_FILENO);
   dup2(STDERR_FILENO, STDOUT_FILENO);
   long long memory_mib = 2048;
-  if (const char* text = std::getenv("WOBBLE_STEP_SERVER_MEMORY_MIB")) memory_mib = std::atoll(text);
+  if (const char* text = std::getenv("WOBBLE_STEP_SERVER_MEMORY_MIB"))
+    memory_mib = std::atoll(text);
   const rlimit memory{static_cast<rlim_t>(memory_mib) << 20, static_cast<rlim_t>(memory_mib) << 20};
   setrlimit(RLIMIT_AS, &memory);
 

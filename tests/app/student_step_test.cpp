@@ -18,7 +18,8 @@ namespace {
 std::string server(const std::string& name) {
   const std::string path = std::string(WOBBLE_STEP_SERVERS) + "/" + name;
   if (access(path.c_str(), X_OK) != 0)
-    ADD_FAILURE() << path << " is missing: ctest builds it first (CheckAssignment.BuildStepServers)";
+    ADD_FAILURE() << path
+                  << " is missing: ctest builds it first (CheckAssignment.BuildStepServers)";
   return path;
 }
 
@@ -44,7 +45,8 @@ struct Cloth {
       }
     }
     E.resize(static_cast<int>(springs.size()), 2);
-    for (int e = 0; e < E.rows(); ++e) E.row(e) = springs[e].transpose();
+    for (int e = 0; e < E.rows(); ++e)
+      E.row(e) = springs[e].transpose();
     m = Eigen::VectorXd::Constant(V.rows(), 0.05);
     b.resize(2);
     b << 0, nx - 1;
@@ -125,7 +127,8 @@ TEST(StudentStep, HangIsATimeOut) {
   EXPECT_FALSE(student.step(cloth.fext, cloth.V, cloth.V, Unext, error));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(error, "the student's fast_mass_springs_step_sparse did not finish step 1 within 0.5 s");
+  EXPECT_EQ(error,
+            "the student's fast_mass_springs_step_sparse did not finish step 1 within 0.5 s");
   EXPECT_LT(seconds, 3.0);  // 0.5 s and the kill, with room for a busy machine
 }
 
