@@ -100,7 +100,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--export-obj", export_obj, "Write the final positions as OBJ");
   app.add_option("--export-obj-sequence", obj_sequence,
                  "Write every frame as DIR/frame_00001.obj, ...");
-  std::optional<std::string> convergence_csv, energy_csv, compare;
+  std::optional<std::string> convergence_csv, energy_csv, compare, student;
+  app.add_option("--student", student,
+                 "Run the student's fast_mass_springs_step_sparse from DIR beside Wobble's, "
+                 "coloured by its distance from Wobble's (split view)");
   app.add_option("--compare", compare,
                  "Split view: the right side with these settings, e.g. \"iterations=5\" "
                  "(iterations, chebyshev=on|off, dt, k; comma-separated)");
@@ -201,6 +204,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
   }
   if (compare) command.compare = parse_compare_settings(*compare);
+  if (student) command.student = path_value("--student", *student, "folder path");
+  if (!command.student.empty() && command.compare) {
+    throw InputError("--student, --compare: both take the split view's right side; choose one");
+  }
   if (energy_csv) command.energy_csv = path_value("--energy-csv", *energy_csv, "file path");
   if (!command.headless && !command.frames &&
       (!command.convergence_csv.empty() || !command.energy_csv.empty())) {
@@ -210,6 +217,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");
+  if (!command.student.empty() && command.headless && !command.writes_images()) {
+    throw InputError("--student: shows the student's step beside Wobble's, so it needs the window "
+                     "or, headless, --screenshot or --record (scripts/check-assignment.sh checks "
+                     "without images)");
+  }
   for (const std::string& drag : drags)
     command.drags.push_back(parse_drag(drag, CommandLine::max_frames));
   if (yaw) command.camera_yaw = number_between("--camera-yaw", *yaw, -360.0, 360.0);

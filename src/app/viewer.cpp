@@ -9,6 +9,7 @@
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
 #include "scene_catalog.h"
+#include "student_server.h"
 
 namespace wobble {
 
@@ -40,8 +41,13 @@ void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Ve
 }  // namespace
 
 Viewer open_viewer(const CommandLine& command) {
+  // The student's code is built first: a compile error is the user's to fix before any window.
+  ViewerSettings settings = viewer_settings(command);
+  if (!command.student.empty()) {
+    settings.student_server = build_student_step_server(command.student);
+  }
   return naming_scene(command.scene, [&] {
-    return Viewer(open_scene(command), viewer_settings(command), scene_catalog());
+    return Viewer(open_scene(command), settings, scene_catalog());
   });
 }
 
@@ -87,9 +93,10 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   }
   camera_.yaw = settings_yaw_.value_or(default_yaw);
   camera_.pitch = settings_pitch_.value_or(default_pitch);
+  student_server_ = settings.student_server;
   load(std::move(scene));
   drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
-  if (settings.compare) start_split(*settings.compare);
+  if (settings.compare && !student_) start_split(*settings.compare);
 }
 
 Viewer::~Viewer() = default;
@@ -98,12 +105,19 @@ void Viewer::load(Scene scene) {
   // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
   // was.
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
+  if (!student_server_.empty()) {
+    scene.params = seed_method(scene.params);
+    scene.notes.push_back("student mode: Wobble's side (left) takes the seed's step, 50 plain "
+                          "iterations from the current positions with gravity and the pins only, "
+                          "so that both sides compute the same step; pins cannot be dragged");
+  }
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
   // A split view stays split, its right side keeping its own settings on the new scene.
   std::optional<CompareSettings> split;
-  if (twin_) split = twin_settings();
+  if (twin_ && !student_) split = twin_settings();
   twin_.reset();
+  student_.reset();
   drag_.cancel();
   collider_drag_.cancel();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
@@ -184,6 +198,7 @@ void Viewer::load(Scene scene) {
   }
   texture_ = std::move(texture);
   if (split) start_split(*split);
+  if (!student_server_.empty()) start_student();
   if (renderer_) attach_renderer();
 }
 
@@ -377,6 +392,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.positions = twin_positions_.data();
   frame.normals = twin_normals_.data();
   add_quantity_colors(twin_colors_, frame);
+  if (student_) frame.vertex_colors = student_colors_.data();
   renderer_->update(frame);
   renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width - left_width,
                   framebuffer_height, pixel_ratio, left_width);

@@ -11,6 +11,7 @@
 #include "collider_mesh.h"
 #include "command_line.h"
 #include "compare_settings.h"
+#include "student_step.h"
 #include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
@@ -44,7 +45,14 @@ struct ViewerSettings {
   ColorQuantity color_by = ColorQuantity::material;
   std::optional<CompareSettings> compare;  // open in the split view with this right side
   bool plots = false;                      // open the convergence and energy plots
+  // wobble --student: the step server built from the student's folder (student_server.h), or
+  // empty. The split view then shows the student's sparse step on the right.
+  std::string student_server;
 };
+
+// The parameters under which Wobble's step is the seed's fast_mass_springs_step_sparse: 50 plain
+// iterations from pᵗ, no damping, wind or colliders (the left side of wobble --student).
+SimulationParams seed_method(SimulationParams params);
 
 // The start-up settings a command line asks for.
 ViewerSettings viewer_settings(const CommandLine& command);
@@ -103,6 +111,11 @@ class Viewer {
   bool has_overlays() const { return twin_ || panel_.show_convergence || panel_.show_energy; }
   // The split view's right side, or null when the view is not split.
   const Simulation* right_side() const { return twin_.get(); }
+  // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.
+  const std::string& right_side_warning() const { return twin_warning_; }
+  // With a student's step on the right: its largest distance from Wobble's positions after the
+  // last step (m).
+  double student_distance() const { return student_distance_; }
 
   bool quit_requested() const { return quit_; }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
@@ -139,6 +152,11 @@ class Viewer {
   void sync_twin();
   void advance_twin(double seconds);
   void reset_twin();
+  // viewer_student.cpp: a student's step on the right.
+  void start_student();
+  void advance_student();
+  void restart_student();
+  void draw_student_legend(float ui_scale);
   void place_ground();
   void update_collider_mesh();
   void update_vertex_arrays();
@@ -174,6 +192,12 @@ class Viewer {
   double twin_behind_ = 0.0;
   std::string twin_warning_;
   std::vector<float> twin_positions_, twin_normals_;
+  // wobble --student: the server's path, the student's step, its largest distance from the left
+  // side's positions after the last step (m), and its vertices' colours by that distance.
+  std::string student_server_;
+  std::unique_ptr<StudentStep> student_;
+  double student_distance_ = 0.0;
+  std::vector<float> student_colors_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;

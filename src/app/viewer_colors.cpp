@@ -41,6 +41,11 @@ void Viewer::add_quantity_colors(const QuantityColors& colors, MeshFrame& frame)
 }
 
 void Viewer::build_legend(float ui_scale) {
+  // A student's side is coloured by its distance from Wobble's, and that is what the legend says.
+  if (student_) {
+    draw_student_legend(ui_scale);
+    return;
+  }
   const ColorQuantity quantity = quantity_colors_.quantity();
   if (quantity == ColorQuantity::material) return;
   const float range = quantity_colors_.range();

@@ -3,6 +3,7 @@
 // and their drags, gravity, damping, wind, friction, colliders) is the left side's, copied to
 // the right before each of its steps, so a drag acts on both.
 #include <algorithm>
+#include <cstdio>
 
 #include "ui/side_labels.h"
 #include "viewer.h"
@@ -57,6 +58,10 @@ CompareSettings Viewer::twin_settings() const {
 }
 
 void Viewer::apply_split_settings() {
+  if (student_) {  // the student's side stays, with the seed's settings
+    panel_.split = true;
+    return;
+  }
   if (panel_.split && !twin_) start_split(default_compare_settings(simulation_->params()));
   if (!panel_.split && twin_) stop_split();
   if (!twin_) return;
@@ -106,6 +111,10 @@ void Viewer::sync_twin() {
 }
 
 void Viewer::advance_twin(double seconds) {
+  if (student_) {
+    advance_student();
+    return;
+  }
   if (!twin_ || !twin_warning_.empty()) return;
   sync_twin();
   // Both sides cover the same simulated time: a right side with half the dt steps twice a frame.
@@ -124,6 +133,10 @@ void Viewer::advance_twin(double seconds) {
 }
 
 void Viewer::reset_twin() {
+  if (student_) {
+    restart_student();
+    return;
+  }
   if (!twin_) return;
   twin_->reset();
   twin_->set_state(simulation_->positions(), simulation_->previous_positions());
@@ -138,6 +151,16 @@ void Viewer::draw_overlays(float ui_scale) {
   SideLabels labels;
   labels.left = describe_side(simulation_->params());
   labels.right = describe_side(twin_->params());
+  if (student_) {
+    const SimulationParams& params = twin_->params();
+    char right[200];
+    std::snprintf(right, sizeof(right),
+                  "the student's fast_mass_springs_step_sparse\ndt %.3g ms, k %g N/m\n"
+                  "largest distance from Wobble's: %.2g m",
+                  1000.0 * params.dt, params.k, student_distance_);
+    labels.left = "Wobble's step (reference)\n" + labels.left;
+    labels.right = right;
+  }
   labels.right_warning = twin_warning_;
   draw_side_labels(labels, ui_scale);
 }

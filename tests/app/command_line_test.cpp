@@ -75,6 +75,13 @@ TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
       {"--headless --color-by stress",
        "--color-by: expected material, strain or speed, got 'stress'"},
       {"--headless --color-by ''", "--color-by: expected material, strain or speed, got ''"},
+      {"--headless --compare iterations=0", "--compare: iterations: expected a whole number"},
+      {"--headless --compare speed=2", "--compare: unknown setting 'speed'"},
+      {"--headless --student /nonexistent", "--student: shows the student's step"},
+      {"--headless --student /nonexistent --screenshot x.png",
+       "--student /nonexistent: check-assignment: /nonexistent: no such folder"},
+      {"--student d --compare k=5", "--student, --compare: both take the split view"},
+      {"--headless --convergence-csv ''", "--convergence-csv: expected a file path"},
   };
   for (const auto& [arguments, expected] : cases) {
     SCOPED_TRACE(arguments);
