@@ -136,10 +136,10 @@ key_of() {
   {
     printf '%s\n%s\n' "$toolchain_id" "$tag"
     cat "$source"
-    for name in $(printf '%s\n' "${!chosen[@]}" | LC_ALL=C sort); do
+    while IFS= read -r name; do
       printf '\n--- %s\n' "$name"
       cat "${chosen[$name]}"
-    done
+    done < <(printf '%s\n' "${!chosen[@]}" | LC_ALL=C sort)
   } | sha256sum | cut -c1-32
 }
 
