@@ -218,9 +218,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");
   if (!command.student.empty() && command.headless && !command.writes_images()) {
-    throw InputError("--student: shows the student's step beside Wobble's, so it needs the window "
-                     "or, headless, --screenshot or --record (scripts/check-assignment.sh checks "
-                     "without images)");
+    throw InputError(
+        "--student: shows the student's step beside Wobble's, so it needs the window "
+        "or, headless, --screenshot or --record (scripts/check-assignment.sh checks "
+        "without images)");
   }
   for (const std::string& drag : drags)
     command.drags.push_back(parse_drag(drag, CommandLine::max_frames));

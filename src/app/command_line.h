@@ -24,7 +24,7 @@ struct CommandLine {
   std::string energy_csv;           // every frame's kinetic and potential energy; empty: none
   std::optional<CompareSettings> compare;  // --compare: the split view's right side
   std::string student;  // --student DIR: a student's six functions beside Wobble's; empty: none
-  bool fill = false;                       // fill a closed OBJ surface with tetrahedra
+  bool fill = false;    // fill a closed OBJ surface with tetrahedra
   std::optional<double> k;
   std::optional<double> dt;
   std::optional<int> iterations;

@@ -51,8 +51,10 @@ CompareSettings parse_compare_settings(const std::string& text) {
   CompareSettings settings;
   const std::vector<std::string> parts = split_settings(text);
   if (parts.empty()) {
-    throw InputError("--compare: expected settings of the right side such as 'iterations=5', "
-                     "got '" + text + "'");
+    throw InputError(
+        "--compare: expected settings of the right side such as 'iterations=5', "
+        "got '" +
+        text + "'");
   }
   for (const std::string& part : parts) {
     const std::size_t equals = part.find('=');

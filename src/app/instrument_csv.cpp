@@ -47,9 +47,9 @@ InstrumentCsv::InstrumentCsv(std::string convergence_path, std::string energy_pa
     check_output_path("--convergence-csv", convergence_path_);
     // Compared in floating point: frames × iterations can overflow a long.
     const double rows = static_cast<double>(frames) * (iterations + 1);
-    check_rows("--convergence-csv", rows > max_rows ? max_rows + 1 : static_cast<long>(rows),
-               std::to_string(frames) + " frames of " + std::to_string(iterations + 1) +
-                   " iterates");
+    check_rows(
+        "--convergence-csv", rows > max_rows ? max_rows + 1 : static_cast<long>(rows),
+        std::to_string(frames) + " frames of " + std::to_string(iterations + 1) + " iterates");
     convergence_ = "frame,iteration,energy,gradient_norm\n";
   }
   if (!energy_path_.empty()) {

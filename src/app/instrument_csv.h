@@ -23,8 +23,7 @@ class InstrumentCsv {
  public:
   // Empty paths write nothing. Throws InputError naming the option when a path cannot be
   // written, or when `frames` steps of `iterations` would make more than max_rows rows.
-  InstrumentCsv(std::string convergence_path, std::string energy_path, long frames,
-                int iterations);
+  InstrumentCsv(std::string convergence_path, std::string energy_path, long frames, int iterations);
 
   // Whether the simulation must record its convergence (Simulation::set_convergence_recording).
   bool wants_convergence() const { return !convergence_path_.empty(); }

@@ -126,8 +126,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   Simulation& simulation = *simulation_pointer;
   DragScript drags(command.drags, scene.network.V.rows());
   const long frames = command.frames.value_or(CommandLine::default_headless_frames);
-  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames,
-                            params.iterations);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames, params.iterations);
   simulation.set_convergence_recording(instruments.wants_convergence());
   instruments.start(simulation);
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal

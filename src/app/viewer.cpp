@@ -46,9 +46,8 @@ Viewer open_viewer(const CommandLine& command) {
   if (!command.student.empty()) {
     settings.student_server = build_student_step_server(command.student);
   }
-  return naming_scene(command.scene, [&] {
-    return Viewer(open_scene(command), settings, scene_catalog());
-  });
+  return naming_scene(command.scene,
+                      [&] { return Viewer(open_scene(command), settings, scene_catalog()); });
 }
 
 ViewerSettings viewer_settings(const CommandLine& command) {
@@ -107,9 +106,10 @@ void Viewer::load(Scene scene) {
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
   if (!student_server_.empty()) {
     scene.params = seed_method(scene.params);
-    scene.notes.push_back("student mode: Wobble's side (left) takes the seed's step, 50 plain "
-                          "iterations from the current positions with gravity and the pins only, "
-                          "so that both sides compute the same step; pins cannot be dragged");
+    scene.notes.push_back(
+        "student mode: Wobble's side (left) takes the seed's step, 50 plain "
+        "iterations from the current positions with gravity and the pins only, "
+        "so that both sides compute the same step; pins cannot be dragged");
   }
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);

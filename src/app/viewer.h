@@ -11,7 +11,6 @@
 #include "collider_mesh.h"
 #include "command_line.h"
 #include "compare_settings.h"
-#include "student_step.h"
 #include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
@@ -22,6 +21,7 @@
 #include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
+#include "student_step.h"
 #include "ui/control_panel.h"
 #include "vertex_drag.h"
 

@@ -46,9 +46,9 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         const std::optional<ColliderHit> collider =
             event.alt && panel_.colliders ? pick_collider(ray_at(at), simulation_->colliders())
                                           : std::nullopt;
-        MouseGesture gesture = gesture_for_press(event.code, event.control, event.shift,
-                                                 ui_wants_mouse, pin >= 0, vertex >= 0, event.alt,
-                                                 collider.has_value());
+        MouseGesture gesture =
+            gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse, pin >= 0,
+                              vertex >= 0, event.alt, collider.has_value());
         // The student's step pins its vertices where they rest: with a student on the right,
         // the mouse only moves the camera.
         if (student_ && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {

@@ -41,8 +41,8 @@ void Viewer::start_student() {
                                            network.m, b, main.params().dt);
   // The right side's shape lives in a simulation that is never stepped, only given the
   // student's positions: it draws, colours and frames like any other side.
-  twin_ = std::make_unique<Simulation>(network, scene_.pins, main.params(),
-                                       scene_.initial_velocity);
+  twin_ =
+      std::make_unique<Simulation>(network, scene_.pins, main.params(), scene_.initial_velocity);
   twin_->set_state(main.positions(), main.previous_positions());
   twin_warning_ = student_->running() ? "" : student_->error();
   student_distance_ = 0.0;
@@ -68,8 +68,7 @@ void Viewer::advance_student() {
     twin_warning_ = std::string("the student's step returned ") + refused.what();
     return;
   }
-  const Eigen::VectorXd distance =
-      (twin_->positions() - simulation_->positions()).rowwise().norm();
+  const Eigen::VectorXd distance = (twin_->positions() - simulation_->positions()).rowwise().norm();
   student_distance_ = distance.maxCoeff();
   const double range = std::max(student_distance_, distance_floor);
   for (Eigen::Index i = 0; i < distance.size(); ++i) {
@@ -98,10 +97,10 @@ void Viewer::draw_student_legend(float ui_scale) {
   }
   legend.title = "right: distance from Wobble's step (m)";
   legend.low = "0";
-  legend.high = two_significant_digits(static_cast<float>(std::max(student_distance_,
-                                                                   distance_floor)));
+  legend.high =
+      two_significant_digits(static_cast<float>(std::max(student_distance_, distance_floor)));
   legend.note = student_distance_ <= distance_floor ? "the same as Wobble's (within 1e-6 m)"
-                                                     : "largest distance this step";
+                                                    : "largest distance this step";
   LegendClearance clearance;
   clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
   clearance.side_labels = true;

@@ -402,8 +402,9 @@ void Simulation::set_iteration_observer(std::function<void(int, const Eigen::Mat
 }
 
 StepObjectiveTerms Simulation::objective_terms() const {
-  return StepObjectiveTerms{network_.E, r_,       network_.m, params_.k,  params_.dt, params_.damping,
-                            current_,   previous_, fext_,     pinned_,   targets_,   pin_weight};
+  return StepObjectiveTerms{network_.E,      r_,        network_.m, params_.k, params_.dt,
+                            params_.damping, current_,  previous_,  fext_,     pinned_,
+                            targets_,        pin_weight};
 }
 
 double Simulation::step_energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient) const {

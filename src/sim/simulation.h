@@ -67,8 +67,8 @@ void validate_simulation_params(const SimulationParams& params);
 struct StepTiming {
   double local_ms = 0.0;
   double global_ms = 0.0;
-  double forces_ms = 0.0;   // wind
-  double contact_ms = 0.0;  // collider projection and friction
+  double forces_ms = 0.0;       // wind
+  double contact_ms = 0.0;      // collider projection and friction
   double instruments_ms = 0.0;  // the convergence trace, while it is recorded
   double total_ms = 0.0;
 };
@@ -268,9 +268,9 @@ class Simulation {
   CholeskySolver solver_;
   ChebyshevAcceleration chebyshev_{0};
   bool chebyshev_calibrated_ = false;
-  double last_update_ = 0.0;    // ‖q̂ − q‖² of the last accelerated iteration
-  int restart_iteration_ = 0;   // where the recurrence last restarted in this step
-  Eigen::MatrixXd solved_;  // the plain iterate q̂, when accelerating
+  double last_update_ = 0.0;   // ‖q̂ − q‖² of the last accelerated iteration
+  int restart_iteration_ = 0;  // where the recurrence last restarted in this step
+  Eigen::MatrixXd solved_;     // the plain iterate q̂, when accelerating
   std::unique_ptr<LocalStep> local_step_;
 
   std::function<void(int, const Eigen::MatrixXd&)> observer_;

@@ -62,9 +62,9 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
   }
   const ImU32 label_color = ImGui::GetColorU32(ImGuiCol_TextDisabled);
   draw->AddText(ImVec2(top_left.x, origin.y), label_color, axes.y_label);
-  draw->AddText(ImVec2(0.5f * (top_left.x + bottom_right.x) - 2.0f * line,
-                       bottom_right.y + 1.1f * line),
-                label_color, axes.x_label);
+  draw->AddText(
+      ImVec2(0.5f * (top_left.x + bottom_right.x) - 2.0f * line, bottom_right.y + 1.1f * line),
+      label_color, axes.x_label);
   if (xs.empty() || ys.empty()) {
     ImGui::PopID();
     return;
@@ -126,8 +126,9 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
           std::isfinite(s.y[i]) && std::isfinite(s.x[i]) && (!axes.log_y || s.y[i] > 0.0);
       // A gap (a zero on a log axis) ends the polyline; the next point starts another.
       if (!drawable) {
-        if (points.size() > 1) draw->AddPolyline(points.data(), static_cast<int>(points.size()),
-                                                 s.color, ImDrawFlags_None, 2.0f);
+        if (points.size() > 1)
+          draw->AddPolyline(points.data(), static_cast<int>(points.size()), s.color,
+                            ImDrawFlags_None, 2.0f);
         points.clear();
         continue;
       }

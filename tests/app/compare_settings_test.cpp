@@ -11,7 +11,8 @@ using wobble::CompareSettings;
 using wobble::parse_compare_settings;
 
 TEST(CompareSettings, ParsesEachSettingSeparatedByCommasOrSpaces) {
-  const CompareSettings settings = parse_compare_settings("iterations=5, chebyshev=on dt=0.01,k=2e4");
+  const CompareSettings settings =
+      parse_compare_settings("iterations=5, chebyshev=on dt=0.01,k=2e4");
   EXPECT_EQ(settings.iterations, 5);
   EXPECT_EQ(settings.chebyshev, true);
   EXPECT_DOUBLE_EQ(*settings.dt, 0.01);

@@ -36,9 +36,9 @@ std::vector<std::vector<double>> read_csv(const std::string& path, std::string& 
 TEST(InstrumentCsv, KineticEnergyMatchesTheExportedPositions) {
   TemporaryFolder folder;
   const std::string energy = folder.file("energy.csv");
-  const wobble::testing::Result result = run_wobble(
-      "cloth --headless --frames 12 --energy-csv '" + energy + "' --export-obj-sequence '" +
-      folder.file("frames") + "'");
+  const wobble::testing::Result result =
+      run_wobble("cloth --headless --frames 12 --energy-csv '" + energy +
+                 "' --export-obj-sequence '" + folder.file("frames") + "'");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::string header;
   const auto rows = read_csv(energy, header);
@@ -96,9 +96,8 @@ TEST(InstrumentCsv, ConvergenceRowsForEveryIterationOfEveryStep) {
 
 TEST(InstrumentCsv, RefusedBeforeAnyWork) {
   TemporaryFolder folder;
-  const wobble::testing::Result too_many =
-      run_wobble("cloth --headless --frames 100000 --convergence-csv '" + folder.file("c.csv") +
-                 "'");
+  const wobble::testing::Result too_many = run_wobble(
+      "cloth --headless --frames 100000 --convergence-csv '" + folder.file("c.csv") + "'");
   EXPECT_EQ(too_many.exit_code, 2);
   EXPECT_NE(too_many.err.find("--convergence-csv"), std::string::npos) << too_many.err;
   EXPECT_NE(too_many.err.find("fewer --frames"), std::string::npos) << too_many.err;

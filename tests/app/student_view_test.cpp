@@ -20,8 +20,8 @@ std::unique_ptr<wobble::Viewer> student_viewer(wobble::Scene scene,
                                                const std::string& server_name) {
   wobble::ViewerSettings settings;
   settings.student_server = server(server_name);
-  auto viewer = std::make_unique<wobble::Viewer>(std::move(scene), settings,
-                                                 std::vector<std::string>());
+  auto viewer =
+      std::make_unique<wobble::Viewer>(std::move(scene), settings, std::vector<std::string>());
   viewer->render(1280, 720, Eigen::Vector2f(1280.0f, 720.0f), 1.0f);
   return viewer;
 }
@@ -32,8 +32,7 @@ TEST(StudentView, TheSeedsOwnStepStaysOnWobbles) {
     SCOPED_TRACE(scene);
     const auto viewer = student_viewer(wobble::load_scene(scene), "reference");
     ASSERT_NE(viewer->right_side(), nullptr);
-    EXPECT_EQ(viewer->simulation().params().first_iterate,
-              wobble::FirstIterate::current_positions)
+    EXPECT_EQ(viewer->simulation().params().first_iterate, wobble::FirstIterate::current_positions)
         << "Wobble's side takes the seed's step";
     for (int frame = 0; frame < 20; ++frame)
       viewer->advance();

@@ -39,10 +39,11 @@ void print_row(const char* name, const SpringNetwork& network, const std::vector
             .count());
   }
   const double step_off = median(off), step_on = median(on);
-  std::printf("instruments/%s%s  step %.2f ms  with trace %.2f ms (x%.3f)  frame energy %.3f ms "
-              "(%.2f%%)\n",
-              name, params.chebyshev ? " chebyshev" : "", step_off, step_on, step_on / step_off,
-              median(energy), 100.0 * median(energy) / step_off);
+  std::printf(
+      "instruments/%s%s  step %.2f ms  with trace %.2f ms (x%.3f)  frame energy %.3f ms "
+      "(%.2f%%)\n",
+      name, params.chebyshev ? " chebyshev" : "", step_off, step_on, step_on / step_off,
+      median(energy), 100.0 * median(energy) / step_off);
 }
 
 }  // namespace

@@ -38,8 +38,7 @@ TEST(EnergyDescent, EveryShippedSceneEveryIteration) {
     SCOPED_TRACE(source);
     wobble::Scene scene = wobble::load_scene(source);
     scene.params.chebyshev = false;  // the guarantee is the plain iteration's
-    wobble::Simulation simulation(scene.network, scene.pins, scene.params,
-                                  scene.initial_velocity);
+    wobble::Simulation simulation(scene.network, scene.pins, scene.params, scene.initial_velocity);
     simulation.set_convergence_recording(true);
     // Larger scenes are slower to step; a second of their motion is enough to leave rest.
     const int steps = scene.network.V.rows() > 5000 ? 12 : 60;

@@ -35,8 +35,9 @@ TEST(StepObjective, GradientMatchesCentralDifferences) {
     pinned[i] = 1;
   const Eigen::MatrixXd targets = mesh.network.V;
   // A modest pin weight: with w = 1e10 a finite difference would measure only rounding.
-  const StepObjectiveTerms terms{mesh.network.E, r,     mesh.network.m, 300.0,   1.0 / 60.0, 2.0,
-                                 current,        previous, fext,        pinned, targets,    50.0};
+  const StepObjectiveTerms terms{mesh.network.E, r,      mesh.network.m, 300.0,
+                                 1.0 / 60.0,     2.0,    current,        previous,
+                                 fext,           pinned, targets,        50.0};
   const Eigen::MatrixXd p = current + 0.02 * Eigen::MatrixXd::Random(n, 3);
   Eigen::MatrixXd gradient;
   const double energy = step_objective(terms, p, &gradient);
