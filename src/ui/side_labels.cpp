@@ -23,11 +23,19 @@ void draw_side_labels(const SideLabels& labels, float ui_scale) {
                 2.0f * ui_scale);
   const float margin = 12.0f * ui_scale, pad = 5.0f * ui_scale;
   const ImU32 white = IM_COL32(240, 240, 240, 255);
-  corner_text(draw, ImVec2(margin, display.y - margin), labels.left, white, pad);
-  corner_text(draw, ImVec2(half + margin, display.y - margin), labels.right, white, pad);
+  // Bottom right of each half: the panel takes the window's left edge, and the plots end above
+  // the bottom.
+  const auto right_aligned = [&](float right_edge, float bottom, const std::string& text,
+                                 ImU32 color) {
+    const float width = ImGui::CalcTextSize(text.c_str()).x;
+    corner_text(draw, ImVec2(right_edge - margin - width, bottom), text, color, pad);
+  };
+  right_aligned(half, display.y - margin, labels.left, white);
+  right_aligned(display.x, display.y - margin, labels.right, white);
   if (!labels.right_warning.empty()) {
-    corner_text(draw, ImVec2(half + margin, display.y - margin - 3.0f * ImGui::GetTextLineHeight()),
-                labels.right_warning, IM_COL32(255, 190, 60, 255), pad);
+    const float above = ImGui::CalcTextSize(labels.right.c_str()).y + 3.0f * pad;
+    right_aligned(display.x, display.y - margin - above, labels.right_warning,
+                  IM_COL32(255, 190, 60, 255));
   }
 }
 

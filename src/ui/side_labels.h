@@ -11,7 +11,7 @@ struct SideLabels {
   std::string right_warning;  // why the right side stopped, or empty
 };
 
-// Writes each half's settings in its bottom-left corner and draws the line between the halves,
+// Writes each half's settings in its bottom-right corner and draws the line between the halves,
 // over everything else (ImGui's foreground list; between NewFrame and Render).
 void draw_side_labels(const SideLabels& labels, float ui_scale);
 
