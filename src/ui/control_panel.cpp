@@ -124,8 +124,15 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::Checkbox("energy", &settings.show_energy);
 
   section("compare");
-  ImGui::Checkbox("split view: right side", &settings.split);
-  if (settings.split) {
+  if (stats.student_side) {
+    // wobble --student: the right side is the student's step, with the seed's settings.
+    ImGui::TextWrapped(
+        "right: the student's fast_mass_springs_step_sparse, coloured by its "
+        "distance from Wobble's (left)");
+  } else {
+    ImGui::Checkbox("split view: right side", &settings.split);
+  }
+  if (settings.split && !stats.student_side) {
     ImGui::SliderFloat("k right", &settings.right_k, PanelSettings::min_k, PanelSettings::max_k,
                        "%.1f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     ImGui::SliderFloat("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt,

@@ -89,6 +89,15 @@ TEST(SimulationAllocation, StepAllocatesNothing) {
                 simulation.step();
               }),
               0);
+    // Nor does recording the convergence trace (the plots and --convergence-csv), plain or
+    // accelerated.
+    simulation.set_convergence_recording(true);
+    simulation.step();
+    EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
+    simulation.set_chebyshev(true);
+    simulation.step();
+    EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
+    EXPECT_EQ(simulation.last_convergence().iterations(), scene.params.iterations);
   }
 }
 
