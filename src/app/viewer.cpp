@@ -313,6 +313,7 @@ PanelStats Viewer::stats() const {
   stats.has_colliders = !simulation_->colliders().empty();
   stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
   stats.contacts = simulation_->contact_count();
+  stats.student_side = student_ != nullptr;
   stats.warning = step_warning_;
   return stats;
 }

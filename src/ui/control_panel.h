@@ -58,6 +58,7 @@ struct PanelStats {
   bool has_colliders = false;      // friction, the colliders' checkbox and contacts show only then
   bool aerodynamic_wind = true;    // the wind has a speed and heading (the course's has neither)
   int contacts = 0;                // vertices the last step moved out of a collider
+  bool student_side = false;       // the right side is a student's step (--student)
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
 };
