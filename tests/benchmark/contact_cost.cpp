@@ -4,19 +4,11 @@
 #include <cstdio>
 #include <vector>
 
+#include "median.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
 
 namespace wobble::benchmark {
-
-namespace {
-
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
-}  // namespace
 
 void print_contact_cost() {
   ClothGridOptions options;
@@ -44,10 +36,11 @@ void print_contact_cost() {
       wind.push_back(simulation.last_step_timing().forces_ms);
     }
     const double step_ms = median(total);
-    std::printf("contact/128x128 drape%s  %d contacts  step %.2f ms  contact %.3f ms (%.1f%%)  "
-                "wind %.3f ms (%.1f%%)\n",
-                windy ? " + wind" : "", simulation.contact_count(), step_ms, median(contact),
-                100.0 * median(contact) / step_ms, median(wind), 100.0 * median(wind) / step_ms);
+    std::printf(
+        "contact/128x128 drape%s  %d contacts  step %.2f ms  contact %.3f ms (%.1f%%)  "
+        "wind %.3f ms (%.1f%%)\n",
+        windy ? " + wind" : "", simulation.contact_count(), step_ms, median(contact),
+        100.0 * median(contact) / step_ms, median(wind), 100.0 * median(wind) / step_ms);
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "median.h"
 #include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/shapes/cloth_grid.h"
@@ -13,11 +14,6 @@
 namespace wobble::benchmark {
 
 namespace {
-
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
 
 void print_row(const char* name, const SpringNetwork& network, const std::vector<int>& pins,
                SimulationParams params) {

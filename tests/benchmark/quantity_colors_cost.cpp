@@ -5,20 +5,13 @@
 #include <cstdio>
 #include <vector>
 
+#include "median.h"
+
 #include "app/quantity_colors.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
 
 namespace wobble::benchmark {
-
-namespace {
-
-double median(std::vector<double> values) {
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
-}  // namespace
 
 void print_quantity_colors_cost() {
   ClothGridOptions options;
