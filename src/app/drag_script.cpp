@@ -96,6 +96,13 @@ void DragScript::before_step(Simulation& simulation, long frame) {
   }
 }
 
+bool DragScript::holds_vertex() const {
+  for (const Hold& hold : holds_) {
+    if (hold.held) return true;
+  }
+  return false;
+}
+
 void DragScript::restart() {
   for (Hold& hold : holds_)
     hold = Hold();

@@ -42,6 +42,8 @@ class DragScript {
   // Forget every drag in progress; the simulation was reset or replaced.
   void restart();
   bool empty() const { return drags_.empty(); }
+  // Whether a scripted drag holds a vertex now.
+  bool holds_vertex() const;
 
  private:
   struct Hold {

@@ -5,7 +5,9 @@
 
 namespace wobble {
 
-ViewerCommand command_for_key(int key) {
+ViewerCommand command_for_key(int key, bool control) {
+  // Esc is what a presenter presses to back out of something: it must never end the demo.
+  if (control) return key == GLFW_KEY_Q ? ViewerCommand::quit : ViewerCommand::none;
   switch (key) {
     case GLFW_KEY_SPACE:
       return ViewerCommand::toggle_pause;
@@ -34,7 +36,7 @@ ViewerCommand command_for_key(int key) {
     case GLFW_KEY_2:
       return ViewerCommand::toggle_split;
     case GLFW_KEY_ESCAPE:
-      return ViewerCommand::quit;
+      return ViewerCommand::close_overlays;
     default:
       return ViewerCommand::none;
   }
@@ -72,7 +74,8 @@ const std::vector<Binding>& viewer_bindings() {
       {"G", "convergence and energy plots on / off"},
       {"2", "split view: the scene twice, the right side with its own settings"},
       {"H", "this help on / off"},
-      {"Esc", "quit"},
+      {"Esc", "close the help (never quits)"},
+      {"Ctrl+Q", "quit (or the window's close button)"},
       {"Left-drag a pin", "move the pin; the shape follows"},
       {"Left-drag a vertex", "hold it while dragging; let go to throw"},
       {"Ctrl+click a vertex", "pin / unpin it"},

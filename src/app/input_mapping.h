@@ -22,11 +22,13 @@ enum class ViewerCommand {
   toggle_plots,  // the convergence and energy plots
   toggle_split,  // the split view: the scene twice, side by side
   frame_mesh,
-  quit,
+  close_overlays,  // Esc: the help overlay (ImGui closes its own menus and edits)
+  quit,            // Ctrl+Q (and the window's close button)
 };
 
 // The command for a GLFW key code (GLFW_KEY_*); none for keys without one.
-ViewerCommand command_for_key(int key);
+// With Ctrl held only Ctrl+Q means something (quit); Esc never quits, it closes the help.
+ViewerCommand command_for_key(int key, bool control = false);
 
 // What pressing a mouse button starts, given what is under the cursor.
 enum class MouseGesture {

@@ -54,7 +54,8 @@ int run_window(const CommandLine& command, std::ostream& progress) {
   viewer.set_convergence_required(instruments.wants_convergence());
   instruments.start(viewer.simulation());
 
-  GlfwWindow window(command.width, command.height, "Wobble: " + viewer.scene().name);
+  std::string title = "Wobble: " + viewer.scene().name;
+  GlfwWindow window(command.width, command.height, title);
   const float ui_scale = window.content_scale();
   WindowUi ui(window, ui_scale);
   print_notes(viewer.scene(), progress);
@@ -95,6 +96,11 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     // Rows for steps taken (none while paused), numbered by the simulation's step count.
     if (viewer.simulation().steps_taken() != steps_before) {
       instruments.record(viewer.simulation().steps_taken(), viewer.simulation());
+    }
+    // The title names the scene on show, also after the picker changed it.
+    if ("Wobble: " + viewer.scene().name != title) {
+      title = "Wobble: " + viewer.scene().name;
+      window.set_title(title);
     }
     // 5. render
     ImGui::Render();

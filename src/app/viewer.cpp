@@ -9,6 +9,7 @@
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
 #include "scene_catalog.h"
+#include "step_advice.h"
 #include "student_server.h"
 
 namespace wobble {
@@ -99,6 +100,12 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
 }
 
 Viewer::~Viewer() = default;
+
+void Viewer::restore_defaults() {
+  // scene_ is the scene as it opened: the panel's changes went to the simulation only.
+  Scene opened = scene_;
+  load(std::move(opened));
+}
 
 void Viewer::load(Scene scene) {
   // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
@@ -258,6 +265,10 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     }
     return;
   }
+  if (requests.restore_defaults) {
+    restore_defaults();
+    return;
+  }
   apply_panel_settings();
   if (requests.step_once) apply(ViewerCommand::step_once);
   if (requests.reset) apply(ViewerCommand::reset);
@@ -296,8 +307,15 @@ void Viewer::advance() {
     advance_twin(simulation_->params().dt);
   } else {
     panel_.paused = true;
-    step_warning_ =
-        "Paused at step " + std::to_string(frame) + ": " + Simulation::describe(status) + ".";
+    FailedStep failed;
+    failed.status = status;
+    failed.step = frame;
+    failed.initial_velocity =
+        scene_.initial_velocity.size() != 0 && !scene_.initial_velocity.isZero(0.0);
+    failed.dragging = drag_.active() || drag_script_.holds_vertex();
+    failed.stiffness_ratio = stiffness_ratio(*simulation_);
+    failed.dt = simulation_->params().dt;
+    step_warning_ = describe_failed_step(failed);
   }
   update_quantity_colors();
 }
@@ -306,7 +324,8 @@ PanelStats Viewer::stats() const {
   PanelStats stats;
   stats.vertices = static_cast<int>(scene_.network.V.rows());
   stats.springs = static_cast<int>(scene_.network.E.rows());
-  stats.pins = simulation_->pin_count();
+  // A free vertex held by the mouse is pinned only for the drag: it is not one of the pins.
+  stats.pins = simulation_->pin_count() - (drag_.holds_free_vertex() ? 1 : 0);
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
   stats.notes = scene_.notes;
@@ -314,6 +333,7 @@ PanelStats Viewer::stats() const {
   stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
   stats.contacts = simulation_->contact_count();
   stats.student_side = student_ != nullptr;
+  stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
   stats.warning = step_warning_;
   return stats;
 }

@@ -73,6 +73,10 @@ class Viewer {
   // starts with its springs and vertices shown, since there is no surface to see; the layers
   // chosen for meshes with faces come back with the next mesh that has them.
   void load(Scene scene);
+  // The scene as it opened (with the command line's settings): k, dt, iterations, gravity,
+  // environment, pins, colliders, the start and the split view's right side. The panel's
+  // "Restore defaults", and the picker choosing the current scene again.
+  void restore_defaults();
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();
@@ -118,6 +122,7 @@ class Viewer {
   double student_distance() const { return student_distance_; }
 
   bool quit_requested() const { return quit_; }
+  bool help_shown() const { return panel_.show_help; }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
   const Simulation& simulation() const { return *simulation_; }

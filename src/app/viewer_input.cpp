@@ -35,7 +35,7 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
     if (twin_ && at.x() >= window_size_.x()) at.x() -= window_size_.x();
     switch (event.type) {
       case InputEvent::Type::key_press:
-        if (!ui_wants_keyboard) apply(command_for_key(event.code));
+        if (!ui_wants_keyboard) apply(command_for_key(event.code, event.control));
         break;
       case InputEvent::Type::button_press: {
         // One gesture at a time.
@@ -160,6 +160,9 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::quit:
       quit_ = true;
+      break;
+    case ViewerCommand::close_overlays:
+      panel_.show_help = false;
       break;
     case ViewerCommand::none:
       break;

@@ -122,6 +122,10 @@ void GlfwWindow::request_close() {
   glfwSetWindowShouldClose(window_, GLFW_TRUE);
 }
 
+void GlfwWindow::set_title(const std::string& title) {
+  glfwSetWindowTitle(window_, title.c_str());
+}
+
 std::vector<InputEvent> GlfwWindow::poll_events() {
   glfwPollEvents();
   std::vector<InputEvent> events;

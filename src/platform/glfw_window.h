@@ -24,6 +24,7 @@ class GlfwWindow {
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close();
+  void set_title(const std::string& title);
   // Wait for events (poll), then hand over what arrived since the last call.
   std::vector<InputEvent> poll_events();
   void window_size(int& width, int& height) const;       // in window coordinates

@@ -54,7 +54,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     const char* current = scene_names[settings.scene].c_str();
     if (ImGui::BeginCombo("scene", current)) {
       for (int i = 0; i < static_cast<int>(scene_names.size()); ++i) {
-        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene) && i != settings.scene) {
+        // Choosing the current scene again opens it afresh, with its own settings.
+        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene)) {
           settings.scene = i;
           requests.scene_changed = true;
         }
@@ -86,9 +87,23 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                      ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
   ImGui::SliderInt("iterations", &settings.iterations, PanelSettings::min_iterations,
                    PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  // A course scene reproduces the course's program, which iterates plainly.
+  if (stats.course_scene) ImGui::BeginDisabled();
   ImGui::Checkbox("Chebyshev acceleration", &settings.chebyshev);
+  if (stats.course_scene) {
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip(
+          "A course scene reproduces the course's program exactly:\n"
+          "plain iterations only.");
+    }
+  }
   ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, PanelSettings::max_gravity, "%.2f",
                      ImGuiSliderFlags_AlwaysClamp);
+  requests.restore_defaults = ImGui::Button("Restore defaults");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The scene as it opened: its settings, pins, colliders and start");
+  }
 
   section("environment");
   ImGui::SliderFloat("damping (1/s)", &settings.damping, 0.0f, PanelSettings::max_damping, "%.2f",

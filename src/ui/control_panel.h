@@ -59,6 +59,7 @@ struct PanelStats {
   bool aerodynamic_wind = true;    // the wind has a speed and heading (the course's has neither)
   int contacts = 0;                // vertices the last step moved out of a collider
   bool student_side = false;       // the right side is a student's step (--student)
+  bool course_scene = false;       // the course's format: Chebyshev is not offered
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
 };
@@ -68,7 +69,8 @@ struct PanelRequests {
   bool step_once = false;
   bool reset = false;
   bool frame_mesh = false;
-  bool scene_changed = false;  // settings.scene now names another scene
+  bool scene_changed = false;     // the picker chose a scene (the current one again: reopen it)
+  bool restore_defaults = false;  // the scene as it opened, every setting included
 };
 
 // The "Wobble" panel: scene picker, play controls, simulation and environment (damping,

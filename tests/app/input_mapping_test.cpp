@@ -23,13 +23,19 @@ TEST(InputMapping, KeysTheIssueAsksFor) {
       {GLFW_KEY_P, ViewerCommand::toggle_points},
       {GLFW_KEY_H, ViewerCommand::toggle_help},
       {GLFW_KEY_F, ViewerCommand::frame_mesh},
-      {GLFW_KEY_ESCAPE, ViewerCommand::quit},
+      {GLFW_KEY_ESCAPE, ViewerCommand::close_overlays},
       {GLFW_KEY_L, ViewerCommand::toggle_springs},
       {GLFW_KEY_V, ViewerCommand::cycle_color_by},
   };
   for (const auto& [key, command] : expected)
     EXPECT_EQ(wobble::command_for_key(key), command) << "key " << key;
   EXPECT_EQ(wobble::command_for_key(GLFW_KEY_Q), ViewerCommand::none);
+  // Only Ctrl+Q quits; Esc, with or without Ctrl, never does.
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_Q, /*control=*/true), ViewerCommand::quit);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_ESCAPE, /*control=*/true), ViewerCommand::none);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_S, /*control=*/true), ViewerCommand::none);
+  for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
+    EXPECT_NE(wobble::command_for_key(key), ViewerCommand::quit) << "key " << key;
   EXPECT_EQ(wobble::command_for_key(GLFW_KEY_UNKNOWN), ViewerCommand::none);
 }
 
