@@ -17,9 +17,16 @@ namespace wobble {
 std::vector<std::string> scene_catalog() {
   std::vector<std::string> sources = builtin_scene_names();
   std::vector<std::string> files;
+  // The scene files of assets/ and of its subfolders (the course's scenes are in
+  // assets/course/); an unreadable folder is skipped, not an error.
   std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(WOBBLE_ASSETS_DIR, error)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  std::filesystem::recursive_directory_iterator entry(
+      WOBBLE_ASSETS_DIR, std::filesystem::directory_options::skip_permission_denied, error);
+  for (; !error && entry != std::filesystem::recursive_directory_iterator();
+       entry.increment(error)) {
+    if (entry->is_regular_file(error) && entry->path().extension() == ".json") {
+      files.push_back(entry->path().string());
+    }
   }
   std::sort(files.begin(), files.end());
   sources.insert(sources.end(), files.begin(), files.end());

@@ -12,7 +12,8 @@
 namespace wobble {
 
 // What the scene picker offers: the built-in scenes, then the scene files in Wobble's assets/
-// folder (when it is where the build found it), as sources load_scene accepts.
+// folder and its subfolders (assets/course/), when it is where the build found it, as sources
+// load_scene accepts.
 std::vector<std::string> scene_catalog();
 
 // The short name the picker shows for a source: a built-in name, or a file's name without its

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "io/load_scene.h"
+#include "app/scene_catalog.h"
 #include "io/png_image.h"
 #include "run_wobble.h"
 
@@ -95,3 +96,23 @@ TEST(SceneFiles, FillTurnsAClosedSurfaceIntoAJelly) {
 }
 
 }  // namespace
+
+// The picker and --list-scenes offer the scene files of assets/ and its subfolders: the course's
+// scenes in assets/course/ too.
+TEST(SceneCatalog, ListsTheSubfoldersOfAssets) {
+  const std::vector<std::string> catalog = wobble::scene_catalog();
+  const auto listed = [&](const std::string& ending) {
+    for (const std::string& source : catalog) {
+      if (source.size() >= ending.size() &&
+          source.compare(source.size() - ending.size(), ending.size(), ending) == 0) {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(listed("/assets/drape.json"));
+  EXPECT_TRUE(listed("/assets/course/banner.json"));
+  EXPECT_TRUE(listed("/assets/course/rope.json"));
+  const wobble::testing::Result result = wobble::testing::run_wobble("--list-scenes");
+  EXPECT_NE(result.out.find("course/rope.json"), std::string::npos) << result.out;
+}
