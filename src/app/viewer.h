@@ -123,6 +123,13 @@ class Viewer {
 
   bool quit_requested() const { return quit_; }
   bool help_shown() const { return panel_.show_help; }
+  // Whether the next frames change without input: playing, a step asked for, or the mouse
+  // holding something or turning the camera. A paused viewer with none of these can wait for
+  // input instead of redrawing the same picture.
+  bool animating() const {
+    return !panel_.paused || step_requested_ || drag_.active() || collider_drag_.active() ||
+           mode_ != Mode::idle;
+  }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
   const Simulation& simulation() const { return *simulation_; }

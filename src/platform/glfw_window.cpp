@@ -126,8 +126,12 @@ void GlfwWindow::set_title(const std::string& title) {
   glfwSetWindowTitle(window_, title.c_str());
 }
 
-std::vector<InputEvent> GlfwWindow::poll_events() {
-  glfwPollEvents();
+std::vector<InputEvent> GlfwWindow::poll_events(double wait_seconds) {
+  if (wait_seconds > 0.0) {
+    glfwWaitEventsTimeout(wait_seconds);
+  } else {
+    glfwPollEvents();
+  }
   std::vector<InputEvent> events;
   events.swap(events_);
   return events;

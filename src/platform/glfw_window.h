@@ -25,8 +25,9 @@ class GlfwWindow {
   bool should_close() const;
   void request_close();
   void set_title(const std::string& title);
-  // Wait for events (poll), then hand over what arrived since the last call.
-  std::vector<InputEvent> poll_events();
+  // Take the events that are waiting (or, with `wait_seconds` > 0, wait up to that long for one
+  // to arrive), then hand over what arrived since the last call.
+  std::vector<InputEvent> poll_events(double wait_seconds = 0.0);
   void window_size(int& width, int& height) const;       // in window coordinates
   void framebuffer_size(int& width, int& height) const;  // in pixels
   float content_scale() const;  // 1 on ordinary screens, 2 on most high-DPI ones

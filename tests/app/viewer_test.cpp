@@ -503,3 +503,21 @@ TEST(Viewer, AFreeVertexHeldByTheMouseIsNotCountedAsAPin) {
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
   EXPECT_EQ(f.viewer.stats().pins, 2);
 }
+
+TEST(Viewer, PausedAndUntouchedItNeedsNoFrames) {
+  ViewerFixture f;
+  EXPECT_TRUE(f.viewer.animating()) << "playing";
+  f.press_key(GLFW_KEY_SPACE);
+  EXPECT_FALSE(f.viewer.animating()) << "paused: the window may wait for input";
+  f.press_key(GLFW_KEY_S);
+  EXPECT_TRUE(f.viewer.animating()) << "a step asked for";
+  f.frame();
+  EXPECT_FALSE(f.viewer.animating());
+  // Turning the camera (a press on empty space) needs frames until the button is let go.
+  const Eigen::Vector2f empty(1200.0f, 60.0f);
+  f.send(InputEvent::Type::cursor_move, empty);
+  f.send(InputEvent::Type::button_press, empty, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_TRUE(f.viewer.animating());
+  f.send(InputEvent::Type::button_release, empty, GLFW_MOUSE_BUTTON_LEFT);
+  EXPECT_FALSE(f.viewer.animating());
+}
