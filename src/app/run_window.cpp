@@ -77,6 +77,11 @@ int run_window(const CommandLine& command, std::ostream& progress) {
     const bool idle = !viewer.animating() && quiet_frames >= settle_frames && !command.frames;
     const std::vector<InputEvent> events = window.poll_events(idle ? idle_wait_seconds : 0.0);
     quiet_frames = events.empty() ? quiet_frames + 1 : 0;
+    // Files dropped on the window open as the picker's scenes do; the last one stays.
+    for (const std::string& path : window.take_dropped_paths()) {
+      viewer.open_file(path);
+      quiet_frames = 0;
+    }
     int window_width = 0, window_height = 0, width = 0, height = 0;
     window.window_size(window_width, window_height);
     window.framebuffer_size(width, height);

@@ -101,6 +101,16 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
 
 Viewer::~Viewer() = default;
 
+bool Viewer::open_file(const std::string& path) {
+  try {
+    load(load_scene(path));
+    return true;
+  } catch (const std::exception& error) {
+    scene_.notes.push_back(error.what());
+    return false;
+  }
+}
+
 void Viewer::restore_defaults() {
   // scene_ is the scene as it opened: the panel's changes went to the simulation only.
   Scene opened = scene_;
@@ -263,6 +273,10 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
           static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
                            scene_labels_.begin());
     }
+    return;
+  }
+  if (!requests.open_path.empty()) {
+    open_file(requests.open_path);
     return;
   }
   if (requests.restore_defaults) {

@@ -77,6 +77,10 @@ class Viewer {
   // environment, pins, colliders, the start and the split view's right side. The panel's
   // "Restore defaults", and the picker choosing the current scene again.
   void restore_defaults();
+  // Open a scene or mesh file (dropped on the window, or typed into the panel's "open" field),
+  // as load_scene reads it. A file that does not load leaves the current scene running, the
+  // reason shown in the panel's notes; returns whether it loaded.
+  bool open_file(const std::string& path);
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();

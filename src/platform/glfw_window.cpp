@@ -60,6 +60,10 @@ struct GlfwCallbacks {
     event.y = y;
     push(window, event, 0);
   }
+  static void drop(GLFWwindow* window, int count, const char** paths) {
+    for (int i = 0; i < count; ++i)
+      owner(window).dropped_.emplace_back(paths[i]);
+  }
   static void scroll(GLFWwindow* window, double dx, double dy) {
     InputEvent event;
     event.type = InputEvent::Type::scroll;
@@ -107,6 +111,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   glfwSetMouseButtonCallback(window_, GlfwCallbacks::button);
   glfwSetCursorPosCallback(window_, GlfwCallbacks::cursor);
   glfwSetScrollCallback(window_, GlfwCallbacks::scroll);
+  glfwSetDropCallback(window_, GlfwCallbacks::drop);
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -135,6 +140,12 @@ std::vector<InputEvent> GlfwWindow::poll_events(double wait_seconds) {
   std::vector<InputEvent> events;
   events.swap(events_);
   return events;
+}
+
+std::vector<std::string> GlfwWindow::take_dropped_paths() {
+  std::vector<std::string> paths;
+  paths.swap(dropped_);
+  return paths;
 }
 
 void GlfwWindow::window_size(int& width, int& height) const {

@@ -28,6 +28,8 @@ class GlfwWindow {
   // Take the events that are waiting (or, with `wait_seconds` > 0, wait up to that long for one
   // to arrive), then hand over what arrived since the last call.
   std::vector<InputEvent> poll_events(double wait_seconds = 0.0);
+  // Paths of the files dropped on the window since the last call, in the order dropped.
+  std::vector<std::string> take_dropped_paths();
   void window_size(int& width, int& height) const;       // in window coordinates
   void framebuffer_size(int& width, int& height) const;  // in pixels
   float content_scale() const;  // 1 on ordinary screens, 2 on most high-DPI ones
@@ -36,6 +38,7 @@ class GlfwWindow {
  private:
   GLFWwindow* window_ = nullptr;
   std::vector<InputEvent> events_;
+  std::vector<std::string> dropped_;
   double cursor_x_ = 0.0, cursor_y_ = 0.0;  // as of the last event handled
   friend struct GlfwCallbacks;
 };

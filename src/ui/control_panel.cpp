@@ -64,6 +64,15 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     }
   }
 
+  // A scene or mesh file by path (or dropped on the window): Enter or the button opens it.
+  const bool entered =
+      ImGui::InputTextWithHint("##open", "scene or mesh file path", settings.open_path,
+                               sizeof(settings.open_path), ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Open") || entered) && settings.open_path[0] != '\0') {
+    requests.open_path = settings.open_path;
+  }
+
   if (ImGui::Button(settings.paused ? "Play" : "Pause")) settings.paused = !settings.paused;
   ImGui::SameLine();
   requests.step_once = ImGui::Button("Step");

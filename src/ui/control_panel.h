@@ -25,6 +25,7 @@ struct PanelSettings {
   int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
   int scene = 0;     // index into the scene names
   bool show_help = false;
+  char open_path[512] = "";       // the "open" field's text
   bool show_convergence = false;  // the last step's convergence plot
   bool show_energy = false;       // the energy-over-time plot
   // The split view and its right side's own settings.
@@ -71,6 +72,7 @@ struct PanelRequests {
   bool frame_mesh = false;
   bool scene_changed = false;     // the picker chose a scene (the current one again: reopen it)
   bool restore_defaults = false;  // the scene as it opened, every setting included
+  std::string open_path;          // a scene or mesh file to open (the "open" field), or empty
 };
 
 // The "Wobble" panel: scene picker, play controls, simulation and environment (damping,

@@ -5,8 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/load_scene.h"
 #include "app/scene_catalog.h"
+#include "io/load_scene.h"
 #include "io/png_image.h"
 #include "run_wobble.h"
 

@@ -521,3 +521,15 @@ TEST(Viewer, PausedAndUntouchedItNeedsNoFrames) {
   f.send(InputEvent::Type::button_release, empty, GLFW_MOUSE_BUTTON_LEFT);
   EXPECT_FALSE(f.viewer.animating());
 }
+
+TEST(Viewer, AFileDroppedOrTypedOpensAndABadOneLeavesTheSceneRunning) {
+  ViewerFixture f;
+  EXPECT_TRUE(f.viewer.open_file(std::string(WOBBLE_ASSETS_DIR) + "/course/rope.json"));
+  EXPECT_EQ(f.viewer.scene().name, "rope");
+  const std::size_t notes = f.viewer.scene().notes.size();
+  EXPECT_FALSE(f.viewer.open_file("/nonexistent/scene.json"));
+  EXPECT_EQ(f.viewer.scene().name, "rope") << "the current scene keeps running";
+  ASSERT_EQ(f.viewer.scene().notes.size(), notes + 1);
+  EXPECT_NE(f.viewer.scene().notes.back().find("/nonexistent/scene.json"), std::string::npos)
+      << f.viewer.scene().notes.back();
+}
