@@ -27,7 +27,7 @@ std::unique_ptr<wobble::Viewer> student_viewer(wobble::Scene scene,
 }
 
 TEST(StudentView, TheSeedsOwnStepStaysOnWobbles) {
-  for (const std::string scene :
+  for (const std::string& scene :
        {std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json", std::string("cloth")}) {
     SCOPED_TRACE(scene);
     const auto viewer = student_viewer(wobble::load_scene(scene), "reference");

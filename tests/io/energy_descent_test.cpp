@@ -20,7 +20,7 @@ const std::string assets = WOBBLE_ASSETS_DIR;
 
 std::vector<std::string> shipped_scenes() {
   std::vector<std::string> scenes = wobble::builtin_scene_names();
-  for (const std::string folder : {assets, assets + "/course"}) {
+  for (const std::string& folder : {assets, assets + "/course"}) {
     std::vector<std::string> files;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
       if (entry.path().extension() == ".json") files.push_back(entry.path().string());
