@@ -35,6 +35,10 @@ ViewerCommand command_for_key(int key, bool control) {
       return ViewerCommand::toggle_plots;
     case GLFW_KEY_2:
       return ViewerCommand::toggle_split;
+    case GLFW_KEY_F12:
+      return ViewerCommand::screenshot;
+    case GLFW_KEY_F11:
+      return ViewerCommand::export_obj;
     case GLFW_KEY_ESCAPE:
       return ViewerCommand::close_overlays;
     default:
@@ -73,6 +77,8 @@ const std::vector<Binding>& viewer_bindings() {
       {"F", "frame the mesh"},
       {"G", "convergence and energy plots on / off"},
       {"2", "split view: the scene twice, the right side with its own settings"},
+      {"F12", "screenshot: wobble-SCENE-0001.png, ... in the working folder"},
+      {"F11", "export the current positions: wobble-SCENE-0001.obj, ..."},
       {"H", "this help on / off"},
       {"Esc", "close the help (never quits)"},
       {"Ctrl+Q", "quit (or the window's close button)"},

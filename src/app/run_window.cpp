@@ -16,6 +16,7 @@
 #include "render/offscreen_target.h"
 #include "scene_catalog.h"
 #include "viewer.h"
+#include "window_saves.h"
 
 namespace wobble {
 
@@ -122,6 +123,21 @@ int run_window(const CommandLine& command, std::ostream& progress) {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       viewer.render(width, height, window_size, window_width > 0 ? width / window_size.x() : 1);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
+    if (viewer.take_screenshot_request() && width > 0 && height > 0) {
+      // What the window shows, panel included.
+      RgbaImage shot;
+      shot.width = width;
+      shot.height = height;
+      glReadBuffer(GL_BACK);
+      read_framebuffer_rgba(width, height, shot.pixels);
+      const std::string path = unused_file_name(".", "wobble-" + viewer.scene().name, ".png");
+      try {
+        write_png(path, shot);
+        viewer.saved("saved " + path);
+      } catch (const std::exception& error) {
+        viewer.saved(std::string("screenshot failed: ") + error.what());
+      }
     }
     ++frame;
     const bool last = command.frames && frame >= *command.frames;

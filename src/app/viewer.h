@@ -81,6 +81,15 @@ class Viewer {
   // as load_scene reads it. A file that does not load leaves the current scene running, the
   // reason shown in the panel's notes; returns whether it loaded.
   bool open_file(const std::string& path);
+  // F12 asked for a screenshot since the last call (the window loop reads the pixels after
+  // drawing and calls saved()).
+  bool take_screenshot_request() {
+    const bool asked = screenshot_requested_;
+    screenshot_requested_ = false;
+    return asked;
+  }
+  // Tell the user, among the panel's notes, that a file was written or why not.
+  void saved(const std::string& what) { scene_.notes.push_back(what); }
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();
@@ -195,6 +204,7 @@ class Viewer {
   bool frame_on_next_render_ = true;
   bool framing_new_scene_ = true;  // frame with room for the motion to come
   bool quit_ = false;
+  bool screenshot_requested_ = false;
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;

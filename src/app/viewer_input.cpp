@@ -3,6 +3,8 @@
 
 #include "collider_picking.h"
 #include "environment_controls.h"
+#include "io/write_obj.h"
+#include "window_saves.h"
 
 namespace wobble {
 
@@ -161,6 +163,19 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::quit:
       quit_ = true;
       break;
+    case ViewerCommand::screenshot:
+      screenshot_requested_ = true;
+      break;
+    case ViewerCommand::export_obj: {
+      const std::string path = unused_file_name(".", "wobble-" + scene_.name, ".obj");
+      try {
+        write_obj(path, simulation_->positions(), scene_.network.F, scene_.network.E);
+        saved("exported " + path);
+      } catch (const std::exception& error) {
+        saved(std::string("export failed: ") + error.what());
+      }
+      break;
+    }
     case ViewerCommand::close_overlays:
       panel_.show_help = false;
       break;

@@ -533,3 +533,30 @@ TEST(Viewer, AFileDroppedOrTypedOpensAndABadOneLeavesTheSceneRunning) {
   EXPECT_NE(f.viewer.scene().notes.back().find("/nonexistent/scene.json"), std::string::npos)
       << f.viewer.scene().notes.back();
 }
+
+TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
+  wobble::testing::TemporaryFolder folder;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(folder.path());
+  {
+    ViewerFixture f;
+    f.frame();
+    f.press_key(GLFW_KEY_F11);
+    f.press_key(GLFW_KEY_F11);
+    EXPECT_TRUE(std::filesystem::exists("wobble-cloth-0001.obj"));
+    EXPECT_TRUE(std::filesystem::exists("wobble-cloth-0002.obj"));
+    EXPECT_NE(f.viewer.scene().notes.back().find("exported ./wobble-cloth-0002.obj"),
+              std::string::npos)
+        << f.viewer.scene().notes.back();
+    // The file holds the positions after the step, not the rest shape.
+    std::ifstream obj("wobble-cloth-0001.obj");
+    std::string line;
+    std::getline(obj, line);  // the header comment
+    double x = 0, y = 0, z = 0;
+    char v = 0;
+    obj >> v >> x >> y >> z;
+    EXPECT_EQ(v, 'v');
+    EXPECT_DOUBLE_EQ(y, f.viewer.simulation().positions()(0, 1));
+  }
+  std::filesystem::current_path(before);
+}
