@@ -37,6 +37,8 @@ ViewerCommand command_for_key(int key, bool control) {
       return ViewerCommand::toggle_split;
     case GLFW_KEY_F12:
       return ViewerCommand::screenshot;
+    case GLFW_KEY_TAB:
+      return ViewerCommand::toggle_panel;
     case GLFW_KEY_F11:
       return ViewerCommand::export_obj;
     case GLFW_KEY_ESCAPE:
@@ -77,6 +79,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"F", "frame the mesh"},
       {"G", "convergence and energy plots on / off"},
       {"2", "split view: the scene twice, the right side with its own settings"},
+      {"Tab", "the control panel shown / hidden"},
       {"F12", "screenshot: wobble-SCENE-0001.png, ... in the working folder"},
       {"F11", "export the current positions: wobble-SCENE-0001.obj, ..."},
       {"H", "this help on / off"},

@@ -22,6 +22,7 @@ enum class ViewerCommand {
   toggle_plots,  // the convergence and energy plots
   toggle_split,  // the split view: the scene twice, side by side
   screenshot,    // the window as a PNG in the working folder
+  toggle_panel,  // Tab: the control panel shown / hidden
   export_obj,    // the current positions as an OBJ in the working folder
   frame_mesh,
   close_overlays,  // Esc: the help overlay (ImGui closes its own menus and edits)

@@ -5,6 +5,8 @@
 #include <exception>
 #include <utility>
 
+#include <imgui.h>
+
 #include "environment_controls.h"
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
@@ -248,14 +250,19 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.real_time_factor = timings.real_time_factor;
   stats.steps_per_second = timings.steps_per_second;
   const StepTiming& step = simulation_->last_step_timing();
-  stats.step_ms = static_cast<float>(step.total_ms);
-  stats.local_ms = static_cast<float>(step.local_ms);
-  stats.global_ms = static_cast<float>(step.global_ms);
+  stats.step_ms = step_ms_.median();
+  stats.local_ms = local_ms_.median();
+  stats.global_ms = global_ms_.median();
   stats.forces_ms = static_cast<float>(step.forces_ms);
   stats.instruments_ms = static_cast<float>(step.instruments_ms);
   stats.contact_ms = static_cast<float>(step.contact_ms);
 
-  const PanelRequests requests = draw_control_panel(panel_, stats, scene_labels_, ui_scale);
+  // The panel's UI scale (for projectors) multiplies the screen's.
+  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
+  ui_scale *= panel_.ui_scale;
+  const PanelRequests requests = panel_.show_panel
+                                     ? draw_control_panel(panel_, stats, scene_labels_, ui_scale)
+                                     : PanelRequests();
   std::vector<std::pair<std::string, std::string>> help;
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
@@ -318,6 +325,10 @@ void Viewer::advance() {
   if (status == StepStatus::ok) {
     step_warning_.clear();
     record_instruments();
+    const StepTiming& timing = simulation_->last_step_timing();
+    step_ms_.add(static_cast<float>(timing.total_ms));
+    local_ms_.add(static_cast<float>(timing.local_ms));
+    global_ms_.add(static_cast<float>(timing.global_ms));
     advance_twin(simulation_->params().dt);
   } else {
     panel_.paused = true;

@@ -14,6 +14,7 @@
 #include "drag_script.h"
 #include "input_mapping.h"
 #include "io/png_image.h"
+#include "moving_median.h"
 #include "platform/input_event.h"
 #include "quantity_colors.h"
 #include "render/camera.h"
@@ -136,6 +137,7 @@ class Viewer {
 
   bool quit_requested() const { return quit_; }
   bool help_shown() const { return panel_.show_help; }
+  bool panel_shown() const { return panel_.show_panel; }
   // Whether the next frames change without input: playing, a step asked for, or the mouse
   // holding something or turning the camera. A paused viewer with none of these can wait for
   // input instead of redrawing the same picture.
@@ -205,6 +207,7 @@ class Viewer {
   bool framing_new_scene_ = true;  // frame with room for the motion to come
   bool quit_ = false;
   bool screenshot_requested_ = false;
+  MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;

@@ -163,6 +163,9 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::quit:
       quit_ = true;
       break;
+    case ViewerCommand::toggle_panel:
+      panel_.show_panel = !panel_.show_panel;
+      break;
     case ViewerCommand::screenshot:
       screenshot_requested_ = true;
       break;

@@ -142,6 +142,9 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   const char* const color_names[] = {"material", "strain", "speed"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
 
+  ImGui::SliderFloat("UI scale", &settings.ui_scale, PanelSettings::min_ui_scale,
+                     PanelSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+
   section("instruments");
   ImGui::Checkbox("convergence", &settings.show_convergence);
   ImGui::SameLine();

@@ -26,6 +26,8 @@ struct PanelSettings {
   int scene = 0;     // index into the scene names
   bool show_help = false;
   char open_path[512] = "";       // the "open" field's text
+  bool show_panel = true;         // Tab hides it
+  float ui_scale = 1.0f;          // fonts and the panel, times the screen's scale (projectors)
   bool show_convergence = false;  // the last step's convergence plot
   bool show_energy = false;       // the energy-over-time plot
   // The split view and its right side's own settings.
@@ -38,6 +40,7 @@ struct PanelSettings {
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
   static constexpr int min_iterations = 1, max_iterations = 100;
   static constexpr float max_gravity = 30.0f;
+  static constexpr float min_ui_scale = 0.75f, max_ui_scale = 3.0f;
   static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
 };
 

@@ -45,7 +45,8 @@ TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
       {GLFW_KEY_SPACE, "Space"}, {GLFW_KEY_S, "S"}, {GLFW_KEY_R, "R"},     {GLFW_KEY_W, "W"},
       {GLFW_KEY_P, "P"},         {GLFW_KEY_L, "L"}, {GLFW_KEY_H, "H"},     {GLFW_KEY_F, "F"},
       {GLFW_KEY_ESCAPE, "Esc"},  {GLFW_KEY_E, "E"}, {GLFW_KEY_C, "C"},     {GLFW_KEY_V, "V"},
-      {GLFW_KEY_G, "G"},         {GLFW_KEY_2, "2"}, {GLFW_KEY_F12, "F12"}, {GLFW_KEY_F11, "F11"}};
+      {GLFW_KEY_G, "G"},         {GLFW_KEY_2, "2"}, {GLFW_KEY_F12, "F12"}, {GLFW_KEY_F11, "F11"},
+      {GLFW_KEY_TAB, "Tab"}};
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (wobble::command_for_key(key) == ViewerCommand::none) continue;
     ASSERT_TRUE(names.count(key)) << "key " << key << " has a command but no name here";

@@ -560,3 +560,12 @@ TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
   }
   std::filesystem::current_path(before);
 }
+
+TEST(Viewer, TabHidesThePanel) {
+  ViewerFixture f;
+  EXPECT_TRUE(f.viewer.panel_shown());
+  f.press_key(GLFW_KEY_TAB);
+  EXPECT_FALSE(f.viewer.panel_shown());
+  f.press_key(GLFW_KEY_TAB);
+  EXPECT_TRUE(f.viewer.panel_shown());
+}
