@@ -125,10 +125,14 @@ void Viewer::load(Scene scene) {
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
   if (!student_server_.empty()) {
     scene.params = seed_method(scene.params);
-    scene.notes.push_back(
+    const std::string note =
         "student mode: Wobble's side (left) takes the seed's step, 50 plain "
         "iterations from the current positions with gravity and the pins only, "
-        "so that both sides compute the same step; pins cannot be dragged");
+        "so that both sides compute the same step; pins cannot be dragged";
+    // Restore defaults reloads a scene that already says so.
+    if (std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end()) {
+      scene.notes.push_back(note);
+    }
   }
   auto simulation =
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
