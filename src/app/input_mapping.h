@@ -21,7 +21,8 @@ enum class ViewerCommand {
   toggle_help,
   toggle_plots,  // the convergence and energy plots
   toggle_split,  // the split view: the scene twice, side by side
-  frame_mesh,
+  frame_mesh,    // frame the shape and the room it moves in, beside the panel
+  default_view,  // back to the view the scene opened with
   quit,
 };
 

@@ -63,12 +63,21 @@ struct PanelStats {
   std::string warning;             // why the simulation paused by itself, or empty
 };
 
-// Buttons pressed this frame.
+// Where the panel lies, in ImGui's display units (the window's, from its top-left corner), so
+// that the viewer can frame the shape beside it.
+struct PanelPlace {
+  bool shown = false;  // drawn and not collapsed to its title bar
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+};
+
+// Buttons pressed this frame, and where the panel was drawn.
 struct PanelRequests {
   bool step_once = false;
   bool reset = false;
   bool frame_mesh = false;
+  bool default_view = false;   // the scene's opening view
   bool scene_changed = false;  // settings.scene now names another scene
+  PanelPlace place;
 };
 
 // The "Wobble" panel: scene picker, play controls, simulation and environment (damping,
