@@ -18,7 +18,10 @@ void main() {
   // towards the eye along its own ray (so it stays where it was on screen) by its diameter as a
   // world length, it stays whole on a surface turned up to 63 degrees from facing the eye, yet a
   // pin on the far side of a shape, a shape's thickness behind its front, stays hidden. A pull
-  // by a fixed share of the depth range instead let pins tens of centimetres behind show through.
+  // by a fixed share of the depth range instead let pins tens of centimetres behind show through,
+  // half hidden at the shape's silhouette as black specks. A pull growing with the surface's tilt
+  // (from the vertex normal) kept edge-on pins whole, but in small images, where a disc is
+  // centimetres wide, it let the second row of a jelly's pins show through again.
   vec3 to_eye = eye - position;
   float eye_distance = max(length(to_eye), 1e-6);
   float pull = min(gl_PointSize * metres_per_pixel * eye_distance, 0.5 * eye_distance);

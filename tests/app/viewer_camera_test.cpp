@@ -15,6 +15,9 @@ namespace {
 using wobble::InputEvent;
 
 const Eigen::Vector2f window(1280.0f, 720.0f);
+// The panel at ui_scale 2, a high-DPI laptop's, is 660 units wide and 20 in: its right edge.
+constexpr float ui_scale = 2.0f;
+constexpr float panel_right = 680.0f;
 
 // An ImGui context with no backend: enough for build_ui to lay the panel out.
 class HeadlessImGui {
@@ -41,7 +44,7 @@ struct CameraFixture {
     if (panel) {
       ImGui::NewFrame();
       if (collapsed) ImGui::SetNextWindowCollapsed(true);
-      viewer.build_ui(wobble::PanelStats(), 1.0f);
+      viewer.build_ui(wobble::PanelStats(), ui_scale);
       ImGui::EndFrame();
     }
     viewer.advance();
@@ -86,9 +89,6 @@ struct CameraFixture {
   }
   wobble::Viewer viewer;
 };
-
-// Where the panel's right edge is at ui_scale 1: 10 px in, 330 px wide.
-constexpr float panel_right = 340.0f;
 
 TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
   HeadlessImGui imgui;
