@@ -124,6 +124,18 @@ TEST(ViewerCamera, ACollapsedPanelCoversNothing) {
   EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
 }
 
+TEST(ViewerCamera, TheSplitViewCentresTheShapeInEachHalf) {
+  HeadlessImGui imgui;
+  CameraFixture f;
+  f.frame(/*panel=*/true);
+  ASSERT_GT(f.viewer.camera().lens_shift.x(), 0.1f) << "framed beside the panel";
+  f.press_key(GLFW_KEY_2);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+  f.press_key(GLFW_KEY_F);
+  f.frame(/*panel=*/true);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero()) << "F frames each half whole";
+}
+
 TEST(ViewerCamera, FRightAfterResetKeepsTheFallingClothInView) {
   CameraFixture f;
   for (int i = 0; i < 90; ++i)
