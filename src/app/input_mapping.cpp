@@ -31,6 +31,8 @@ ViewerCommand command_for_key(int key, bool control) {
       return ViewerCommand::toggle_help;
     case GLFW_KEY_F:
       return ViewerCommand::frame_mesh;
+    case GLFW_KEY_O:
+      return ViewerCommand::default_view;
     case GLFW_KEY_G:
       return ViewerCommand::toggle_plots;
     case GLFW_KEY_2:
@@ -76,7 +78,8 @@ const std::vector<Binding>& viewer_bindings() {
       {"P", "vertices as points on / off"},
       {"L", "springs as lines on / off"},
       {"V", "colour by material / strain / speed"},
-      {"F", "frame the mesh"},
+      {"F", "frame the mesh and the room it moves in"},
+      {"O", "the scene's opening view"},
       {"G", "convergence and energy plots on / off"},
       {"2", "split view: the scene twice, the right side with its own settings"},
       {"Tab", "the control panel shown / hidden"},
@@ -91,7 +94,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"Alt+left-drag a collider", "move the sphere, box or capsule"},
       {"Left-drag elsewhere", "orbit the camera"},
       {"Right/middle or Shift+left-drag", "pan"},
-      {"Wheel", "zoom"},
+      {"Wheel", "zoom (stops short of the shape and far from it)"},
   };
   return bindings;
 }

@@ -32,15 +32,6 @@ SurfaceColors colors_for(const Scene& scene) {
   return colors;
 }
 
-void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Vector3f& upper) {
-  lower = upper = Eigen::Vector3f::Zero();
-  for (int i = 0; i < count; ++i) {
-    const Eigen::Map<const Eigen::Vector3f> p(positions + 3 * i);
-    lower = i == 0 ? Eigen::Vector3f(p) : Eigen::Vector3f(lower.cwiseMin(p));
-    upper = i == 0 ? Eigen::Vector3f(p) : Eigen::Vector3f(upper.cwiseMax(p));
-  }
-}
-
 }  // namespace
 
 Viewer open_viewer(const CommandLine& command) {
@@ -194,23 +185,8 @@ void Viewer::load(Scene scene) {
   pinned_flags_.resize(n);
   update_vertex_arrays();
   place_ground();
-  frame_on_next_render_ = true;
-  framing_new_scene_ = true;
+  open_view();
   const SceneLook& look = scene_.look;
-  if (look.camera_position && look.camera_target) {
-    // The scene's own view replaces the framing; --camera-yaw/--camera-pitch still turn it.
-    const Eigen::Vector3f eye = look.camera_position->cast<float>();
-    const Eigen::Vector3f target = look.camera_target->cast<float>();
-    const Eigen::Vector3f back = eye - target;
-    camera_.target = target;
-    camera_.distance = std::max(back.norm(), OrbitCamera::min_distance);
-    camera_.yaw = std::atan2(back.x(), back.z());
-    camera_.pitch = std::clamp(std::asin(std::clamp(back.y() / camera_.distance, -1.0f, 1.0f)),
-                               -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
-    if (settings_yaw_) camera_.yaw = *settings_yaw_;
-    if (settings_pitch_) camera_.pitch = *settings_pitch_;
-    frame_on_next_render_ = false;
-  }
   uv_.clear();
   if (look.uv.rows() == n && look.uv.cols() == 2) {
     uv_.resize(2 * n);
@@ -267,6 +243,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   const PanelRequests requests = panel_.show_panel
                                      ? draw_control_panel(panel_, stats, scene_labels_, ui_scale)
                                      : PanelRequests();
+  // A hidden panel covers nothing: F then frames in the whole window.
+  panel_place_ = requests.place;
   std::vector<std::pair<std::string, std::string>> help;
   for (const Binding& binding : viewer_bindings())
     help.emplace_back(binding.input, binding.action);
@@ -298,6 +276,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   if (requests.step_once) apply(ViewerCommand::step_once);
   if (requests.reset) apply(ViewerCommand::reset);
   if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
+  if (requests.default_view) apply(ViewerCommand::default_view);
 }
 
 void Viewer::apply_panel_settings() {
@@ -387,21 +366,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   update_vertex_arrays();
   const int n = static_cast<int>(positions_.size() / 3);
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
-  if (frame_on_next_render_) {
-    Eigen::Vector3f lower, upper;
-    bounds(positions_.data(), n, lower, upper);
-    if (framing_new_scene_) {
-      // A fresh scene is framed with room to move: down to the ground, below where hanging
-      // cloth can fall, and a quarter of its size to every side, where it swings.
-      const float room = 0.25f * (upper - lower).maxCoeff();
-      lower -= Eigen::Vector3f(room, 0.0f, room);
-      upper += Eigen::Vector3f(room, 0.0f, room);
-      lower.y() = std::min(lower.y(), ground_.height);
-    }
-    frame_box(camera_, lower, upper, aspect);
-    frame_on_next_render_ = false;
-    framing_new_scene_ = false;
-  }
+  if (frame_on_next_render_) frame_camera(aspect);
   view_ = view_matrix(camera_);
   projection_ = projection_matrix(camera_, aspect);
 

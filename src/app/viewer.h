@@ -150,6 +150,8 @@ class Viewer {
   const Simulation& simulation() const { return *simulation_; }
   const Scene& scene() const { return scene_; }
   const OrbitCamera& camera() const { return camera_; }
+  // How far the mouse may take the camera, for this scene's shape and ground.
+  const CameraLimits& camera_limits() const { return camera_limits_; }
   // Panel figures that do not come from the wall clock.
   PanelStats stats() const;
   // The layers render() draws, as the panel's checkboxes show them.
@@ -185,6 +187,11 @@ class Viewer {
   void restart_student();
   void draw_student_legend(float ui_scale);
   void place_ground();
+  // viewer_camera.cpp: the scene's opening view (its own camera, or a framing at the next
+  // render), the view O restores, and framing with room to move beside the panel.
+  void open_view();
+  void restore_opening_view();
+  void frame_camera(float aspect);
   void update_collider_mesh();
   void update_vertex_arrays();
   // viewer_colors.cpp
@@ -204,7 +211,11 @@ class Viewer {
   OrbitCamera camera_;
   std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line
   bool frame_on_next_render_ = true;
-  bool framing_new_scene_ = true;  // frame with room for the motion to come
+  // The view the scene opened with: its own camera, or the angles it was framed from (radians).
+  std::optional<OrbitCamera> scene_camera_;
+  float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
+  CameraLimits camera_limits_;
+  PanelPlace panel_place_;  // where build_ui last drew the panel; not shown without a panel
   bool quit_ = false;
   bool screenshot_requested_ = false;
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times

@@ -29,6 +29,9 @@ void Viewer::start_split(const CompareSettings& settings) {
   sync_twin();
   show_twin_in_panel();
   panel_.split = true;
+  // A shape framed beside the panel would sit off centre in both halves, the right one too,
+  // which the panel does not cover: each half shows it in its middle.
+  camera_.lens_shift.setZero();
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
 }

@@ -93,13 +93,17 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         raw_cursor_ = raw;
         if (drag_.active()) drag_.move(*simulation_, ray_at(at));
         if (collider_drag_.active()) collider_drag_.move(*simulation_, ray_at(at));
-        if (mode_ == Mode::orbit) orbit_camera(camera_, delta.x(), delta.y(), window_size_.y());
-        if (mode_ == Mode::pan) pan_camera(camera_, delta.x(), delta.y(), window_size_.y());
+        if (mode_ == Mode::orbit) {
+          orbit_camera(camera_, delta.x(), delta.y(), window_size_.y(), camera_limits_);
+        }
+        if (mode_ == Mode::pan) {
+          pan_camera(camera_, delta.x(), delta.y(), window_size_.y(), camera_limits_);
+        }
         cursor_ = at;
         break;
       }
       case InputEvent::Type::scroll:
-        if (!ui_wants_mouse) zoom_camera(camera_, static_cast<float>(event.y));
+        if (!ui_wants_mouse) zoom_camera(camera_, static_cast<float>(event.y), camera_limits_);
         break;
     }
   }
@@ -159,6 +163,9 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::frame_mesh:
       frame_on_next_render_ = true;
+      break;
+    case ViewerCommand::default_view:
+      restore_opening_view();
       break;
     case ViewerCommand::quit:
       quit_ = true;

@@ -2,6 +2,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "shader_program.h"
@@ -324,6 +325,10 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     glUniformMatrix4fv(r.point.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform1i(r.point.uniform("show_free_vertices"), layers.points ? 1 : 0);
     glUniform1f(r.point.uniform("pixel_ratio"), pixel_ratio);
+    glUniform3fv(r.point.uniform("eye"), 1, eye.data());
+    // projection(1, 1) = 1 / tan(fov / 2): the viewport's height spans 2 tan(fov / 2) at 1 m.
+    glUniform1f(r.point.uniform("metres_per_pixel"),
+                2.0f / (projection(1, 1) * static_cast<float>(std::max(height, 1))));
     glEnable(GL_PROGRAM_POINT_SIZE);
     glBindVertexArray(r.point_array);
     glDrawArrays(GL_POINTS, 0, r.vertex_count);

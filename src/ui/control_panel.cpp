@@ -46,7 +46,14 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   PanelRequests requests;
   ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330.0f * ui_scale, 0.0f), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Wobble");
+  // Begin returns false when the panel is collapsed to its title bar, which covers next to
+  // nothing: the view is then framed as if there were no panel.
+  requests.place.shown = ImGui::Begin("Wobble");
+  const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  requests.place.x = position.x;
+  requests.place.y = position.y;
+  requests.place.width = size.x;
+  requests.place.height = size.y;
   // Widgets take what the labels leave.
   ImGui::PushItemWidth(-120.0f * ui_scale);
 
@@ -80,6 +87,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   requests.reset = ImGui::Button("Reset");
   ImGui::SameLine();
   requests.frame_mesh = ImGui::Button("Frame");
+  ImGui::SameLine();
+  requests.default_view = ImGui::Button("View");
   ImGui::SameLine();
   if (ImGui::Button("Help")) settings.show_help = !settings.show_help;
   if (!stats.warning.empty()) {

@@ -68,14 +68,23 @@ struct PanelStats {
   std::string warning;             // why the simulation paused by itself, or empty
 };
 
-// Buttons pressed this frame.
+// Where the panel lies, in ImGui's display units (the window's, from its top-left corner), so
+// that the viewer can frame the shape beside it.
+struct PanelPlace {
+  bool shown = false;  // drawn and not collapsed to its title bar
+  float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
+};
+
+// Buttons pressed this frame, and where the panel was drawn.
 struct PanelRequests {
   bool step_once = false;
   bool reset = false;
   bool frame_mesh = false;
+  bool default_view = false;      // the scene's opening view
   bool scene_changed = false;     // the picker chose a scene (the current one again: reopen it)
   bool restore_defaults = false;  // the scene as it opened, every setting included
   std::string open_path;          // a scene or mesh file to open (the "open" field), or empty
+  PanelPlace place;
 };
 
 // The "Wobble" panel: scene picker, play controls, simulation and environment (damping,

@@ -116,7 +116,7 @@ TEST(HeadlessRender, AStepThatFailsExitsWith1KeepingTheGoodFramesOnly) {
             (std::vector<std::string>{"frame_00001.png", "frame_00002.png", "frame_00003.png"}));
 }
 
-TEST(HeadlessRender, UiAddsThePanelAndOnlyThePanel) {
+TEST(HeadlessRender, UiAddsThePanelAndFramesTheClothBesideIt) {
   TemporaryFolder folder;
   for (const std::string flag : {"", "--ui"}) {
     const auto run = run_wobble("cloth --headless --frames 5 --width 640 --height 400 " + flag +
@@ -126,18 +126,28 @@ TEST(HeadlessRender, UiAddsThePanelAndOnlyThePanel) {
   }
   const wobble::RgbaImage plain = wobble::read_png(folder.file("ui.png"));
   const wobble::RgbaImage with_ui = wobble::read_png(folder.file("ui--ui.png"));
-  // The panel sits in the top-left corner; the right half of the picture is untouched.
-  long inside = 0, outside = 0;
+  // The panel sits in the top-left corner, 10 px in and 330 px wide.
+  constexpr int panel_right = 340;
+  long panel = 0;
   for (int y = 0; y < plain.height; ++y) {
-    for (int x = 0; x < plain.width; ++x) {
-      const bool differs =
-          std::equal(plain.pixel(x, y), plain.pixel(x, y) + 3, with_ui.pixel(x, y)) == false;
-      if (!differs) continue;
-      (x < 360 ? inside : outside) += 1;
+    for (int x = 0; x < panel_right; ++x) {
+      panel += std::equal(plain.pixel(x, y), plain.pixel(x, y) + 3, with_ui.pixel(x, y)) ? 0 : 1;
     }
   }
-  EXPECT_GT(inside, 20000) << "the panel is missing";
-  EXPECT_EQ(outside, 0);
+  EXPECT_GT(panel, 20000) << "the panel is missing";
+  // Without the panel the cloth is framed in the middle, reaching left of where the panel's edge
+  // would be; with it, the whole cloth is framed beside the panel.
+  const auto cloth_pixels = [](const wobble::RgbaImage& image, int x0, int x1) {
+    long count = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = x0; x < x1; ++x)
+        count += wobble::testing::is_cloth_front(image.pixel(x, y)) ? 1 : 0;
+    }
+    return count;
+  };
+  EXPECT_GT(cloth_pixels(plain, 0, panel_right), 1000);
+  EXPECT_EQ(cloth_pixels(with_ui, 0, panel_right + 5), 0);
+  EXPECT_GT(cloth_pixels(with_ui, panel_right + 5, with_ui.width), 2000);
 }
 
 // Two runs: without layer options, and asking for the springs and points.

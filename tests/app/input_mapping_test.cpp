@@ -23,6 +23,7 @@ TEST(InputMapping, KeysTheIssueAsksFor) {
       {GLFW_KEY_P, ViewerCommand::toggle_points},
       {GLFW_KEY_H, ViewerCommand::toggle_help},
       {GLFW_KEY_F, ViewerCommand::frame_mesh},
+      {GLFW_KEY_O, ViewerCommand::default_view},
       {GLFW_KEY_ESCAPE, ViewerCommand::close_overlays},
       {GLFW_KEY_L, ViewerCommand::toggle_springs},
       {GLFW_KEY_V, ViewerCommand::cycle_color_by},
@@ -46,7 +47,7 @@ TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
       {GLFW_KEY_P, "P"},         {GLFW_KEY_L, "L"}, {GLFW_KEY_H, "H"},     {GLFW_KEY_F, "F"},
       {GLFW_KEY_ESCAPE, "Esc"},  {GLFW_KEY_E, "E"}, {GLFW_KEY_C, "C"},     {GLFW_KEY_V, "V"},
       {GLFW_KEY_G, "G"},         {GLFW_KEY_2, "2"}, {GLFW_KEY_F12, "F12"}, {GLFW_KEY_F11, "F11"},
-      {GLFW_KEY_TAB, "Tab"}};
+      {GLFW_KEY_TAB, "Tab"},     {GLFW_KEY_O, "O"}};
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (wobble::command_for_key(key) == ViewerCommand::none) continue;
     ASSERT_TRUE(names.count(key)) << "key " << key << " has a command but no name here";

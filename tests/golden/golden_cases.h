@@ -44,7 +44,7 @@ inline const std::vector<GoldenCase>& golden_cases() {
       {"cloth_pins_from_behind",
        "cloth --frames 30 --camera-yaw 200 --camera-pitch 20 --width 320 --height 240"},
       {"jelly_points", "jelly --frames 20 --points --camera-pitch 50 --width 320 --height 240"},
-      // The panel needs room: 640 × 400.
+      // The panel needs room: 640 × 400. The cloth is framed in the part beside it.
       {"cloth_ui", "cloth --frames 30 --ui --width 640 --height 400"},
       // A course-format scene with a PNG texture mapped through the OBJ's vt.
       {"course_banner_texture", "@ASSETS@/course/banner.json --frames 20 --width 320 --height 240"},

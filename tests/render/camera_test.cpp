@@ -135,4 +135,91 @@ TEST(Camera, FrameBoxShowsEveryCornerOfTheBox) {
   }
 }
 
+TEST(Camera, FrameBoxIntoARegionCentresTheBoxThereAndFitsIt) {
+  // The right 60% of a 16:9 view, as beside a panel on the left.
+  const wobble::ViewportRegion region{0.4f, 0.0f, 1.0f, 1.0f};
+  const float height = 450, width = 800;
+  OrbitCamera camera = some_camera();
+  const Eigen::Vector3f lower(-1, 0, -0.5f), upper(1, 1.5f, 0.5f);
+  wobble::frame_box(camera, lower, upper, width / height, region);
+  const Eigen::Vector2f centre = to_window(camera, 0.5f * (lower + upper), width, height);
+  EXPECT_NEAR(centre.x(), 0.7f * width, 1e-2f);
+  EXPECT_NEAR(centre.y(), 0.5f * height, 1e-2f);
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3f p((corner & 1) ? upper.x() : lower.x(),
+                            (corner & 2) ? upper.y() : lower.y(),
+                            (corner & 4) ? upper.z() : lower.z());
+    const Eigen::Vector2f at = to_window(camera, p, width, height);
+    EXPECT_GE(at.x(), region.left * width) << "corner " << corner;
+    EXPECT_LE(at.x(), width) << "corner " << corner;
+    EXPECT_GE(at.y(), 0.0f) << "corner " << corner;
+    EXPECT_LE(at.y(), height) << "corner " << corner;
+  }
+  // Framing the whole view again puts the target back in the middle.
+  wobble::frame_box(camera, lower, upper, width / height);
+  EXPECT_TRUE(camera.lens_shift.isZero());
+  EXPECT_NEAR(to_window(camera, camera.target, width, height).x(), 0.5f * width, 1e-2f);
+}
+
+TEST(Camera, OrbitStopsWithTheEyeAboveTheGround) {
+  OrbitCamera camera = some_camera();  // target 1 m up, 2.5 m away
+  const wobble::CameraLimits limits = wobble::camera_limits_for(1.0f, 0.0f);
+  EXPECT_FLOAT_EQ(limits.lowest_eye, 0.05f);
+  // Dragging far up turns the camera to look from below: it stops with the eye on the floor.
+  wobble::orbit_camera(camera, 0.0f, -20000.0f, 400.0f, limits);
+  EXPECT_NEAR(wobble::camera_eye(camera).y(), 0.05f, 1e-4f);
+  EXPECT_LT(camera.pitch, 0.0f);  // a little below the target, which is above the ground
+  // Turning about the vertical and upwards still works.
+  const float yaw = camera.yaw;
+  wobble::orbit_camera(camera, 50.0f, 100.0f, 400.0f, limits);
+  EXPECT_NE(camera.yaw, yaw);
+  EXPECT_GT(wobble::camera_eye(camera).y(), 0.3f);
+}
+
+TEST(Camera, AViewAlreadyBelowTheGroundMayRiseButNotSink) {
+  OrbitCamera camera = some_camera();
+  camera.pitch = -1.0f;  // eye at 1 − 2.5 sin 1 = −1.1 m, as --camera-pitch could ask
+  const wobble::CameraLimits limits = wobble::camera_limits_for(1.0f, 0.0f);
+  wobble::orbit_camera(camera, 30.0f, 0.0f, 400.0f, limits);
+  EXPECT_FLOAT_EQ(camera.pitch, -1.0f);  // no jump when only turning
+  wobble::orbit_camera(camera, 0.0f, -40.0f, 400.0f, limits);
+  EXPECT_NEAR(camera.pitch, -1.0f, 1e-5f);  // no further down
+  wobble::orbit_camera(camera, 0.0f, 40.0f, 400.0f, limits);
+  EXPECT_NEAR(camera.pitch, -1.0f + pi / 10, 1e-5f);  // up as far as dragged
+}
+
+TEST(Camera, ZoomStopsShortOfTheShapeAndBeforeItIsADot) {
+  OrbitCamera camera = some_camera();
+  camera.pitch = 0.4f;
+  const wobble::CameraLimits limits = wobble::camera_limits_for(1.0f, 0.0f);
+  wobble::zoom_camera(camera, 100.0f, limits);
+  EXPECT_FLOAT_EQ(camera.distance, 0.6f);
+  wobble::zoom_camera(camera, -100.0f, limits);
+  EXPECT_FLOAT_EQ(camera.distance, 20.0f);
+  // A camera framed beyond the limit may come closer, but not go further.
+  camera.distance = 30.0f;
+  wobble::zoom_camera(camera, -1.0f, limits);
+  EXPECT_FLOAT_EQ(camera.distance, 30.0f);
+  wobble::zoom_camera(camera, 1.0f, limits);
+  EXPECT_NEAR(camera.distance, 30.0f / 1.15f, 1e-4f);
+}
+
+TEST(Camera, BackingAwayWhileLookingUpTiltsToStayAboveTheGround) {
+  OrbitCamera camera = some_camera();
+  camera.pitch = -0.3f;  // eye at 1 − 2.5 sin 0.3 = 0.26 m
+  const wobble::CameraLimits limits = wobble::camera_limits_for(1.0f, 0.0f);
+  ASSERT_GT(wobble::camera_eye(camera).y(), limits.lowest_eye);
+  wobble::zoom_camera(camera, -10.0f, limits);  // 4× further: the eye would be at −1.9 m
+  EXPECT_GE(wobble::camera_eye(camera).y(), limits.lowest_eye - 1e-4f);
+  EXPECT_NEAR(camera.distance, 2.5f * std::pow(1.15f, 10.0f), 1e-3f);
+}
+
+TEST(Camera, PanningDownStopsWithTheEyeOnTheFloor) {
+  OrbitCamera camera = some_camera();
+  const wobble::CameraLimits limits = wobble::camera_limits_for(1.0f, 0.0f);
+  wobble::pan_camera(camera, 0.0f, -5000.0f, 400.0f, limits);  // drag up: the target goes down
+  EXPECT_NEAR(wobble::camera_eye(camera).y(), limits.lowest_eye, 1e-4f);
+  EXPECT_FLOAT_EQ(camera.pitch, some_camera().pitch);  // lifted, not turned
+}
+
 }  // namespace
