@@ -19,13 +19,13 @@ enum class ViewerCommand {
   toggle_springs,
   cycle_color_by,  // material → strain → speed → material
   toggle_help,
-  toggle_plots,  // the convergence and energy plots
-  toggle_split,  // the split view: the scene twice, side by side
-  screenshot,    // the window as a PNG in the working folder
-  toggle_panel,  // Tab: the control panel shown / hidden
-  export_obj,    // the current positions as an OBJ in the working folder
-  frame_mesh,    // frame the shape and the room it moves in, beside the panel
-  default_view,  // back to the view the scene opened with
+  toggle_plots,    // the convergence and energy plots
+  toggle_split,    // the split view: the scene twice, side by side
+  screenshot,      // the window as a PNG in the working folder
+  toggle_panel,    // Tab: the control panel shown / hidden
+  export_obj,      // the current positions as an OBJ in the working folder
+  frame_mesh,      // frame the shape and the room it moves in, beside the panel
+  default_view,    // back to the view the scene opened with
   close_overlays,  // Esc: the help overlay (ImGui closes its own menus and edits)
   quit,            // Ctrl+Q (and the window's close button)
 };
