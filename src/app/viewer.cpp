@@ -354,6 +354,14 @@ void Viewer::update_vertex_arrays() {
       positions_[3 * i + k] = static_cast<float>(p(i, k));
     pinned_flags_[i] = simulation_->is_pinned(i) ? 1 : 0;
   }
+  // Paused, a drag moves only the pin's target: the held vertex is drawn there, its triangles
+  // stretching towards it, so the user sees where the shape will be pulled (Step takes one step
+  // towards it). The simulation's positions are untouched.
+  if (panel_.paused && drag_.active()) {
+    const Eigen::Vector3d target = simulation_->pin_target(drag_.vertex());
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * drag_.vertex() + k] = static_cast<float>(target(k));
+  }
   compute_vertex_normals(positions_.data(), n, triangles_.data(),
                          static_cast<int>(triangles_.size() / 3), normals_.data());
 }

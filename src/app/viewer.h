@@ -138,6 +138,9 @@ class Viewer {
   bool quit_requested() const { return quit_; }
   bool help_shown() const { return panel_.show_help; }
   bool panel_shown() const { return panel_.show_panel; }
+  // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
+  // target).
+  const std::vector<float>& drawn_positions() const { return positions_; }
   // Whether the next frames change without input: playing, a step asked for, or the mouse
   // holding something or turning the camera. A paused viewer with none of these can wait for
   // input instead of redrawing the same picture.

@@ -569,3 +569,25 @@ TEST(Viewer, TabHidesThePanel) {
   f.press_key(GLFW_KEY_TAB);
   EXPECT_TRUE(f.viewer.panel_shown());
 }
+
+TEST(Viewer, APinDraggedWhilePausedIsDrawnAtItsTargetAndStepMovesIt) {
+  ViewerFixture f;
+  f.press_key(GLFW_KEY_SPACE);  // pause
+  const int pin = f.viewer.simulation().pinned_vertices().front();
+  const Eigen::Vector3d before = f.viewer.simulation().positions().row(pin).transpose();
+  const Eigen::Vector2f at = f.on_screen(pin);
+  f.send(InputEvent::Type::cursor_move, at);
+  f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT);
+  f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(0.0f, 80.0f));
+  f.viewer.render(1280, 720, window, 1.0f);
+  const Eigen::Vector3d target = f.viewer.simulation().pin_target(pin);
+  ASSERT_GT((target - before).norm(), 0.05) << "the drag moved the target";
+  EXPECT_EQ(f.viewer.simulation().positions().row(pin).transpose(), before) << "paused";
+  const std::vector<float>& drawn = f.viewer.drawn_positions();
+  EXPECT_NEAR(drawn[3 * pin + 1], target.y(), 1e-6) << "drawn at the target while paused";
+  f.press_key(GLFW_KEY_S);
+  f.frame();
+  EXPECT_LT((f.viewer.simulation().positions().row(pin).transpose() - target).norm(), 1e-6)
+      << "one step takes the pin to its target";
+  f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
+}
