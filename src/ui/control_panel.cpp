@@ -45,10 +45,15 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                                  const std::vector<std::string>& scene_names, float ui_scale) {
   PanelRequests requests;
   ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330.0f * ui_scale, 0.0f), ImGuiCond_FirstUseEver);
+  // As tall as its contents (a warning or the split view's rows add to it), never taller than
+  // the display, where it scrolls; a fixed width, since its widgets take the window's width.
+  const float width = 330.0f * ui_scale;
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(width, 0.0f),
+      ImVec2(width, std::max(ImGui::GetIO().DisplaySize.y - 20.0f * ui_scale, 100.0f * ui_scale)));
   // Begin returns false when the panel is collapsed to its title bar, which covers next to
   // nothing: the view is then framed as if there were no panel.
-  requests.place.shown = ImGui::Begin("Wobble");
+  requests.place.shown = ImGui::Begin("Wobble", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   requests.place.x = position.x;
   requests.place.y = position.y;
