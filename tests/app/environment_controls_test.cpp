@@ -53,8 +53,8 @@ TEST(EnvironmentControls, GravityKeepsTheScenesDirection) {
   const Eigen::Vector3d sideways(3.0, -4.0, 0.0);  // |g| = 5
   EXPECT_TRUE(wobble::gravity_with_magnitude(sideways, 10.0).isApprox(Eigen::Vector3d(6, -8, 0)));
   EXPECT_TRUE(wobble::gravity_with_magnitude(sideways, 5.0).isApprox(sideways));
-  EXPECT_TRUE(
-      wobble::gravity_with_magnitude(Eigen::Vector3d::Zero(), 2.0).isApprox(Eigen::Vector3d(0, -2, 0)));
+  EXPECT_TRUE(wobble::gravity_with_magnitude(Eigen::Vector3d::Zero(), 2.0)
+                  .isApprox(Eigen::Vector3d(0, -2, 0)));
 }
 
 }  // namespace

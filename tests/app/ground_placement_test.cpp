@@ -8,7 +8,8 @@ namespace {
 Eigen::MatrixXd chain(int n, bool vertical) {
   Eigen::MatrixXd V(n, 3);
   for (int i = 0; i < n; ++i)
-    V.row(i) = vertical ? Eigen::RowVector3d(0, 1.0 - 0.1 * i, 0) : Eigen::RowVector3d(0.1 * i, 1, 0);
+    V.row(i) =
+        vertical ? Eigen::RowVector3d(0, 1.0 - 0.1 * i, 0) : Eigen::RowVector3d(0.1 * i, 1, 0);
   return V;
 }
 Eigen::MatrixXi chain_springs(int n) {
@@ -47,9 +48,9 @@ TEST(GroundPlacement, PathsFollowTheSpringsNotStraightLines) {
   // A U: down 1 m, across 0.2 m, up 1 m, pinned at the top of the first arm. The top of the
   // second arm is 0.2 m from the pin in a straight line, but 2.2 m along the springs.
   Eigen::MatrixXd V(4, 3);
-  V << 0, 1, 0,  //
-      0, 0, 0,   //
-      0.2, 0, 0, //
+  V << 0, 1, 0,   //
+      0, 0, 0,    //
+      0.2, 0, 0,  //
       0.2, 1, 0;
   Eigen::MatrixXi E(3, 2);
   E << 0, 1, 1, 2, 2, 3;

@@ -336,8 +336,8 @@ TEST(CourseSceneFidelity, CourseWindMatchesTheProgramsFormula) {
       fext(i, 2) = std::sin(phi);
       fext(i, 1) += 1.0 + std::cos(0.3 + phi);
     }
-    fast_mass_springs_step_dense(V, E, c.k, b, course_dt, fext, r, M, A, C, llt, previous,
-                                 current, next);
+    fast_mass_springs_step_dense(V, E, c.k, b, course_dt, fext, r, M, A, C, llt, previous, current,
+                                 next);
     previous = current;
     current = next;
     simulation.step();

@@ -50,8 +50,8 @@ std::vector<Eigen::Vector3d> surface_samples(const Collider& c, double spacing) 
     for (int i = 0; i < n; ++i) {  // a Fibonacci sphere
       const double y = 1.0 - 2.0 * (i + 0.5) / n, ring = std::sqrt(1.0 - y * y);
       const double angle = i * 2.399963229728653;
-      points.push_back(center + radius * Eigen::Vector3d(ring * std::cos(angle), y,
-                                                          ring * std::sin(angle)));
+      points.push_back(center +
+                       radius * Eigen::Vector3d(ring * std::cos(angle), y, ring * std::sin(angle)));
     }
   };
   switch (c.type) {
@@ -132,12 +132,12 @@ TEST(Collider, SignedDistanceAndNormalMatchBruteForce) {
     int inside_count = 0;
     for (int trial = 0; trial < 400; ++trial) {
       // Every other point near the collider, so that some are inside even a thin one.
-      const Eigen::Vector3d near = wobble::collider_anchor(c) +
-                                   0.4 * Eigen::Vector3d(coordinate(random), coordinate(random),
-                                                         coordinate(random));
-      const Eigen::Vector3d p = trial % 2 ? near
-                                          : Eigen::Vector3d(coordinate(random), coordinate(random),
-                                                            coordinate(random));
+      const Eigen::Vector3d near =
+          wobble::collider_anchor(c) +
+          0.4 * Eigen::Vector3d(coordinate(random), coordinate(random), coordinate(random));
+      const Eigen::Vector3d p =
+          trial % 2 ? near
+                    : Eigen::Vector3d(coordinate(random), coordinate(random), coordinate(random));
       const wobble::ColliderSurface surface = wobble::collider_surface(c, p);
       double nearest = 1e30;
       for (const Eigen::Vector3d& q : samples)

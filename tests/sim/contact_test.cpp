@@ -126,7 +126,8 @@ TEST(Contact, WithoutCollidersTheClothFallsThrough) {
   double deepest = 0.0;
   for (Eigen::Index i = 0; i < simulation.positions().rows(); ++i) {
     deepest = std::max(
-        deepest, -wobble::collider_surface(ball, simulation.positions().row(i).transpose()).distance);
+        deepest,
+        -wobble::collider_surface(ball, simulation.positions().row(i).transpose()).distance);
   }
   EXPECT_GT(deepest, 0.1);
 }
@@ -188,8 +189,7 @@ TEST(Contact, AJellyDroppedOnTheGroundComesToRest) {
   params.damping = 1.0;
   params.iterations = 50;
   Simulation simulation(jelly, {}, params);
-  const Eigen::Vector3d rest_extent =
-      jelly.V.colwise().maxCoeff() - jelly.V.colwise().minCoeff();
+  const Eigen::Vector3d rest_extent = jelly.V.colwise().maxCoeff() - jelly.V.colwise().minCoeff();
   run_checking_contact(simulation, 240);  // 4 s
   const double top_speed = simulation.velocities().rowwise().norm().maxCoeff();
   EXPECT_LT(top_speed, 0.05);

@@ -37,32 +37,32 @@ TEST(SimulationPhysics, MeshAtRestWithoutGravityStaysAtRest) {
 TEST(SimulationPhysics, EveryIterationDoesNotIncreaseTheStepEnergy) {
   // Damping changes the inertia term (and Q): the guarantee must hold with it too.
   for (const double damping : {0.0, 3.0})
-  for (const auto& mesh : wobble::testing::all_test_meshes()) {
-    SCOPED_TRACE(mesh.name + " damping " + std::to_string(damping));
-    wobble::SimulationParams params = test_params();
-    params.damping = damping;
-    Simulation simulation(mesh.network, mesh.pins, params);
-    for (int step = 0; step < 8; ++step)
-      simulation.step();  // get moving first
-    if (!mesh.pins.empty()) {
-      // A moved target puts the pins far from equilibrium: a hard step for the method.
-      simulation.set_pin_target(mesh.pins[0], mesh.network.V.row(mesh.pins[0]).transpose() +
-                                                  Eigen::Vector3d(0.05, 0.02, 0.0));
-    }
+    for (const auto& mesh : wobble::testing::all_test_meshes()) {
+      SCOPED_TRACE(mesh.name + " damping " + std::to_string(damping));
+      wobble::SimulationParams params = test_params();
+      params.damping = damping;
+      Simulation simulation(mesh.network, mesh.pins, params);
+      for (int step = 0; step < 8; ++step)
+        simulation.step();  // get moving first
+      if (!mesh.pins.empty()) {
+        // A moved target puts the pins far from equilibrium: a hard step for the method.
+        simulation.set_pin_target(mesh.pins[0], mesh.network.V.row(mesh.pins[0]).transpose() +
+                                                    Eigen::Vector3d(0.05, 0.02, 0.0));
+      }
 
-    std::vector<double> energies = {simulation.step_energy(simulation.positions())};
-    simulation.set_iteration_observer(
-        [&](int, const Eigen::MatrixXd& p) { energies.push_back(simulation.step_energy(p)); });
-    simulation.step();
-    ASSERT_EQ(energies.size(), 51u);
-    for (std::size_t i = 1; i < energies.size(); ++i) {
-      // Local step and global step each minimize a bound on the energy exactly, so it can only
-      // go down; 1e-12 relative allows for the rounding of evaluating it.
-      EXPECT_LE(energies[i], energies[i - 1] + 1e-12 * std::max(1.0, std::abs(energies[i - 1])))
-          << "iteration " << i - 1;
+      std::vector<double> energies = {simulation.step_energy(simulation.positions())};
+      simulation.set_iteration_observer(
+          [&](int, const Eigen::MatrixXd& p) { energies.push_back(simulation.step_energy(p)); });
+      simulation.step();
+      ASSERT_EQ(energies.size(), 51u);
+      for (std::size_t i = 1; i < energies.size(); ++i) {
+        // Local step and global step each minimize a bound on the energy exactly, so it can only
+        // go down; 1e-12 relative allows for the rounding of evaluating it.
+        EXPECT_LE(energies[i], energies[i - 1] + 1e-12 * std::max(1.0, std::abs(energies[i - 1])))
+            << "iteration " << i - 1;
+      }
+      EXPECT_LT(energies.back(), energies.front() - 1e-9) << "the step must actually descend";
     }
-    EXPECT_LT(energies.back(), energies.front() - 1e-9) << "the step must actually descend";
-  }
 }
 
 // The step energy, written out independently of the Simulation with its gradient and Hessian,

@@ -18,13 +18,13 @@ enum class ColliderType {
 // A fixed or hand-moved solid that vertices cannot enter. Only the fields of its type matter.
 struct Collider {
   ColliderType type = ColliderType::ground;
-  double height = 0.0;                                  // ground (m)
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();     // plane (a point on it), sphere, box (m)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();    // plane; normalized when validated
-  Eigen::Vector3d size = Eigen::Vector3d::Ones();       // box: edge lengths along x, y, z (m)
-  Eigen::Vector3d from = Eigen::Vector3d::Zero();       // capsule (m)
-  Eigen::Vector3d to = Eigen::Vector3d::UnitY();        // capsule (m)
-  double radius = 0.5;                                  // sphere, capsule (m)
+  double height = 0.0;                                // ground (m)
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();   // plane (a point on it), sphere, box (m)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // plane; normalized when validated
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();     // box: edge lengths along x, y, z (m)
+  Eigen::Vector3d from = Eigen::Vector3d::Zero();     // capsule (m)
+  Eigen::Vector3d to = Eigen::Vector3d::UnitY();      // capsule (m)
+  double radius = 0.5;                                // sphere, capsule (m)
   // Coulomb coefficient μ against this collider; negative: the material's (ContactParams).
   double friction = -1.0;
 };

@@ -39,7 +39,8 @@ WindParams WindParams::default_breeze() {
 }
 
 void validate_wind(const WindParams& wind) {
-  const std::string velocity = outside_limits(wind.velocity.array(), limits::speed, "wind velocity");
+  const std::string velocity =
+      outside_limits(wind.velocity.array(), limits::speed, "wind velocity");
   if (!velocity.empty()) throw InputError(velocity);
   check_number(wind.drag, limits::aerodynamic_coefficient, "wind drag");
   check_number(wind.lift, limits::aerodynamic_coefficient, "wind lift");

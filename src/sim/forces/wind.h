@@ -16,10 +16,10 @@ struct WindParams {
   bool on = false;
   WindModel model = WindModel::aerodynamic;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // air velocity (m/s)
-  double drag = 1.0;          // C_d
-  double lift = 0.0;          // C_l
-  double gusts = 0.0;         // relative gust strength in [0, 1]; 0: steady
-  double air_density = 1.2;   // ρ (kg/m³)
+  double drag = 1.0;                                   // C_d
+  double lift = 0.0;                                   // C_l
+  double gusts = 0.0;        // relative gust strength in [0, 1]; 0: steady
+  double air_density = 1.2;  // ρ (kg/m³)
 
   // What `--wind` and the W key turn on for a scene that has no wind of its own.
   static WindParams default_breeze();
@@ -31,8 +31,7 @@ void validate_wind(const WindParams& wind);
 // The air's velocity at `point` and simulated time `time` (s): `velocity` scaled by a gust
 // factor 1 + gusts·g(s) with g in [−1, 1], a fixed sum of three sines of s = time − (x·û)/|u|,
 // so that gusts travel downwind with the air. A pure function of time and place: runs repeat.
-Eigen::Vector3d wind_velocity_at(const WindParams& wind, const Eigen::Vector3d& point,
-                                 double time);
+Eigen::Vector3d wind_velocity_at(const WindParams& wind, const Eigen::Vector3d& point, double time);
 
 // Aerodynamic wind on the render triangles F (a mesh without triangles feels none). For each
 // triangle with area A, unit normal n and velocity v (the mean of its corners' (pᵗ − pᵗ⁻ᐞᵗ)/Δt),
