@@ -26,29 +26,21 @@ double step_objective(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p,
       gradient->row(j) -= force;
     }
   }
-  const double cdt = terms.damping * terms.dt;
-  const double inertia_weight = (1.0 + cdt) / (terms.dt * terms.dt);
-  double inertia = 0.0, work = 0.0, pins = 0.0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    double squared = 0.0;
+  if (gradient != nullptr) {
+    // The vertex terms' gradient: (1 + cΔt)/Δt² M(p − p̂) − f_ext + w(p − p_target) at pins.
+    const double cdt = terms.damping * terms.dt;
+    const double inertia_weight = (1.0 + cdt) / (terms.dt * terms.dt);
     for (int c = 0; c < 3; ++c) {
-      const double predicted =
-          ((2.0 + cdt) * terms.current(i, c) - terms.previous(i, c)) / (1.0 + cdt);
-      const double away = p(i, c) - predicted;
-      squared += away * away;
-      work += p(i, c) * terms.fext(i, c);
-      double g = inertia_weight * terms.m(i) * away - terms.fext(i, c);
-      if (terms.pinned[i]) {
-        const double off = p(i, c) - terms.targets(i, c);
-        pins += off * off;
-        g += terms.pin_weight * off;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double predicted =
+            ((2.0 + cdt) * terms.current(i, c) - terms.previous(i, c)) / (1.0 + cdt);
+        double g = inertia_weight * terms.m(i) * (p(i, c) - predicted) - terms.fext(i, c);
+        if (terms.pinned[i]) g += terms.pin_weight * (p(i, c) - terms.targets(i, c));
+        (*gradient)(i, c) += g;
       }
-      if (gradient != nullptr) (*gradient)(i, c) += g;
     }
-    inertia += terms.m(i) * squared;
   }
-  return 0.5 * terms.k * springs + 0.5 * inertia_weight * inertia - work +
-         0.5 * terms.pin_weight * pins;
+  return 0.5 * terms.k * springs + step_objective_vertex_terms(terms, p);
 }
 
 double step_objective_vertex_terms(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p) {
