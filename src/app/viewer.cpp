@@ -253,11 +253,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_overlays(ui_scale);
 
   if (requests.scene_changed) {
-    // A scene file that fails to load leaves the current scene running, with the reason shown.
-    try {
-      load(load_scene(scene_sources_[panel_.scene]));
-    } catch (const std::exception& error) {
-      scene_.notes.push_back(error.what());
+    // A scene file that fails to load leaves the current scene running, the picker showing it.
+    if (!open_file(scene_sources_[panel_.scene])) {
       panel_.scene =
           static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
                            scene_labels_.begin());
