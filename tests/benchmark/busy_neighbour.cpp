@@ -21,23 +21,13 @@
 #include <thread>
 #include <vector>
 
+#include "../io/shipped_scenes.h"
 #include "io/load_scene.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "sim/solver/worker_pool.h"
 
 namespace {
-
-std::vector<std::string> shipped_scenes() {
-  std::vector<std::string> scenes = wobble::builtin_scene_names();
-  std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(WOBBLE_ASSETS_DIR)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  scenes.insert(scenes.end(), files.begin(), files.end());
-  return scenes;
-}
 
 // A child process that spins until killed.
 pid_t start_busy_neighbour() {
@@ -83,7 +73,7 @@ int main(int argc, char** argv) {
       scenes.push_back(argument);
     }
   }
-  if (scenes.empty()) scenes = shipped_scenes();
+  if (scenes.empty()) scenes = wobble::testing::shipped_scenes(WOBBLE_ASSETS_DIR);
 
   std::printf("worker pool: %d threads (%d usable processors)\n",
               wobble::WorkerPool::shared().threads(), wobble::usable_processors());

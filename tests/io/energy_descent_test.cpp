@@ -11,28 +11,15 @@
 #include <vector>
 
 #include "io/load_scene.h"
-#include "sim/shapes/builtin_scenes.h"
+#include "shipped_scenes.h"
 #include "sim/simulation.h"
 
 namespace {
 
 const std::string assets = WOBBLE_ASSETS_DIR;
 
-std::vector<std::string> shipped_scenes() {
-  std::vector<std::string> scenes = wobble::builtin_scene_names();
-  for (const std::string& folder : {assets, assets + "/course"}) {
-    std::vector<std::string> files;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-      if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-    }
-    std::sort(files.begin(), files.end());
-    scenes.insert(scenes.end(), files.begin(), files.end());
-  }
-  return scenes;
-}
-
 TEST(EnergyDescent, EveryShippedSceneEveryIteration) {
-  const std::vector<std::string> scenes = shipped_scenes();
+  const std::vector<std::string> scenes = wobble::testing::shipped_scenes(assets);
   ASSERT_GE(scenes.size(), 12u) << "the built-in scenes and the scene files of assets/";
   for (const std::string& source : scenes) {
     SCOPED_TRACE(source);
