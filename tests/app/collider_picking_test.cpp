@@ -2,42 +2,41 @@
 
 #include <gtest/gtest.h>
 
+#include "../sim/test_colliders.h"
+
 namespace {
 
 using wobble::Collider;
 using wobble::ColliderType;
 using wobble::Ray;
+using wobble::testing::sphere_collider;
 
 Ray ray(const Eigen::Vector3f& origin, const Eigen::Vector3f& direction) {
   return Ray{origin, direction.normalized()};
-}
-
-Collider sphere_at(const Eigen::Vector3d& center, double radius) {
-  Collider sphere;
-  sphere.type = ColliderType::sphere;
-  sphere.center = center;
-  sphere.radius = radius;
-  return sphere;
 }
 
 // Hit points are found to the marching tolerance (1e-5 m) plus float rounding.
 constexpr float tolerance = 1e-4f;
 
 TEST(ColliderPicking, RayMeetsTheFrontOfASphere) {
-  const auto hit = wobble::pick_collider(ray({0, 0, 5}, {0, 0, -1}), {sphere_at({0, 0, 0}, 1.0)});
+  const auto hit =
+      wobble::pick_collider(ray({0, 0, 5}, {0, 0, -1}), {sphere_collider({0, 0, 0}, 1.0)});
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->index, 0);
   EXPECT_NEAR(hit->distance, 4.0f, tolerance);
   EXPECT_TRUE(hit->point.isApprox(Eigen::Vector3f(0, 0, 1), tolerance));
   // Just past the silhouette there is nothing, and nothing behind the ray's origin.
-  EXPECT_FALSE(wobble::pick_collider(ray({1.01f, 0, 5}, {0, 0, -1}), {sphere_at({0, 0, 0}, 1.0)}));
-  EXPECT_FALSE(wobble::pick_collider(ray({0, 0, 5}, {0, 0, 1}), {sphere_at({0, 0, 0}, 1.0)}));
+  EXPECT_FALSE(
+      wobble::pick_collider(ray({1.01f, 0, 5}, {0, 0, -1}), {sphere_collider({0, 0, 0}, 1.0)}));
+  EXPECT_FALSE(wobble::pick_collider(ray({0, 0, 5}, {0, 0, 1}), {sphere_collider({0, 0, 0}, 1.0)}));
   // Just inside the silhouette it is still a hit.
-  EXPECT_TRUE(wobble::pick_collider(ray({0.99f, 0, 5}, {0, 0, -1}), {sphere_at({0, 0, 0}, 1.0)}));
+  EXPECT_TRUE(
+      wobble::pick_collider(ray({0.99f, 0, 5}, {0, 0, -1}), {sphere_collider({0, 0, 0}, 1.0)}));
 }
 
 TEST(ColliderPicking, TheNearestOfSeveralWins) {
-  const std::vector<Collider> colliders = {sphere_at({0, 0, -3}, 0.5), sphere_at({0, 0, 0}, 0.5)};
+  const std::vector<Collider> colliders = {sphere_collider({0, 0, -3}, 0.5),
+                                           sphere_collider({0, 0, 0}, 0.5)};
   const auto hit = wobble::pick_collider(ray({0, 0, 5}, {0, 0, -1}), colliders);
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->index, 1);
@@ -74,8 +73,8 @@ TEST(ColliderPicking, GroundAndPlanesAreNeverPicked) {
   plane.normal = Eigen::Vector3d(0, 1, 0);
   EXPECT_FALSE(wobble::pick_collider(ray({0, 5, 0}, {0, -1, 0}), {ground, plane}));
   // A sphere behind them still is, with its own index.
-  const auto hit =
-      wobble::pick_collider(ray({0, 5, 0}, {0, -1, 0}), {ground, plane, sphere_at({0, 1, 0}, 0.5)});
+  const auto hit = wobble::pick_collider(ray({0, 5, 0}, {0, -1, 0}),
+                                         {ground, plane, sphere_collider({0, 1, 0}, 0.5)});
   ASSERT_TRUE(hit);
   EXPECT_EQ(hit->index, 2);
 }

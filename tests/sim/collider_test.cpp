@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/input_error.h"
+#include "test_colliders.h"
 
 namespace {
 
@@ -18,28 +19,17 @@ using wobble::Collider;
 using wobble::ColliderType;
 
 Collider sphere() {
-  Collider c;
-  c.type = ColliderType::sphere;
-  c.center = Eigen::Vector3d(0.2, 0.5, -0.1);
-  c.radius = 0.3;
-  return c;
+  return wobble::testing::sphere_collider(Eigen::Vector3d(0.2, 0.5, -0.1), 0.3);
 }
 
 Collider box() {
-  Collider c;
-  c.type = ColliderType::box;
-  c.center = Eigen::Vector3d(0.1, 0.4, 0.0);
-  c.size = Eigen::Vector3d(1.2, 0.8, 0.6);
-  return c;
+  return wobble::testing::box_collider(Eigen::Vector3d(0.1, 0.4, 0.0),
+                                       Eigen::Vector3d(1.2, 0.8, 0.6));
 }
 
 Collider capsule() {
-  Collider c;
-  c.type = ColliderType::capsule;
-  c.from = Eigen::Vector3d(0.0, 0.0, 0.0);
-  c.to = Eigen::Vector3d(0.3, 1.0, 0.2);
-  c.radius = 0.15;
-  return c;
+  return wobble::testing::capsule_collider(Eigen::Vector3d(0.0, 0.0, 0.0),
+                                           Eigen::Vector3d(0.3, 1.0, 0.2), 0.15);
 }
 
 // Points spread over a collider's surface, about `spacing` apart, written from its definition.

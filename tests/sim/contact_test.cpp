@@ -11,6 +11,7 @@
 #include "sim/shapes/cloth_grid.h"
 #include "sim/shapes/jelly_block.h"
 #include "sim/simulation.h"
+#include "test_colliders.h"
 
 namespace {
 
@@ -18,29 +19,9 @@ using wobble::Collider;
 using wobble::ColliderType;
 using wobble::Simulation;
 using wobble::SimulationParams;
-
-Collider ground(double height = 0.0) {
-  Collider c;
-  c.type = ColliderType::ground;
-  c.height = height;
-  return c;
-}
-
-Collider sphere(const Eigen::Vector3d& center, double radius) {
-  Collider c;
-  c.type = ColliderType::sphere;
-  c.center = center;
-  c.radius = radius;
-  return c;
-}
-
-Collider box(const Eigen::Vector3d& center, const Eigen::Vector3d& size) {
-  Collider c;
-  c.type = ColliderType::box;
-  c.center = center;
-  c.size = size;
-  return c;
-}
+using wobble::testing::box_collider;
+using wobble::testing::ground_collider;
+using wobble::testing::sphere_collider;
 
 // A square cloth of `resolution`² vertices and side `size`, flat at height `height`, centred
 // over (x, z).
@@ -103,7 +84,7 @@ TEST(Contact, ClothDrapesOverASphereWithoutEnteringIt) {
   for (const bool chebyshev : {false, true}) {
     SCOPED_TRACE(chebyshev ? "Chebyshev" : "plain");
     SimulationParams params =
-        contact_params({ground(), sphere(Eigen::Vector3d(0, 0.5, 0), 0.3)}, 0.3);
+        contact_params({ground_collider(), sphere_collider(Eigen::Vector3d(0, 0.5, 0), 0.3)}, 0.3);
     params.chebyshev = chebyshev;
     Simulation simulation(cloth(24, 1.0, 1.0), {}, params);
     run_checking_contact(simulation, 180);
@@ -122,7 +103,7 @@ TEST(Contact, WithoutCollidersTheClothFallsThrough) {
   Simulation simulation(cloth(24, 1.0, 1.0), {}, contact_params({}, 0.3));
   for (int step = 0; step < 20; ++step)
     simulation.step();
-  const Collider ball = sphere(Eigen::Vector3d(0, 0.5, 0), 0.3);
+  const Collider ball = sphere_collider(Eigen::Vector3d(0, 0.5, 0), 0.3);
   double deepest = 0.0;
   for (Eigen::Index i = 0; i < simulation.positions().rows(); ++i) {
     deepest = std::max(
@@ -133,7 +114,7 @@ TEST(Contact, WithoutCollidersTheClothFallsThrough) {
 }
 
 TEST(Contact, NeverRefactorizesQ) {
-  Simulation simulation(cloth(16, 1.0, 1.0), {}, contact_params({ground(0.5)}, 0.5));
+  Simulation simulation(cloth(16, 1.0, 1.0), {}, contact_params({ground_collider(0.5)}, 0.5));
   const int factorizations = simulation.numeric_factorizations();
   for (int step = 0; step < 120; ++step) {
     simulation.step();
@@ -147,7 +128,7 @@ TEST(Contact, NeverRefactorizesQ) {
 TEST(Contact, APinDraggedThroughASphereNeverLeavesVerticesInside) {
   const Eigen::Vector3d center(0.0, 0.6, 0.0);
   Simulation simulation(cloth(20, 0.6, 1.2, 0.0, -0.8), {0, 19},
-                        contact_params({sphere(center, 0.25)}, 0.2));
+                        contact_params({sphere_collider(center, 0.25)}, 0.2));
   // Pull both pins down through the sphere's middle and out below it, in 2 s.
   const int steps = 120;
   const Eigen::Vector3d start0 = simulation.pin_target(0), start19 = simulation.pin_target(19);
@@ -167,8 +148,8 @@ TEST(Contact, FrictionHoldsATableclothThatSlidesOffWithoutIt) {
   // A cloth 1.6 m square dropped onto a 1.2 × 0.8 table top, shifted 0.3 m along +x so that far
   // more hangs on one side.
   auto run = [](double friction) {
-    const Collider table = box(Eigen::Vector3d(0, 0.4, 0), Eigen::Vector3d(1.2, 0.8, 0.8));
-    SimulationParams params = contact_params({ground(), table}, friction);
+    const Collider table = box_collider(Eigen::Vector3d(0, 0.4, 0), Eigen::Vector3d(1.2, 0.8, 0.8));
+    SimulationParams params = contact_params({ground_collider(), table}, friction);
     Simulation simulation(cloth(32, 1.6, 0.85, 0.3), {}, params);
     for (int step = 0; step < 300; ++step) {
       EXPECT_EQ(simulation.step(), wobble::StepStatus::ok);
@@ -184,7 +165,7 @@ TEST(Contact, AJellyDroppedOnTheGroundComesToRest) {
   wobble::JellyBlockOptions options;
   wobble::SpringNetwork jelly = wobble::make_jelly_block(options);
   jelly.V.col(1).array() += 0.3;
-  SimulationParams params = contact_params({ground()}, 0.5);
+  SimulationParams params = contact_params({ground_collider()}, 0.5);
   params.k = 5000.0;  // a firm jelly: at 1500 N/m it spreads to 1.4 times its width
   params.damping = 1.0;
   params.iterations = 50;
@@ -202,7 +183,8 @@ TEST(Contact, AJellyDroppedOnTheGroundComesToRest) {
 }
 
 TEST(Contact, ResetPutsMovedCollidersBack) {
-  Simulation simulation(cloth(8, 1.0, 1.0), {}, contact_params({sphere({0, 0, 0}, 0.2)}, 0.0));
+  Simulation simulation(cloth(8, 1.0, 1.0), {},
+                        contact_params({sphere_collider({0, 0, 0}, 0.2)}, 0.0));
   simulation.translate_collider(0, Eigen::Vector3d(0.5, 0, 0));
   EXPECT_DOUBLE_EQ(simulation.colliders()[0].center.x(), 0.5);
   simulation.reset();
@@ -211,7 +193,7 @@ TEST(Contact, ResetPutsMovedCollidersBack) {
 }
 
 TEST(Contact, AMovingBoxCarriesAClothLyingOnItByFriction) {
-  const Collider plate = box(Eigen::Vector3d(0, 0.45, 0), Eigen::Vector3d(1.5, 0.1, 1.5));
+  const Collider plate = box_collider(Eigen::Vector3d(0, 0.45, 0), Eigen::Vector3d(1.5, 0.1, 1.5));
   auto run = [&](double friction) {
     Simulation simulation(cloth(12, 0.6, 0.55), {}, contact_params({plate}, friction));
     for (int step = 0; step < 30; ++step)
