@@ -45,10 +45,9 @@ InstrumentCsv::InstrumentCsv(std::string convergence_path, std::string energy_pa
     : convergence_path_(std::move(convergence_path)), energy_path_(std::move(energy_path)) {
   if (!convergence_path_.empty()) {
     check_output_path("--convergence-csv", convergence_path_);
-    // Compared in floating point: frames × iterations can overflow a long.
-    const double rows = static_cast<double>(frames) * (iterations + 1);
+    // At most 10⁷ frames (--frames) of 5001 iterates: far inside a long.
     check_rows(
-        "--convergence-csv", rows > max_rows ? max_rows + 1 : static_cast<long>(rows),
+        "--convergence-csv", frames * (iterations + 1L),
         std::to_string(frames) + " frames of " + std::to_string(iterations + 1) + " iterates");
     convergence_ = "frame,iteration,energy,gradient_norm\n";
   }
