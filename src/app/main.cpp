@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
         wobble::parse_command_line(argc, argv, std::cout);
     if (!command) return 0;
     if (command->headless) return wobble::run_headless(*command, std::cout, std::cerr);
-    return wobble::run_window(*command, std::cerr);
+    return wobble::run_window(*command, std::cout, std::cerr);
   } catch (const wobble::InputError& error) {
     std::cerr << "wobble: " << wobble::one_line(error.what()) << "\n";
     return 2;

@@ -85,12 +85,7 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
       options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
     }
     if (options.instruments != nullptr) options.instruments->record(frame, viewer.simulation());
-    if (report) {
-      const StepTiming& step = viewer.simulation().last_step_timing();
-      report->step_ms.push_back(step.total_ms);
-      report->local_ms.push_back(step.local_ms);
-      report->global_ms.push_back(step.global_ms);
-    }
+    if (report) report->times.add(viewer.simulation().last_step_timing());
     if (ui) viewer.build_legend(1.0f);
 
     const auto start = std::chrono::steady_clock::now();

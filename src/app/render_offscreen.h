@@ -7,6 +7,7 @@
 #include "instrument_csv.h"
 #include "io/png_image.h"
 #include "obj_sequence.h"
+#include "run_statistics.h"
 #include "viewer.h"
 
 namespace wobble {
@@ -21,7 +22,7 @@ struct OffscreenOptions {
 
 // What an offscreen run measured.
 struct OffscreenReport {
-  std::vector<double> step_ms, local_ms, global_ms;  // per frame: the simulation step
+  StepTimes times;                // per frame: the simulation step
   std::vector<double> render_ms;  // per frame: drawing, UI and read-back (when an image is read)
   std::string context;            // which EGL platform and GL renderer drew
 };

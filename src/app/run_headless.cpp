@@ -2,7 +2,6 @@
 
 #include <memory>
 
-#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <stdexcept>
@@ -15,6 +14,7 @@
 #include "io/write_obj.h"
 #include "obj_sequence.h"
 #include "render_offscreen.h"
+#include "run_statistics.h"
 #include "scene_catalog.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
@@ -23,43 +23,6 @@
 namespace wobble {
 
 namespace {
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const std::size_t middle = values.size() / 2;
-  std::nth_element(values.begin(), values.begin() + middle, values.end());
-  if (values.size() % 2 == 1) return values[middle];
-  const double upper = values[middle];
-  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
-}
-
-nlohmann::ordered_json statistics(const Simulation& simulation, const Scene& scene, long frames,
-                                  const std::vector<double>& step_ms,
-                                  const std::vector<double>& local_ms,
-                                  const std::vector<double>& global_ms) {
-  const SimulationParams& params = simulation.params();
-  return {
-      {"scene", scene.name},
-      {"vertices", scene.network.V.rows()},
-      {"springs", scene.network.E.rows()},
-      {"pinned", simulation.pin_count()},
-      {"iterations", params.iterations},
-      {"chebyshev", params.chebyshev},
-      {"chebyshev_rho", simulation.chebyshev_spectral_radius()},
-      {"frames", frames},
-      {"k", params.k},
-      {"dt", params.dt},
-      {"precompute_ms", simulation.precompute_ms()},
-      {"factor_nonzeros", simulation.factor_nonzeros()},
-      {"factorization_work", simulation.factorization_work()},
-      {"single_precision_solve", simulation.solves_in_single_precision()},
-      {"step_ms_median", median(step_ms)},
-      {"step_ms_min", step_ms.empty() ? 0.0 : *std::min_element(step_ms.begin(), step_ms.end())},
-      {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
-      {"local_ms_median", median(local_ms)},
-      {"global_ms_median", median(global_ms)},
-  };
-}
 
 // --headless with --screenshot or --record: the viewer's frame loop in an EGL context.
 int render_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
@@ -96,8 +59,7 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
               viewer.scene().network.E);
   }
   if (command.stats) {
-    nlohmann::ordered_json stats = statistics(simulation, viewer.scene(), frames, report.step_ms,
-                                              report.local_ms, report.global_ms);
+    nlohmann::ordered_json stats = run_statistics(simulation, viewer.scene(), frames, report.times);
     stats["render_ms_median"] = median(report.render_ms);
     stats["width"] = command.width;
     stats["height"] = command.height;
@@ -131,11 +93,11 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   instruments.start(simulation);
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 
-  std::vector<double> step_ms, local_ms, global_ms;
+  StepTimes times;
   if (command.stats) {
-    step_ms.reserve(frames);
-    local_ms.reserve(frames);
-    global_ms.reserve(frames);
+    times.step_ms.reserve(frames);
+    times.local_ms.reserve(frames);
+    times.global_ms.reserve(frames);
   }
   for (long frame = 0; frame < frames; ++frame) {
     drags.before_step(simulation, frame + 1);
@@ -150,12 +112,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     }
     obj_sequence.write(frame + 1, simulation.positions(), scene.network);
     instruments.record(frame + 1, simulation);
-    if (command.stats) {
-      const StepTiming& timing = simulation.last_step_timing();
-      step_ms.push_back(timing.total_ms);
-      local_ms.push_back(timing.local_ms);
-      global_ms.push_back(timing.global_ms);
-    }
+    if (command.stats) times.add(simulation.last_step_timing());
   }
 
   instruments.write();
@@ -163,7 +120,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
   }
   if (command.stats) {
-    out << statistics(simulation, scene, frames, step_ms, local_ms, global_ms).dump() << "\n";
+    out << run_statistics(simulation, scene, frames, times).dump() << "\n";
   }
   return 0;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <utility>
 
 #include <imgui.h>
@@ -106,11 +107,15 @@ bool Viewer::open_file(const std::string& path) {
 
 void Viewer::restore_defaults() {
   // scene_ is the scene as it opened: the panel's changes went to the simulation only.
+  if (batch_started_) finish_steps();
   Scene opened = scene_;
   load(std::move(opened));
 }
 
 void Viewer::load(Scene scene) {
+  // A running batch finishes first and what the user did before is handed over, so that the new
+  // scene's settings come after it (loading takes longer than a step anyway).
+  if (batch_started_) finish_steps();
   // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
   // was.
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
@@ -134,6 +139,8 @@ void Viewer::load(Scene scene) {
   student_.reset();
   drag_.cancel();
   collider_drag_.cancel();
+  mouse_holds_ = false;
+  pacer_.restart();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
   step_warning_.clear();
   mode_ = Mode::idle;
@@ -198,6 +205,8 @@ void Viewer::load(Scene scene) {
   texture_ = std::move(texture);
   if (split) start_split(*split);
   if (!student_server_.empty()) start_student();
+  update_vertex_arrays();
+  copy_shown_figures();
   if (renderer_) attach_renderer();
 }
 
@@ -229,7 +238,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.fps = timings.fps;
   stats.real_time_factor = timings.real_time_factor;
   stats.steps_per_second = timings.steps_per_second;
-  const StepTiming& step = simulation_->last_step_timing();
+  const StepTiming& step = last_timing_;
   stats.step_ms = step_ms_.median();
   stats.local_ms = local_ms_.median();
   stats.global_ms = global_ms_.median();
@@ -252,6 +261,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_step_warning(step_warning_, ui_scale);
   draw_overlays(ui_scale);
 
+  // A new scene (or the same one afresh) waits for a running batch (see load).
   if (requests.scene_changed) {
     // A scene file that fails to load leaves the current scene running, the picker showing it.
     if (!open_file(scene_sources_[panel_.scene])) {
@@ -269,7 +279,9 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     restore_defaults();
     return;
   }
-  apply_panel_settings();
+  // The sliders' values stay in the panel until the simulation takes them (hand_over_changes
+  // applies them again after a batch).
+  if (!batch_started_) apply_panel_settings();
   if (requests.step_once) apply(ViewerCommand::step_once);
   if (requests.reset) apply(ViewerCommand::reset);
   if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
@@ -280,7 +292,10 @@ void Viewer::apply_panel_settings() {
   // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
   const SimulationParams& params = simulation_->params();
   if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
-  if (static_cast<float>(params.dt) != panel_.dt) simulation_->set_dt(panel_.dt);
+  if (static_cast<float>(params.dt) != panel_.dt) {
+    simulation_->set_dt(panel_.dt);
+    pacer_.restart();
+  }
   if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
   if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
   // The slider is gravity's strength: the scene's direction stays, sideways part included.
@@ -292,40 +307,178 @@ void Viewer::apply_panel_settings() {
   apply_split_settings();
 }
 
-void Viewer::advance() {
-  if (panel_.paused && !step_requested_) {
-    update_quantity_colors();  // a paused shape still moves under a dragged pin
-    return;
+void Viewer::change(std::function<void()> what) {
+  if (batch_started_) {
+    pending_.push_back(std::move(what));
+  } else {
+    what();
   }
-  step_requested_ = false;
-  const long frame = simulation_->steps_taken() + 1;
-  drag_script_.before_step(*simulation_, frame);
+}
+
+void Viewer::hand_over_changes() {
+  // A change may load a scene and so forget the rest; each runs on what the one before left.
+  std::vector<std::function<void()>> changes;
+  changes.swap(pending_);
+  for (const std::function<void()>& what : changes)
+    what();
+  apply_panel_settings();
   update_recording();
-  const StepStatus status = simulation_->step();
-  if (status == StepStatus::ok) {
-    step_warning_.clear();
-    record_instruments();
-    const StepTiming& timing = simulation_->last_step_timing();
+}
+
+int Viewer::steps_to_start(std::optional<double> now, double frame_seconds) {
+  const bool below_limit = step_limit_ < 0 || simulation_->steps_taken() < step_limit_;
+  if (step_requested_) {
+    step_requested_ = false;
+    pacer_.restart();
+    return below_limit ? 1 : 0;
+  }
+  if (panel_.paused || !below_limit) {
+    pacer_.restart();  // playing again starts the real-time clock afresh
+    return 0;
+  }
+  // Headless, and the window's --frames: every step drawn, as fast as the machine goes; without
+  // real time, a step a frame.
+  if (!now || !panel_.real_time || step_limit_ >= 0) return 1;
+  const double step_seconds = 1e-3 * step_ms_.median();
+  const int steps = pacer_.steps_due(*now, simulation_->params().dt, step_seconds, frame_seconds);
+  if (step_limit_ < 0) return steps;
+  return static_cast<int>(std::min<long>(steps, step_limit_ - simulation_->steps_taken()));
+}
+
+void Viewer::start_batch(int steps) {
+  batch_ = Batch();
+  batch_.steps = steps;
+  batch_.record_trace = panel_.show_convergence;
+  batch_.record_energy = panel_.show_energy;
+  batch_.timings.reserve(steps);
+  batch_started_ = true;
+  if (step_thread_) {
+    step_thread_->start([this] { run_batch(); });
+  } else {
+    run_batch();
+  }
+}
+
+void Viewer::run_batch() {
+  for (int i = 0; i < batch_.steps; ++i) {
+    const long step = simulation_->steps_taken() + 1;
+    drag_script_.before_step(*simulation_, step);
+    const StepStatus status = simulation_->step();
+    if (status != StepStatus::ok) {
+      batch_.status = status;
+      batch_.failed_step = step;
+      batch_.scripted_drag = drag_script_.holds_vertex();
+      batch_.stiffness_ratio = stiffness_ratio(*simulation_);
+      return;
+    }
+    ++batch_.steps_taken;
+    batch_.timings.push_back(simulation_->last_step_timing());
+    if (batch_.record_trace) {
+      const ConvergenceTrace& trace = simulation_->last_convergence();
+      batch_.trace.energy.assign(trace.energy.begin(), trace.energy.end());
+      batch_.trace.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
+      batch_.trace.chebyshev = trace.chebyshev;
+      batch_.trace_step = step;
+    }
+    if (batch_.record_energy) {
+      batch_.energy.emplace_back(simulation_->time(), frame_energy(*simulation_));
+    }
+    advance_twin(simulation_->params().dt);
+    if (step_observer_) step_observer_(*simulation_);
+  }
+}
+
+void Viewer::finish_batch() {
+  if (!batch_started_) return;
+  batch_started_ = false;
+  if (step_thread_) step_thread_->wait();  // an exception from the batch comes out here
+  for (const StepTiming& timing : batch_.timings) {
     step_ms_.add(static_cast<float>(timing.total_ms));
     local_ms_.add(static_cast<float>(timing.local_ms));
     global_ms_.add(static_cast<float>(timing.global_ms));
-    advance_twin(simulation_->params().dt);
-  } else {
+  }
+  if (!batch_.timings.empty()) last_timing_ = batch_.timings.back();
+  if (batch_.trace_step > 0) {
+    std::swap(shown_trace_, batch_.trace);
+    shown_trace_step_ = batch_.trace_step;
+  }
+  for (const auto& [time, energy] : batch_.energy)
+    energy_history_.add(time, energy);
+  if (batch_.steps_taken > 0) step_warning_.clear();
+  if (batch_.status != StepStatus::ok) {
     panel_.paused = true;
     FailedStep failed;
-    failed.status = status;
-    failed.step = frame;
+    failed.status = batch_.status;
+    failed.step = batch_.failed_step;
     failed.initial_velocity =
         scene_.initial_velocity.size() != 0 && !scene_.initial_velocity.isZero(0.0);
-    failed.dragging = drag_.active() || drag_script_.holds_vertex();
-    failed.stiffness_ratio = stiffness_ratio(*simulation_);
+    failed.dragging = drag_.active() || batch_.scripted_drag;
+    failed.stiffness_ratio = batch_.stiffness_ratio;
     failed.dt = simulation_->params().dt;
     step_warning_ = describe_failed_step(failed);
   }
+}
+
+void Viewer::advance() {
+  finish_batch();
+  hand_over_changes();
+  if (steps_to_start(std::nullopt, 0.0) > 0) {
+    start_batch(1);
+    finish_batch();
+  }
+  refresh_shown_state();
+}
+
+bool Viewer::exchange(double now, double frame_seconds) {
+  if (stepping()) return false;
+  finish_batch();
+  hand_over_changes();
+  refresh_shown_state();
+  const int steps = steps_to_start(now, frame_seconds);
+  if (steps > 0) start_batch(steps);
+  return true;
+}
+
+void Viewer::step_on_thread(std::function<void()> wake) {
+  finish_steps();
+  step_thread_ = std::make_unique<StepThread>(std::move(wake));
+}
+
+void Viewer::finish_steps() {
+  finish_batch();
+  hand_over_changes();
+  refresh_shown_state();
+}
+
+void Viewer::stop_stepping() noexcept {
+  if (!batch_started_) return;
+  batch_started_ = false;
+  try {
+    if (step_thread_) step_thread_->wait();
+  } catch (...) {  // the run already fails for another reason
+  }
+}
+
+void Viewer::refresh_shown_state() {
+  update_vertex_arrays();
   update_quantity_colors();
+  copy_shown_figures();
+}
+
+void Viewer::copy_shown_figures() {
+  shown_stats_ = simulation_stats();
+  shown_twin_warning_ = twin_warning_;
+  shown_student_distance_ = student_distance_;
+  shown_student_colors_ = student_colors_;
+  describe_sides();
 }
 
 PanelStats Viewer::stats() const {
+  if (batch_started_) return shown_stats_;
+  return simulation_stats();
+}
+
+PanelStats Viewer::simulation_stats() const {
   PanelStats stats;
   stats.vertices = static_cast<int>(scene_.network.V.rows());
   stats.springs = static_cast<int>(scene_.network.E.rows());
@@ -361,6 +514,16 @@ void Viewer::update_vertex_arrays() {
   }
   compute_vertex_normals(positions_.data(), n, triangles_.data(),
                          static_cast<int>(triangles_.size() / 3), normals_.data());
+  if (!twin_) return;
+  const Eigen::MatrixXd& q = twin_->positions();
+  twin_positions_.resize(3 * n);
+  twin_normals_.resize(3 * n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      twin_positions_[3 * i + k] = static_cast<float>(q(i, k));
+  }
+  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
 }
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
@@ -368,7 +531,9 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // Split, each side gets half the width, under the same camera.
   window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
   const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
-  update_vertex_arrays();
+  // Between batches the state is read afresh (a paused drag moves the drawn pin); while one
+  // runs, the state it started from is drawn.
+  if (!batch_started_) update_vertex_arrays();
   const int n = static_cast<int>(positions_.size() / 3);
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   if (frame_on_next_render_) frame_camera(aspect);
@@ -376,7 +541,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   projection_ = projection_matrix(camera_, aspect);
 
   // The pin under the cursor and the vertex being held are highlighted.
-  hovered_pin_ = (mode_ == Mode::idle && !drag_.active() && !cursor_over_ui_)
+  hovered_pin_ = (mode_ == Mode::idle && !mouse_holds_ && !cursor_over_ui_)
                      ? pick(cursor_, /*pinned_only=*/true)
                      : -1;
   for (int i = 0; i < n; ++i)
@@ -402,17 +567,12 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   renderer_->draw(view_, projection_, camera_eye(camera_), layers(), left_width, framebuffer_height,
                   pixel_ratio);
   if (!twin_) return;
-  const Eigen::MatrixXd& p = twin_->positions();
-  for (int i = 0; i < n; ++i) {
-    for (int k = 0; k < 3; ++k)
-      twin_positions_[3 * i + k] = static_cast<float>(p(i, k));
-  }
-  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
-                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
   frame.positions = twin_positions_.data();
   frame.normals = twin_normals_.data();
   add_quantity_colors(twin_colors_, frame);
-  if (student_) frame.vertex_colors = student_colors_.data();
+  if (student_ && shown_student_colors_.size() == twin_positions_.size()) {
+    frame.vertex_colors = shown_student_colors_.data();
+  }
   renderer_->update(frame);
   renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width - left_width,
                   framebuffer_height, pixel_ratio, left_width);

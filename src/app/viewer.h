@@ -2,6 +2,7 @@
 #define WOBBLE_APP_VIEWER_H
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,8 @@
 #include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
+#include "step_pacer.h"
+#include "step_thread.h"
 #include "student_step.h"
 #include "ui/control_panel.h"
 #include "vertex_drag.h"
@@ -61,7 +64,15 @@ ViewerSettings viewer_settings(const CommandLine& command);
 // Everything the window and the headless mode share: the scene and its simulation, the camera,
 // the mouse and keys, the ImGui panel, and the renderer. Only the GL context and the frame loop
 // around it differ between the two modes. One frame is, in this order:
-//   handle_events → build_ui → advance → build_legend → render
+//   handle_events → build_ui → advance (headless) or exchange (window) → build_legend → render
+//
+// The simulation's side and the UI's: the simulation, the split view's right side, the student's
+// step and the scripted drags are touched by one batch of steps at a time. In the window a batch
+// runs on a thread of its own (step_on_thread) while the UI goes on drawing the state the last
+// batch left, at the display's rate; what the user does meanwhile (drags, clicks, slider
+// changes, Reset, a new scene) is kept, in order, and handed to the simulation once the batch
+// finished, before the next one starts. Each step still has its fixed dt, so the results do not
+// depend on the thread: N steps give the same positions as headless.
 class Viewer {
  public:
   // `scene_sources` are what the scene picker offers (built-in names and scene files, as
@@ -69,7 +80,8 @@ class Viewer {
   Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources);
   ~Viewer();
 
-  // Replace the scene (what the scene picker does). Throws, leaving the viewer as it was, when
+  // Replace the scene (what the scene picker does), once a running batch of steps finished.
+  // Throws, leaving the viewer as it was, when
   // the scene's texture cannot be read or its simulation cannot be built. A mesh without faces
   // starts with its springs and vertices shown, since there is no surface to see; the layers
   // chosen for meshes with faces come back with the next mesh that has them.
@@ -103,9 +115,36 @@ class Viewer {
                      bool ui_wants_keyboard, const Eigen::Vector2f& window_size);
   // The panel and the help overlay (ImGui, between NewFrame and Render). Applies what changed.
   void build_ui(const PanelStats& timings, float ui_scale);
-  // One time step, unless paused. A step the simulation rolls back pauses the viewer and sets
-  // step_warning(). Then, paused or not, the colours of color_by() for the state to be drawn.
+  // One time step, unless paused, finished before it returns (headless, tests). A step the
+  // simulation rolls back pauses the viewer and sets step_warning(). Then, paused or not, the
+  // state to be drawn, with the colours of color_by().
   void advance();
+  // The window's frame: if a batch of steps still runs, nothing (the UI draws the last state;
+  // returns false). Otherwise take the finished batch's results, hand over what the user did
+  // since, in order, take the state to be drawn, and start the next batch: one step if one was
+  // asked for; while playing, in real-time mode as many as keep up with the wall clock `now`
+  // (s) but fit in `frame_seconds` (StepPacer), otherwise one. Returns true.
+  bool exchange(double now, double frame_seconds);
+  // Run batches on a thread of their own from now on (the window). `wake` runs on that thread
+  // after each batch.
+  void step_on_thread(std::function<void()> wake);
+  // Wait for a running batch and take its results (before the window closes, and at the end of
+  // a --frames run).
+  void finish_steps();
+  // Wait for a running batch and drop its results and any error it met (a run that failed
+  // elsewhere, before it writes what it has).
+  void stop_stepping() noexcept;
+  // Whether a batch of steps runs on the stepping thread now.
+  bool stepping() const { return batch_started_ && step_thread_ && step_thread_->running(); }
+  // Never step beyond this many steps in all (the window's --frames).
+  void set_step_limit(long steps) { step_limit_ = steps; }
+  // Called after each good step, on the thread that took it, with the simulation (the CSV rows
+  // and OBJ sequences of the window).
+  void set_step_observer(std::function<void(const Simulation&)> observer) {
+    step_observer_ = std::move(observer);
+  }
+  // The steps taken as of the state drawn.
+  long shown_steps() const { return shown_stats_.steps; }
   // viewer_colors.cpp: the colour bar of color_by() (ImGui, after advance so that it shows the
   // range this frame is drawn with, and before ImGui::Render); nothing for material.
   void build_legend(float ui_scale);
@@ -130,12 +169,14 @@ class Viewer {
   // The split view's right side, or null when the view is not split.
   const Simulation* right_side() const { return twin_.get(); }
   // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.
-  const std::string& right_side_warning() const { return twin_warning_; }
+  const std::string& right_side_warning() const { return shown_twin_warning_; }
   // With a student's step on the right: its largest distance from Wobble's positions after the
   // last step (m).
-  double student_distance() const { return student_distance_; }
+  double student_distance() const { return shown_student_distance_; }
 
   bool quit_requested() const { return quit_; }
+  bool real_time() const { return panel_.real_time; }
+  bool paused() const { return panel_.paused; }
   bool help_shown() const { return panel_.show_help; }
   bool panel_shown() const { return panel_.show_panel; }
   // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
@@ -145,8 +186,8 @@ class Viewer {
   // holding something or turning the camera. A paused viewer with none of these can wait for
   // input instead of redrawing the same picture.
   bool animating() const {
-    return !panel_.paused || step_requested_ || drag_.active() || collider_drag_.active() ||
-           mode_ != Mode::idle;
+    return !panel_.paused || step_requested_ || mouse_holds_ || mode_ != Mode::idle ||
+           batch_started_ || !pending_.empty();
   }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
@@ -155,7 +196,7 @@ class Viewer {
   const OrbitCamera& camera() const { return camera_; }
   // How far the mouse may take the camera, for this scene's shape and ground.
   const CameraLimits& camera_limits() const { return camera_limits_; }
-  // Panel figures that do not come from the wall clock.
+  // Panel figures that do not come from the wall clock, as of the state drawn.
   PanelStats stats() const;
   // The layers render() draws, as the panel's checkboxes show them.
   ViewLayers layers() const;
@@ -165,6 +206,22 @@ class Viewer {
   const ColliderTriangles& collider_mesh() const { return collider_mesh_; }
 
  private:
+  // The simulation's side (see the class comment).
+  // Do `what` now when no batch runs, else once the running batch finished, after what was
+  // asked before it.
+  void change(std::function<void()> what);
+  void hand_over_changes();
+  // Headless (no `now`): one step, unless paused.
+  int steps_to_start(std::optional<double> now, double frame_seconds);
+  void start_batch(int steps);
+  void run_batch();  // on the thread that takes the steps
+  void finish_batch();
+  // Copy what the UI draws and shows out of the simulation's side.
+  void refresh_shown_state();
+  // The panel's figures, the right side's warning and the student's distance and colours.
+  void copy_shown_figures();
+  PanelStats simulation_stats() const;
+
   void apply(ViewerCommand command);
   void apply_panel_settings();
   // viewer_environment.cpp: damping, friction, wind and colliders.
@@ -172,7 +229,6 @@ class Viewer {
   void apply_environment_settings();
   // viewer_instruments.cpp: the convergence and energy plots.
   void update_recording();
-  void record_instruments();
   void clear_instruments();
   void show_instruments(float ui_scale);
   // viewer_compare.cpp: the split view.
@@ -184,6 +240,8 @@ class Viewer {
   void sync_twin();
   void advance_twin(double seconds);
   void reset_twin();
+  // The split view's corner labels for the state drawn.
+  void describe_sides();
   // viewer_student.cpp: a student's step on the right.
   void start_student();
   void advance_student();
@@ -219,9 +277,39 @@ class Viewer {
   float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
   CameraLimits camera_limits_;
   PanelPlace panel_place_;  // where build_ui last drew the panel; not shown without a panel
+  // One batch of steps: what it was asked for, and what it left for finish_batch.
+  struct Batch {
+    int steps = 0;
+    bool record_trace = false, record_energy = false;  // as the plots were open at its start
+    int steps_taken = 0;
+    std::vector<StepTiming> timings;  // of each good step
+    ConvergenceTrace trace;           // the last step's, when recorded
+    long trace_step = 0;
+    std::vector<std::pair<double, FrameEnergy>> energy;  // (time, energy) after each step
+    StepStatus status = StepStatus::ok;                  // the step that failed, if one did
+    long failed_step = 0;
+    bool scripted_drag = false;  // a scripted drag held a vertex at the failure
+    double stiffness_ratio = 0.0;
+  };
+  Batch batch_;
+  bool batch_started_ = false;  // a batch started whose results finish_batch has not taken
+  std::unique_ptr<StepThread> step_thread_;     // null: batches run on the caller
+  std::vector<std::function<void()>> pending_;  // the user's changes while a batch ran
+  std::function<void(const Simulation&)> step_observer_;
+  StepPacer pacer_;
+  long step_limit_ = -1;  // < 0: none
+  // What the UI shows of the simulation's side, as of the last refresh_shown_state.
+  PanelStats shown_stats_;
+  std::string shown_twin_warning_;
+  std::string shown_left_label_, shown_right_label_;  // the split view's settings
+  double shown_student_distance_ = 0.0;
+  std::vector<float> shown_student_colors_;
+  // A vertex or collider is held by the mouse (its grab may still wait for the batch).
+  bool mouse_holds_ = false;
   bool quit_ = false;
   bool screenshot_requested_ = false;
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
+  StepTiming last_timing_;                       // the last good step's
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;

@@ -152,20 +152,27 @@ void Viewer::draw_overlays(float ui_scale) {
   show_instruments(ui_scale);
   if (!twin_) return;
   SideLabels labels;
-  labels.left = describe_side(simulation_->params());
-  labels.right = describe_side(twin_->params());
-  if (student_) {
-    const SimulationParams& params = twin_->params();
-    char right[200];
-    std::snprintf(right, sizeof(right),
-                  "the student's fast_mass_springs_step_sparse\ndt %.3g ms, k %g N/m\n"
-                  "largest distance from Wobble's: %.2g m",
-                  1000.0 * params.dt, params.k, student_distance_);
-    labels.left = "Wobble's step (reference)\n" + labels.left;
-    labels.right = right;
-  }
-  labels.right_warning = twin_warning_;
+  labels.left = shown_left_label_;
+  labels.right = shown_right_label_;
+  labels.right_warning = shown_twin_warning_;
   draw_side_labels(labels, ui_scale);
+}
+
+void Viewer::describe_sides() {
+  shown_left_label_.clear();
+  shown_right_label_.clear();
+  if (!twin_) return;
+  shown_left_label_ = describe_side(simulation_->params());
+  shown_right_label_ = describe_side(twin_->params());
+  if (!student_) return;
+  const SimulationParams& params = twin_->params();
+  char right[200];
+  std::snprintf(right, sizeof(right),
+                "the student's fast_mass_springs_step_sparse\ndt %.3g ms, k %g N/m\n"
+                "largest distance from Wobble's: %.2g m",
+                1000.0 * params.dt, params.k, student_distance_);
+  shown_left_label_ = "Wobble's step (reference)\n" + shown_left_label_;
+  shown_right_label_ = right;
 }
 
 }  // namespace wobble

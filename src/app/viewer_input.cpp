@@ -41,7 +41,7 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         break;
       case InputEvent::Type::button_press: {
         // One gesture at a time.
-        if (drag_.active() || collider_drag_.active() || mode_ != Mode::idle) break;
+        if (mouse_holds_ || mode_ != Mode::idle) break;
         const int pin = pick(at, /*pinned_only=*/true);
         const int vertex = pin >= 0 ? pin : pick(at, /*pinned_only=*/false);
         // Hidden colliders cannot be grabbed.
@@ -56,21 +56,31 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         if (student_ && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {
           gesture = MouseGesture::none;
         }
+        // What the gesture does to the simulation waits for a running batch; the camera and
+        // what the mouse holds are decided now, on the state drawn.
+        const Ray ray = ray_at(at);
+        const Eigen::Vector3f forward = camera_forward(camera_);
         switch (gesture) {
           case MouseGesture::grab_collider:
-            collider_drag_.grab(*simulation_, collider->index, collider->point,
-                                camera_forward(camera_));
+            mouse_holds_ = true;
+            change([this, hit = *collider, forward] {
+              collider_drag_.grab(*simulation_, hit.index, hit.point, forward);
+            });
             break;
           case MouseGesture::grab_pin:
           case MouseGesture::grab_free_vertex:
-            drag_.grab(*simulation_, vertex, ray_at(at), camera_forward(camera_));
+            mouse_holds_ = true;
+            change(
+                [this, vertex, ray, forward] { drag_.grab(*simulation_, vertex, ray, forward); });
             break;
           case MouseGesture::toggle_pin:
-            if (simulation_->is_pinned(vertex)) {
-              simulation_->unpin(vertex);
-            } else {
-              simulation_->pin(vertex);
-            }
+            change([this, vertex] {
+              if (simulation_->is_pinned(vertex)) {
+                simulation_->unpin(vertex);
+              } else {
+                simulation_->pin(vertex);
+              }
+            });
             break;
           case MouseGesture::orbit:
             mode_ = Mode::orbit;
@@ -84,15 +94,24 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         break;
       }
       case InputEvent::Type::button_release:
-        drag_.release(*simulation_);
-        collider_drag_.release();
+        if (mouse_holds_) {
+          change([this] {
+            drag_.release(*simulation_);
+            collider_drag_.release();
+          });
+        }
+        mouse_holds_ = false;
         mode_ = Mode::idle;
         break;
       case InputEvent::Type::cursor_move: {
         const Eigen::Vector2f delta = raw - raw_cursor_;
         raw_cursor_ = raw;
-        if (drag_.active()) drag_.move(*simulation_, ray_at(at));
-        if (collider_drag_.active()) collider_drag_.move(*simulation_, ray_at(at));
+        if (mouse_holds_) {
+          change([this, ray = ray_at(at)] {
+            if (drag_.active()) drag_.move(*simulation_, ray);
+            if (collider_drag_.active()) collider_drag_.move(*simulation_, ray);
+          });
+        }
         if (mode_ == Mode::orbit) {
           orbit_camera(camera_, delta.x(), delta.y(), window_size_.y(), camera_limits_);
         }
@@ -119,31 +138,35 @@ void Viewer::apply(ViewerCommand command) {
       step_requested_ = true;
       break;
     case ViewerCommand::reset:
-      if (drag_.active()) drag_.cancel();
-      collider_drag_.cancel();  // reset puts the colliders back
-      simulation_->reset();
-      reset_twin();
-      clear_instruments();
-      drag_script_.restart();
-      step_warning_.clear();
+      change([this] {
+        if (drag_.active()) drag_.cancel();
+        collider_drag_.cancel();  // reset puts the colliders back
+        simulation_->reset();
+        reset_twin();
+        clear_instruments();
+        drag_script_.restart();
+        step_warning_.clear();
+      });
       break;
     case ViewerCommand::toggle_split:
       panel_.split = !panel_.split;
-      apply_split_settings();
+      change([this] { apply_split_settings(); });
       break;
     case ViewerCommand::toggle_plots: {
       // Both plots together: a class wants the two side by side.
       const bool show = !(panel_.show_convergence && panel_.show_energy);
       panel_.show_convergence = panel_.show_energy = show;
-      update_recording();
+      change([this] { update_recording(); });
       break;
     }
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;
       break;
     case ViewerCommand::toggle_wind:
-      simulation_->set_wind(toggled_wind(simulation_->params().wind));
-      show_environment_in_panel();
+      change([this] {
+        simulation_->set_wind(toggled_wind(simulation_->params().wind));
+        show_environment_in_panel();
+      });
       break;
     case ViewerCommand::toggle_colliders:
       panel_.colliders = !panel_.colliders;
@@ -176,16 +199,18 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::screenshot:
       screenshot_requested_ = true;
       break;
-    case ViewerCommand::export_obj: {
-      const std::string path = unused_file_name(".", "wobble-" + scene_.name, ".obj");
-      try {
-        write_obj(path, simulation_->positions(), scene_.network.F, scene_.network.E);
-        saved("exported " + path);
-      } catch (const std::exception& error) {
-        saved(std::string("export failed: ") + error.what());
-      }
+    case ViewerCommand::export_obj:
+      // The state the user sees, once a running batch finished.
+      change([this] {
+        const std::string path = unused_file_name(".", "wobble-" + scene_.name, ".obj");
+        try {
+          write_obj(path, simulation_->positions(), scene_.network.F, scene_.network.E);
+          saved("exported " + path);
+        } catch (const std::exception& error) {
+          saved(std::string("export failed: ") + error.what());
+        }
+      });
       break;
-    }
     case ViewerCommand::close_overlays:
       panel_.show_help = false;
       break;

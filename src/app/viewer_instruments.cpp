@@ -57,17 +57,6 @@ void Viewer::update_recording() {
   if (simulation_->records_convergence() != on) simulation_->set_convergence_recording(on);
 }
 
-void Viewer::record_instruments() {
-  if (panel_.show_convergence) {
-    const ConvergenceTrace& trace = simulation_->last_convergence();
-    shown_trace_.energy.assign(trace.energy.begin(), trace.energy.end());
-    shown_trace_.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
-    shown_trace_.chebyshev = trace.chebyshev;
-    shown_trace_step_ = simulation_->steps_taken();
-  }
-  if (panel_.show_energy) energy_history_.add(simulation_->time(), frame_energy(*simulation_));
-}
-
 void Viewer::clear_instruments() {
   shown_trace_ = ConvergenceTrace();
   shown_trace_step_ = 0;
@@ -94,9 +83,9 @@ void Viewer::show_instruments(float ui_scale) {
     data.total = &energy_history_.total;
     draw_energy_window(data, panel_.show_energy, ui_scale);
   }
-  // A window closed here stops its recording from the next step on.
+  // A window closed here stops its recording from the next batch on.
   if (!panel_.show_energy) energy_history_.clear();
-  update_recording();
+  if (!batch_started_) update_recording();
 }
 
 }  // namespace wobble

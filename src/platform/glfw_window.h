@@ -28,15 +28,28 @@ class GlfwWindow {
   // Take the events that are waiting (or, with `wait_seconds` > 0, wait up to that long for one
   // to arrive), then hand over what arrived since the last call.
   std::vector<InputEvent> poll_events(double wait_seconds = 0.0);
+  // Wait until input arrives (an event, or a file dropped) or `seconds` passed, whichever comes
+  // first, not woken by wake(): pacing frames where the display does not pace the swaps.
+  std::vector<InputEvent> wait_for_input(double seconds);
+  // Wake a poll_events that waits. Safe from any thread while the window exists.
+  static void wake();
   // Paths of the files dropped on the window since the last call, in the order dropped.
   std::vector<std::string> take_dropped_paths();
   void window_size(int& width, int& height) const;       // in window coordinates
   void framebuffer_size(int& width, int& height) const;  // in pixels
   float content_scale() const;  // 1 on ordinary screens, 2 on most high-DPI ones
   void swap_buffers();
+  // Samples per pixel of the window's framebuffer: 4, or 0 on a software renderer.
+  int samples() const { return samples_; }
 
  private:
+  // Create the window and make its context current, with `samples` per pixel.
+  void open(int width, int height, const std::string& title, int samples);
+  // Whether the current context draws on the CPU (Mesa's llvmpipe and its kin).
+  static bool software_renderer();
+
   GLFWwindow* window_ = nullptr;
+  int samples_ = 0;
   std::vector<InputEvent> events_;
   std::vector<std::string> dropped_;
   double cursor_x_ = 0.0, cursor_y_ = 0.0;  // as of the last event handled

@@ -24,8 +24,8 @@ void section(const char* title) {
 
 const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
 
-// Whether the motion on screen is the simulation's own speed: with one fixed step per frame it
-// runs in slow motion when a frame takes longer than a step simulates.
+// Whether the motion on screen is the simulation's own speed: it runs in slow motion when the
+// steps take longer than they simulate (or, without real time, when a frame does).
 void real_time_rows(const PanelStats& stats, bool paused) {
   ImGui::TextUnformatted("real time");
   ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
@@ -96,6 +96,13 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   requests.default_view = ImGui::Button("View");
   ImGui::SameLine();
   if (ImGui::Button("Help")) settings.show_help = !settings.show_help;
+  ImGui::Checkbox("real time", &settings.real_time);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "On: as many steps before each frame as keep the motion at its true speed,\n"
+        "as far as they fit in a frame (a slower step shows slow motion).\n"
+        "Off: one step a frame.");
+  }
   if (!stats.warning.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, warning_color);
     ImGui::TextWrapped("%s", stats.warning.c_str());

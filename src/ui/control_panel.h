@@ -21,6 +21,9 @@ struct PanelSettings {
   float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
   bool colliders = true;      // colliders shown
   bool paused = false;
+  // Real time: the window takes as many steps before a frame as keep the simulated clock with
+  // the wall clock (up to what fits in a frame); off, one step a frame.
+  bool real_time = true;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
   int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
   int scene = 0;     // index into the scene names
@@ -49,7 +52,7 @@ struct PanelStats {
   // Timings come from the wall clock. Headless images leave them out so that two runs give the
   // same pixels.
   bool show_timings = true;
-  float fps = 0.0f;
+  float fps = 0.0f;  // frames drawn per second, from the median frame time of the last 15
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
   float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
   // Over about the last second: simulated seconds per wall-clock second (< 1: slow motion), and

@@ -1,0 +1,28 @@
+#ifndef WOBBLE_APP_RUN_STATISTICS_H
+#define WOBBLE_APP_RUN_STATISTICS_H
+
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "sim/scene.h"
+#include "sim/simulation.h"
+
+namespace wobble {
+
+// The wall-clock times of a run's steps (ms), as --stats reports them.
+struct StepTimes {
+  std::vector<double> step_ms, local_ms, global_ms;
+  void add(const StepTiming& timing);
+};
+
+// The median of `values` (0 when empty; the mean of the middle two for an even count).
+double median(std::vector<double> values);
+
+// --stats: the scene, the simulation's settings and factor, and the step times' medians (the
+// README lists the keys). Headless adds the render time, the window the UI's frame time.
+nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene& scene, long frames,
+                                      const StepTimes& times);
+
+}  // namespace wobble
+
+#endif
