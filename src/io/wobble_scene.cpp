@@ -114,8 +114,12 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   if (!problem.empty()) throw InputError(mesh.where("file") + ": " + problem);
   const bool fill = mesh.flag("fill").value_or(false);
   const int resolution = mesh.whole("fill_resolution", 2, limits::max_fill_resolution).value_or(12);
+  const bool polygon_springs = mesh.flag("polygon_springs").value_or(true);
+  if (!polygon_springs && (fill || extension_of(file) != ".obj")) {
+    mesh.fail("polygon_springs", "true (false applies to an unfilled .obj only)");
+  }
   Shape shape;
-  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"));
+  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"), polygon_springs);
   const double scale = mesh.number_in("scale", limits::scale).value_or(1.0);
   const Eigen::Vector3d offset =
       mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());
@@ -127,10 +131,40 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   return shape;
 }
 
-// Masses from the material: a density per unit of what the weights measure, or a total mass.
+// `vertex_masses`: one mass (kg) for every vertex, as a saved scene stores them exactly.
+Eigen::VectorXd vertex_masses(JsonFields& material, Eigen::Index vertex_count) {
+  const nlohmann::json& list = material.raw("vertex_masses");
+  const std::string expected = "a list of " + std::to_string(vertex_count) +
+                               " masses, one for every vertex, each " +
+                               within_text(limits::vertex_mass);
+  if (!list.is_array() || static_cast<Eigen::Index>(list.size()) != vertex_count) {
+    material.fail("vertex_masses", expected);
+  }
+  Eigen::VectorXd m(vertex_count);
+  for (Eigen::Index i = 0; i < vertex_count; ++i) {
+    const nlohmann::json& item = list[static_cast<std::size_t>(i)];
+    if (!item.is_number() || !limits::vertex_mass.contains(item.get<double>())) {
+      throw InputError(material.where("vertex_masses") + "[" + std::to_string(i) +
+                       "]: expected a mass " + within_text(limits::vertex_mass) + ", got " +
+                       item.dump());
+    }
+    m(i) = item.get<double>();
+  }
+  return m;
+}
+
+// Masses from the material: a density per unit of what the weights measure, a total mass, or
+// one mass per vertex.
 void set_masses(JsonFields& material, LoadedMesh& mesh) {
   if (material.has("density") && material.has("mass")) {
     material.fail("mass", "either density or mass, not both");
+  }
+  if (material.has("vertex_masses") && (material.has("density") || material.has("mass"))) {
+    material.fail("vertex_masses", "either vertex_masses or a density or mass, not both");
+  }
+  if (material.has("vertex_masses")) {
+    mesh.network.m = vertex_masses(material, mesh.network.V.rows());
+    return;
   }
   const double default_density = mesh.kind == LoadedMesh::Kind::volume    ? 200.0
                                  : mesh.kind == LoadedMesh::Kind::surface ? 0.25
@@ -210,6 +244,20 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
             Eigen::Vector3d(0.0, -*simulation.number_in("gravity", limits::acceleration), 0.0);
       } else {
         scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
+      }
+    }
+    if (const std::optional<std::string> model = simulation.text("gravity_model")) {
+      if (*model == "force_per_vertex") {
+        scene.params.gravity_model = GravityModel::force_per_vertex;
+      } else if (*model != "acceleration") {
+        simulation.fail("gravity_model", "\"acceleration\" or \"force_per_vertex\"");
+      }
+    }
+    if (const std::optional<std::string> first = simulation.text("first_iterate")) {
+      if (*first == "current_positions") {
+        scene.params.first_iterate = FirstIterate::current_positions;
+      } else if (*first != "inertial_prediction") {
+        simulation.fail("first_iterate", "\"inertial_prediction\" or \"current_positions\"");
       }
     }
     scene.params.damping = simulation.number_in("damping", limits::damping).value_or(0.0);
