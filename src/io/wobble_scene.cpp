@@ -8,6 +8,7 @@
 #include "io/load_mesh.h"
 #include "io/png_image.h"
 #include "io/scene_colliders.h"
+#include "io/scene_masses.h"
 #include "io/scene_pins.h"
 #include "io/scene_wind.h"
 #include "io/shape_limits.h"
@@ -131,52 +132,6 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   return shape;
 }
 
-// `vertex_masses`: one mass (kg) for every vertex, as a saved scene stores them exactly.
-Eigen::VectorXd vertex_masses(JsonFields& material, Eigen::Index vertex_count) {
-  const nlohmann::json& list = material.raw("vertex_masses");
-  const std::string expected = "a list of " + std::to_string(vertex_count) +
-                               " masses, one for every vertex, each " +
-                               within_text(limits::vertex_mass);
-  if (!list.is_array() || static_cast<Eigen::Index>(list.size()) != vertex_count) {
-    material.fail("vertex_masses", expected);
-  }
-  Eigen::VectorXd m(vertex_count);
-  for (Eigen::Index i = 0; i < vertex_count; ++i) {
-    const nlohmann::json& item = list[static_cast<std::size_t>(i)];
-    if (!item.is_number() || !limits::vertex_mass.contains(item.get<double>())) {
-      throw InputError(material.where("vertex_masses") + "[" + std::to_string(i) +
-                       "]: expected a mass " + within_text(limits::vertex_mass) + ", got " +
-                       item.dump());
-    }
-    m(i) = item.get<double>();
-  }
-  return m;
-}
-
-// Masses from the material: a density per unit of what the weights measure, a total mass, or
-// one mass per vertex.
-void set_masses(JsonFields& material, LoadedMesh& mesh) {
-  if (material.has("density") && material.has("mass")) {
-    material.fail("mass", "either density or mass, not both");
-  }
-  if (material.has("vertex_masses") && (material.has("density") || material.has("mass"))) {
-    material.fail("vertex_masses", "either vertex_masses or a density or mass, not both");
-  }
-  if (material.has("vertex_masses")) {
-    mesh.network.m = vertex_masses(material, mesh.network.V.rows());
-    return;
-  }
-  const double default_density = mesh.kind == LoadedMesh::Kind::volume    ? 200.0
-                                 : mesh.kind == LoadedMesh::Kind::surface ? 0.25
-                                                                          : 0.01;
-  Eigen::VectorXd& m = mesh.network.m;
-  if (const std::optional<double> mass = material.number_in("mass", limits::total_mass)) {
-    m *= *mass / m.sum();
-  } else {
-    m *= material.number_in("density", limits::density).value_or(default_density);
-  }
-}
-
 }  // namespace
 
 bool is_wobble_scene(const nlohmann::json& object) {
@@ -216,7 +171,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
   if (top.has("material")) {
     JsonFields material = top.object("material");
     scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
-    set_masses(material, shape.mesh);
+    scene_masses(material, shape.mesh);
     scene.params.contact.friction = material.number_in("friction", limits::friction).value_or(0.0);
     for (const std::string& key : material.unread())
       unknown.push_back(key);
@@ -224,7 +179,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     // JsonFields keeps a reference to its object, so the empty one must outlive it.
     const nlohmann::json empty = nlohmann::json::object();
     JsonFields none(path, empty);
-    set_masses(none, shape.mesh);
+    scene_masses(none, shape.mesh);
   }
   check_shape_limits(path, object, shape.mesh.network);
   scene.network = std::move(shape.mesh.network);
