@@ -56,7 +56,7 @@ LoadedMesh volume_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
 }
 
 LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution,
-                    const std::string& fill_key) {
+                    const std::string& fill_key, bool polygon_springs) {
   const ObjMesh obj = read_obj(path);
   const Eigen::MatrixXi triangles = fan_triangles(obj.faces);
   if (fill) {
@@ -83,7 +83,19 @@ LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution,
   }
   LoadedMesh mesh;
   mesh.network.V = obj.V;
-  mesh.network.E = face_springs(obj.faces);
+  if (polygon_springs) {
+    mesh.network.E = face_springs(obj.faces);
+  } else {
+    std::vector<std::vector<int>> two_vertex_faces;
+    for (const std::vector<int>& face : obj.faces) {
+      if (face.size() == 2) two_vertex_faces.push_back(face);
+    }
+    if (two_vertex_faces.empty()) {
+      throw InputError(path + ": no two-vertex faces or `l` lines, expected the springs there " +
+                       "since the scene's mesh.polygon_springs is false");
+    }
+    mesh.network.E = face_springs(two_vertex_faces);
+  }
   mesh.network.F = triangles;
   mesh.uv = obj.uv;
   if (triangles.rows() == 0) {
@@ -145,9 +157,9 @@ std::string mesh_file_problem(const std::string& path) {
 }
 
 LoadedMesh load_mesh(const std::string& path, bool fill, int fill_resolution,
-                     const std::string& fill_key) {
+                     const std::string& fill_key, bool polygon_springs) {
   const std::string extension = extension_of(path);
-  if (extension == ".obj") return obj_mesh(path, fill, fill_resolution, fill_key);
+  if (extension == ".obj") return obj_mesh(path, fill, fill_resolution, fill_key, polygon_springs);
   if (fill) throw InputError(path + ": only an OBJ surface can be filled with tetrahedra");
   if (extension == ".mesh") {
     const TetMeshFile file = read_medit_mesh(path);

@@ -29,8 +29,11 @@ struct LoadedMesh {
 // volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
 // A fill above limits::max_fill_pairs is refused at once, naming `fill_key` (the option or the
 // scene key that asked for it).
+// With `polygon_springs` false (an OBJ only, not filled), faces of three or more vertices are
+// drawn but give no spring: the springs are exactly the two-vertex faces and `l` segments, in
+// file order, so a network whose springs are not its triangles' edges is stored exactly.
 LoadedMesh load_mesh(const std::string& path, bool fill = false, int fill_resolution = 12,
-                     const std::string& fill_key = "--fill");
+                     const std::string& fill_key = "--fill", bool polygon_springs = true);
 
 // Why `path` cannot be read by load_mesh, or "": its extension is unknown, or a file it would
 // read (for TetGen both BASE.node and BASE.ele) is not a regular file within its format's size

@@ -10,6 +10,13 @@ WindParams scene_wind(JsonFields& simulation, const std::string& key,
   JsonFields fields = simulation.object(key);
   WindParams wind;
   wind.model = WindModel::aerodynamic;
+  if (const std::optional<std::string> model = fields.text("model")) {
+    if (*model == "course") {
+      wind.model = WindModel::course;
+    } else if (*model != "aerodynamic") {
+      fields.fail("model", "\"aerodynamic\" or \"course\"");
+    }
+  }
   if (!fields.has("velocity")) {
     throw InputError(fields.where("velocity") +
                      ": missing, expected the air velocity [x, y, z] in m/s");

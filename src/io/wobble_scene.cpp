@@ -8,6 +8,7 @@
 #include "io/load_mesh.h"
 #include "io/png_image.h"
 #include "io/scene_colliders.h"
+#include "io/scene_masses.h"
 #include "io/scene_pins.h"
 #include "io/scene_wind.h"
 #include "io/shape_limits.h"
@@ -114,8 +115,12 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   if (!problem.empty()) throw InputError(mesh.where("file") + ": " + problem);
   const bool fill = mesh.flag("fill").value_or(false);
   const int resolution = mesh.whole("fill_resolution", 2, limits::max_fill_resolution).value_or(12);
+  const bool polygon_springs = mesh.flag("polygon_springs").value_or(true);
+  if (!polygon_springs && (fill || extension_of(file) != ".obj")) {
+    mesh.fail("polygon_springs", "true (false applies to an unfilled .obj only)");
+  }
   Shape shape;
-  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"));
+  shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"), polygon_springs);
   const double scale = mesh.number_in("scale", limits::scale).value_or(1.0);
   const Eigen::Vector3d offset =
       mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());
@@ -125,22 +130,6 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   if (shape.mesh.kind == LoadedMesh::Kind::volume) network.m *= scale * scale * scale;
   if (shape.mesh.kind == LoadedMesh::Kind::volume) shape.default_k = 1500.0;
   return shape;
-}
-
-// Masses from the material: a density per unit of what the weights measure, or a total mass.
-void set_masses(JsonFields& material, LoadedMesh& mesh) {
-  if (material.has("density") && material.has("mass")) {
-    material.fail("mass", "either density or mass, not both");
-  }
-  const double default_density = mesh.kind == LoadedMesh::Kind::volume    ? 200.0
-                                 : mesh.kind == LoadedMesh::Kind::surface ? 0.25
-                                                                          : 0.01;
-  Eigen::VectorXd& m = mesh.network.m;
-  if (const std::optional<double> mass = material.number_in("mass", limits::total_mass)) {
-    m *= *mass / m.sum();
-  } else {
-    m *= material.number_in("density", limits::density).value_or(default_density);
-  }
 }
 
 }  // namespace
@@ -182,7 +171,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
   if (top.has("material")) {
     JsonFields material = top.object("material");
     scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
-    set_masses(material, shape.mesh);
+    scene_masses(material, shape.mesh);
     scene.params.contact.friction = material.number_in("friction", limits::friction).value_or(0.0);
     for (const std::string& key : material.unread())
       unknown.push_back(key);
@@ -190,7 +179,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     // JsonFields keeps a reference to its object, so the empty one must outlive it.
     const nlohmann::json empty = nlohmann::json::object();
     JsonFields none(path, empty);
-    set_masses(none, shape.mesh);
+    scene_masses(none, shape.mesh);
   }
   check_shape_limits(path, object, shape.mesh.network);
   scene.network = std::move(shape.mesh.network);
@@ -210,6 +199,20 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
             Eigen::Vector3d(0.0, -*simulation.number_in("gravity", limits::acceleration), 0.0);
       } else {
         scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
+      }
+    }
+    if (const std::optional<std::string> model = simulation.text("gravity_model")) {
+      if (*model == "force_per_vertex") {
+        scene.params.gravity_model = GravityModel::force_per_vertex;
+      } else if (*model != "acceleration") {
+        simulation.fail("gravity_model", "\"acceleration\" or \"force_per_vertex\"");
+      }
+    }
+    if (const std::optional<std::string> first = simulation.text("first_iterate")) {
+      if (*first == "current_positions") {
+        scene.params.first_iterate = FirstIterate::current_positions;
+      } else if (*first != "inertial_prediction") {
+        simulation.fail("first_iterate", "\"inertial_prediction\" or \"current_positions\"");
       }
     }
     scene.params.damping = simulation.number_in("damping", limits::damping).value_or(0.0);

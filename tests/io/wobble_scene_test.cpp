@@ -192,6 +192,25 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
        "camera.target: expected both a position and a target"},
       {R"({"mesh": {"generator": "cloth"},)", "line 1: malformed JSON"},
       {R"({"something": 1})", "not a scene"},
+      // The keys a saved scene uses to state its network and settings exactly.
+      {R"({"mesh": {"generator": "cloth", "resolution": 2}, "material": {"vertex_masses": [1]}})",
+       "material.vertex_masses: expected a list of 4 masses, one for every vertex"},
+      {R"({"mesh": {"generator": "cloth", "resolution": 2},
+           "material": {"vertex_masses": [1, 1, 0, 1]}})",
+       "material.vertex_masses[2]: expected a mass within the limits"},
+      {R"({"mesh": {"generator": "cloth", "resolution": 2},
+           "material": {"vertex_masses": [1, 1, 1, 1], "density": 2}})",
+       "material.vertex_masses: expected either vertex_masses or a density or mass"},
+      {R"({"mesh": {"generator": "cloth"}, "simulation": {"gravity_model": "heavy"}})",
+       "simulation.gravity_model: expected \"acceleration\" or \"force_per_vertex\""},
+      {R"({"mesh": {"generator": "cloth"}, "simulation": {"first_iterate": "zero"}})",
+       "simulation.first_iterate: expected \"inertial_prediction\" or \"current_positions\""},
+      {R"({"mesh": {"generator": "cloth"},
+           "simulation": {"wind": {"velocity": [1, 0, 0], "model": "storm"}}})",
+       "simulation.wind.model: expected \"aerodynamic\" or \"course\""},
+      {R"({"mesh": {"file": ")" + std::string(WOBBLE_ASSETS_DIR) +
+           R"(/meshes/jelly_cube.mesh", "polygon_springs": false}})",
+       "mesh.polygon_springs: expected true (false applies to an unfilled .obj only)"},
   };
   for (const auto& [json, expected] : cases) {
     const std::string message = error_of(json);

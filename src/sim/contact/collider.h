@@ -55,7 +55,7 @@ Eigen::Vector3d collider_anchor(const Collider& collider);
 // Throws InputError unless the collider's numbers are finite and within sim/value_limits.h
 // (sizes within limits::collider_size, positions within limits::coordinate, a plane normal not
 // zero, friction negative or within limits::friction). `what` starts the message: "collider 2".
-// Normalizes a plane's normal.
+// Normalizes a plane's normal (one already of unit length up to 4 ulps is left as it is).
 void validate_collider(Collider& collider, const std::string& what);
 
 }  // namespace wobble

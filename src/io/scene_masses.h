@@ -1,0 +1,19 @@
+#ifndef WOBBLE_IO_SCENE_MASSES_H
+#define WOBBLE_IO_SCENE_MASSES_H
+
+#include "io/json_fields.h"
+#include "io/load_mesh.h"
+
+namespace wobble {
+
+// Turn the mass weights of `mesh` (areas, volumes or ones, see LoadedMesh) into masses in kg as
+// a Wobble scene's `material` says: `density` (per unit of what the weights measure; by default
+// 0.25 kg/m² for surfaces, 200 kg/m³ for volumes, 0.01 kg a vertex for lines), `mass` (the total,
+// spread like the density), or `vertex_masses` (one mass for every vertex, replacing the
+// weights: how a saved scene stores its masses exactly). At most one of the three. Throws
+// InputError naming the key and what was expected.
+void scene_masses(JsonFields& material, LoadedMesh& mesh);
+
+}  // namespace wobble
+
+#endif
