@@ -7,7 +7,10 @@ namespace wobble {
 
 ViewerCommand command_for_key(int key, bool control) {
   // Esc is what a presenter presses to back out of something: it must never end the demo.
-  if (control) return key == GLFW_KEY_Q ? ViewerCommand::quit : ViewerCommand::none;
+  if (control) {
+    if (key == GLFW_KEY_Q) return ViewerCommand::quit;
+    return key == GLFW_KEY_S ? ViewerCommand::save_scene : ViewerCommand::none;
+  }
   switch (key) {
     case GLFW_KEY_SPACE:
       return ViewerCommand::toggle_pause;
@@ -43,6 +46,8 @@ ViewerCommand command_for_key(int key, bool control) {
       return ViewerCommand::toggle_panel;
     case GLFW_KEY_F11:
       return ViewerCommand::export_obj;
+    case GLFW_KEY_F9:
+      return ViewerCommand::toggle_record;
     case GLFW_KEY_ESCAPE:
       return ViewerCommand::close_overlays;
     default:
@@ -85,6 +90,8 @@ const std::vector<Binding>& viewer_bindings() {
       {"Tab", "the control panel shown / hidden"},
       {"F12", "screenshot: wobble-SCENE-0001.png, ... in the working folder"},
       {"F11", "export the current positions: wobble-SCENE-0001.obj, ..."},
+      {"F9", "record on / off: each new state as a PNG in wobble-SCENE-frames-0001/"},
+      {"Ctrl+S", "save the scene, its pins and settings: wobble-SCENE-scene-0001.json"},
       {"H", "this help on / off"},
       {"Esc", "close the help (never quits)"},
       {"Ctrl+Q", "quit (or the window's close button)"},

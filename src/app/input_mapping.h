@@ -24,6 +24,8 @@ enum class ViewerCommand {
   screenshot,      // the window as a PNG in the working folder
   toggle_panel,    // Tab: the control panel shown / hidden
   export_obj,      // the current positions as an OBJ in the working folder
+  save_scene,      // Ctrl+S: the scene, its pins and settings as a Wobble scene file
+  toggle_record,   // F9: write every new state drawn as a PNG, into a new folder
   frame_mesh,      // frame the shape and the room it moves in, beside the panel
   default_view,    // back to the view the scene opened with
   close_overlays,  // Esc: the help overlay (ImGui closes its own menus and edits)
@@ -31,7 +33,8 @@ enum class ViewerCommand {
 };
 
 // The command for a GLFW key code (GLFW_KEY_*); none for keys without one.
-// With Ctrl held only Ctrl+Q means something (quit); Esc never quits, it closes the help.
+// With Ctrl held only Ctrl+Q (quit) and Ctrl+S (save the scene) mean something; Esc never
+// quits, it closes the help.
 ViewerCommand command_for_key(int key, bool control = false);
 
 // What pressing a mouse button starts, given what is under the cursor.

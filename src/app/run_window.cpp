@@ -20,6 +20,7 @@
 #include "run_statistics.h"
 #include "scene_catalog.h"
 #include "viewer.h"
+#include "window_recorder.h"
 #include "window_saves.h"
 
 namespace wobble {
@@ -63,6 +64,39 @@ void save_screenshot(Viewer& viewer, int width, int height) {
   }
 }
 
+// The panel's record toggle (F9): each new state drawn while it is on, into a folder of its own.
+// `recorded_step` is the step count of the last frame written.
+void record_from_window(Viewer& viewer, WindowRecorder& recorder, long& recorded_step, int width,
+                        int height) {
+  if (viewer.recording() && !recorder.active()) {
+    try {
+      recorder.start(viewer.scene().name);
+    } catch (const std::exception& error) {
+      viewer.saved(std::string("recording failed: ") + error.what());
+      viewer.stop_recording();
+    }
+    recorded_step = -1;
+  }
+  if (!viewer.recording() && recorder.active()) viewer.saved(recorder.stop());
+  const long steps = viewer.shown_steps();
+  if (recorder.active() && steps != recorded_step && width > 0 && height > 0) {
+    RgbaImage image;
+    image.width = width;
+    image.height = height;
+    glReadBuffer(GL_BACK);
+    read_framebuffer_rgba(width, height, image.pixels);
+    try {
+      recorder.write(image);
+    } catch (const std::exception& error) {
+      viewer.saved(recorder.stop());
+      viewer.saved(std::string("recording stopped: ") + error.what());
+      viewer.stop_recording();
+    }
+    recorded_step = steps;
+  }
+  viewer.set_recording_status(recorder.status());
+}
+
 }  // namespace
 
 int run_window(const CommandLine& command, std::ostream& out, std::ostream& progress) {
@@ -95,6 +129,8 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
 
   RgbaImage image;
   long recorded_steps = 0;
+  WindowRecorder recorder(".", progress);
+  long window_recorded_step = -1;
   RealTimeMeter real_time;
   MovingMedian frame_ms;            // the panel's fps
   std::vector<double> ui_frame_ms;  // --stats: each frame's own time while the simulation plays
@@ -172,8 +208,10 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
         viewer.render(width, height, window_size, window_width > 0 ? width / window_size.x() : 1);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       }
-      if (viewer.take_screenshot_request() && width > 0 && height > 0)
+      if (viewer.take_screenshot_request() && width > 0 && height > 0) {
         save_screenshot(viewer, width, height);
+      }
+      record_from_window(viewer, recorder, window_recorded_step, width, height);
       // --record: each step's state once, numbered by the step; --frames ends once step N is
       // drawn, and --screenshot is that picture.
       const bool last = command.frames && shown.steps >= *command.frames;

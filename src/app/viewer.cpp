@@ -238,6 +238,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.fps = timings.fps;
   stats.real_time_factor = timings.real_time_factor;
   stats.steps_per_second = timings.steps_per_second;
+  stats.recording = recording_status_;
   const StepTiming& step = last_timing_;
   stats.step_ms = step_ms_.median();
   stats.local_ms = local_ms_.median();
@@ -285,6 +286,9 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   if (requests.step_once) apply(ViewerCommand::step_once);
   if (requests.reset) apply(ViewerCommand::reset);
   if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
+  if (requests.save_scene) apply(ViewerCommand::save_scene);
+  if (requests.export_obj) apply(ViewerCommand::export_obj);
+  if (requests.screenshot) apply(ViewerCommand::screenshot);
   if (requests.default_view) apply(ViewerCommand::default_view);
 }
 

@@ -103,6 +103,11 @@ class Viewer {
   }
   // Tell the user, among the panel's notes, that a file was written or why not.
   void saved(const std::string& what) { scene_.notes.push_back(what); }
+  // Whether the window is to write each new state drawn as a PNG (the panel's "record", F9),
+  // and what the panel says about it meanwhile ("DIR/ (N frames)"; empty when not recording).
+  bool recording() const { return panel_.recording; }
+  void stop_recording() { panel_.recording = false; }
+  void set_recording_status(std::string status) { recording_status_ = std::move(status); }
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();
@@ -223,6 +228,8 @@ class Viewer {
   PanelStats simulation_stats() const;
 
   void apply(ViewerCommand command);
+  // Ctrl+S: the scene with its pins and settings as wobble-SCENE-scene-NNNN.json (scene_save.h).
+  void save_scene();
   void apply_panel_settings();
   // viewer_environment.cpp: damping, friction, wind and colliders.
   void show_environment_in_panel();
@@ -308,6 +315,7 @@ class Viewer {
   bool mouse_holds_ = false;
   bool quit_ = false;
   bool screenshot_requested_ = false;
+  std::string recording_status_;
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
   StepTiming last_timing_;                       // the last good step's
   bool step_requested_ = false;

@@ -4,6 +4,7 @@
 #include "collider_picking.h"
 #include "environment_controls.h"
 #include "io/write_obj.h"
+#include "scene_save.h"
 #include "window_saves.h"
 
 namespace wobble {
@@ -128,6 +129,18 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
   }
 }
 
+void Viewer::save_scene() {
+  const std::string path = unused_file_name(".", "wobble-" + scene_.name + "-scene", ".json");
+  try {
+    const Eigen::Vector3d eye = camera_eye(camera_).cast<double>();
+    save_current_scene(path, scene_, *simulation_,
+                       std::make_pair(eye, Eigen::Vector3d(camera_.target.cast<double>())));
+    saved("saved the scene as " + path + " (wobble " + path + " opens it)");
+  } catch (const std::exception& error) {
+    saved(std::string("saving the scene failed: ") + error.what());
+  }
+}
+
 void Viewer::apply(ViewerCommand command) {
   switch (command) {
     case ViewerCommand::toggle_pause:
@@ -210,6 +223,12 @@ void Viewer::apply(ViewerCommand command) {
           saved(std::string("export failed: ") + error.what());
         }
       });
+      break;
+    case ViewerCommand::save_scene:
+      change([this] { save_scene(); });  // the settings of the state drawn
+      break;
+    case ViewerCommand::toggle_record:
+      panel_.recording = !panel_.recording;
       break;
     case ViewerCommand::close_overlays:
       panel_.show_help = false;

@@ -84,6 +84,32 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   if ((ImGui::Button("Open") || entered) && settings.open_path[0] != '\0') {
     requests.open_path = settings.open_path;
   }
+  // Files into the working folder, each under the next free number.
+  requests.save_scene = ImGui::Button("Save scene");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Ctrl+S: the scene with its pins and settings as wobble-SCENE-scene-0001.json\n"
+        "and its mesh beside it; wobble opens it as it is now (from rest)");
+  }
+  ImGui::SameLine();
+  requests.export_obj = ImGui::Button("OBJ");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("F11: the current positions as wobble-SCENE-0001.obj");
+  ImGui::SameLine();
+  requests.screenshot = ImGui::Button("PNG");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: the window as wobble-SCENE-0001.png");
+  ImGui::SameLine();
+  ImGui::Checkbox("record", &settings.recording);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "F9: every new state drawn as DIR/frame_00001.png, ...\n"
+        "into a new folder wobble-SCENE-frames-0001");
+  }
+  if (!stats.recording.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("recording to %s", stats.recording.c_str());
+    ImGui::PopStyleColor();
+  }
 
   if (ImGui::Button(settings.paused ? "Play" : "Pause")) settings.paused = !settings.paused;
   ImGui::SameLine();

@@ -30,6 +30,7 @@ struct PanelSettings {
   bool show_help = false;
   char open_path[512] = "";       // the "open" field's text
   bool show_panel = true;         // Tab hides it
+  bool recording = false;         // every new state drawn written as a PNG (F9)
   float ui_scale = 1.0f;          // fonts and the panel, times the screen's scale (projectors)
   bool show_convergence = false;  // the last step's convergence plot
   bool show_energy = false;       // the energy-over-time plot
@@ -69,6 +70,7 @@ struct PanelStats {
   bool course_scene = false;       // the course's format: Chebyshev is not offered
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
+  std::string recording;           // while recording: "DIR/ (N frames)"
 };
 
 // Where the panel lies, in ImGui's display units (the window's, from its top-left corner), so
@@ -87,6 +89,9 @@ struct PanelRequests {
   bool scene_changed = false;     // the picker chose a scene (the current one again: reopen it)
   bool restore_defaults = false;  // the scene as it opened, every setting included
   std::string open_path;          // a scene or mesh file to open (the "open" field), or empty
+  bool save_scene = false;        // save the scene with its pins and settings (Ctrl+S)
+  bool export_obj = false;        // the current positions as an OBJ (F11)
+  bool screenshot = false;        // the window as a PNG (F12)
   PanelPlace place;
 };
 

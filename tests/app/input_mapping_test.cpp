@@ -34,7 +34,9 @@ TEST(InputMapping, KeysTheIssueAsksFor) {
   // Only Ctrl+Q quits; Esc, with or without Ctrl, never does.
   EXPECT_EQ(wobble::command_for_key(GLFW_KEY_Q, /*control=*/true), ViewerCommand::quit);
   EXPECT_EQ(wobble::command_for_key(GLFW_KEY_ESCAPE, /*control=*/true), ViewerCommand::none);
-  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_S, /*control=*/true), ViewerCommand::none);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_S, /*control=*/true), ViewerCommand::save_scene);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_R, /*control=*/true), ViewerCommand::none);
+  EXPECT_EQ(wobble::command_for_key(GLFW_KEY_F9), ViewerCommand::toggle_record);
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key)
     EXPECT_NE(wobble::command_for_key(key), ViewerCommand::quit) << "key " << key;
   EXPECT_EQ(wobble::command_for_key(GLFW_KEY_UNKNOWN), ViewerCommand::none);
@@ -47,7 +49,7 @@ TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
       {GLFW_KEY_P, "P"},         {GLFW_KEY_L, "L"}, {GLFW_KEY_H, "H"},     {GLFW_KEY_F, "F"},
       {GLFW_KEY_ESCAPE, "Esc"},  {GLFW_KEY_E, "E"}, {GLFW_KEY_C, "C"},     {GLFW_KEY_V, "V"},
       {GLFW_KEY_G, "G"},         {GLFW_KEY_2, "2"}, {GLFW_KEY_F12, "F12"}, {GLFW_KEY_F11, "F11"},
-      {GLFW_KEY_TAB, "Tab"},     {GLFW_KEY_O, "O"}};
+      {GLFW_KEY_TAB, "Tab"},     {GLFW_KEY_O, "O"}, {GLFW_KEY_F9, "F9"}};
   for (int key = GLFW_KEY_SPACE; key <= GLFW_KEY_LAST; ++key) {
     if (wobble::command_for_key(key) == ViewerCommand::none) continue;
     ASSERT_TRUE(names.count(key)) << "key " << key << " has a command but no name here";
@@ -56,6 +58,10 @@ TEST(InputMapping, EveryKeyCommandIsInTheHelp) {
       listed = listed || binding.input == names.at(key);
     EXPECT_TRUE(listed) << names.at(key) << " is missing from the help";
   }
+  bool ctrl_s = false;
+  for (const wobble::Binding& binding : wobble::viewer_bindings())
+    ctrl_s = ctrl_s || binding.input == "Ctrl+S";
+  EXPECT_TRUE(ctrl_s) << "Ctrl+S is missing from the help";
 }
 
 TEST(InputMapping, MouseOverTheUiGoesToTheUiOnly) {

@@ -561,6 +561,43 @@ TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
   std::filesystem::current_path(before);
 }
 
+TEST(Viewer, CtrlSSavesTheSceneWithItsPinsAndSettingsAndItOpensSo) {
+  wobble::testing::TemporaryFolder folder;
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(folder.path());
+  {
+    ViewerFixture f;
+    const int vertex = 40 * 20 + 20;  // the middle of the cloth, free
+    const Eigen::Vector2f at = f.on_screen(vertex);
+    f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*control=*/true);
+    f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
+    f.press_key(GLFW_KEY_W);  // the wind on
+    f.frame();
+    f.press_key(GLFW_KEY_S, /*control=*/true);
+    f.press_key(GLFW_KEY_S, /*control=*/true);
+    ASSERT_TRUE(std::filesystem::exists("wobble-cloth-scene-0001.json"))
+        << f.viewer.scene().notes.back();
+    EXPECT_TRUE(std::filesystem::exists("wobble-cloth-scene-0001.obj"));
+    EXPECT_TRUE(std::filesystem::exists("wobble-cloth-scene-0002.json"));
+    EXPECT_NE(f.viewer.scene().notes.back().find("saved the scene as ./wobble-cloth-scene-0002"),
+              std::string::npos)
+        << f.viewer.scene().notes.back();
+    const wobble::Scene saved = wobble::load_scene("wobble-cloth-scene-0001.json");
+    std::vector<int> pins = saved.pins;
+    std::sort(pins.begin(), pins.end());
+    EXPECT_EQ(pins, f.viewer.simulation().pinned_vertices());
+    EXPECT_TRUE(std::find(pins.begin(), pins.end(), vertex) != pins.end());
+    EXPECT_TRUE(saved.params.wind.on);
+    EXPECT_EQ(saved.params.k, f.viewer.simulation().params().k);
+    // It opens at the camera the window had.
+    ASSERT_TRUE(saved.look.camera_position.has_value());
+    EXPECT_LT(
+        (saved.look.camera_position->cast<float>() - wobble::camera_eye(f.viewer.camera())).norm(),
+        1e-4f);
+  }
+  std::filesystem::current_path(before);
+}
+
 TEST(Viewer, TabHidesThePanel) {
   ViewerFixture f;
   EXPECT_TRUE(f.viewer.panel_shown());
