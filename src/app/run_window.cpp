@@ -132,7 +132,8 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
   WindowRecorder recorder(".", progress);
   long window_recorded_step = -1;
   RealTimeMeter real_time;
-  MovingMedian frame_ms;            // the panel's fps
+  MovingMedian frame_ms;            // the panel's fps: from one frame to the next
+  MovingMedian ui_work_ms;          // the panel's UI frame time: poll to swap
   std::vector<double> ui_frame_ms;  // --stats: each frame's own time while the simulation plays
   const auto start = std::chrono::steady_clock::now();
   const auto seconds_since_start = [&start] {
@@ -183,6 +184,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
       // 3. UI
       PanelStats timings;
       timings.fps = frame_ms.median() > 0.0f ? 1e3f / frame_ms.median() : 0.0f;
+      timings.ui_frame_ms = ui_work_ms.median();
       timings.real_time_factor = static_cast<float>(real_time.real_time_factor());
       timings.steps_per_second = static_cast<float>(real_time.steps_per_second());
       viewer.build_ui(timings, ui_scale);
@@ -230,6 +232,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
       window.swap_buffers();
       // The UI's own time for a frame, from input to a picture, while the simulation plays:
       // what a drag or a click waits for, and never a step.
+      ui_work_ms.add(static_cast<float>(1e3 * (seconds_since_start() - now)));
       if (command.stats && !viewer.paused()) {
         ui_frame_ms.push_back(1e3 * (seconds_since_start() - now));
       }

@@ -218,7 +218,10 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
 
   section("stats");
   if (stats.show_timings) {
-    stat_row("fps", "%.1f", stats.fps);
+    // Frames come when there is something new to draw; each takes the UI this long, steps apart.
+    ImGui::TextUnformatted("fps");
+    ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
+    ImGui::Text("%.1f (a frame %.1f ms)", stats.fps, stats.ui_frame_ms);
     real_time_rows(stats, settings.paused);
     stat_row("step", "%.2f ms", stats.step_ms);
     stat_row("  local", "%.2f ms", stats.local_ms);

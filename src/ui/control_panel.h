@@ -53,7 +53,8 @@ struct PanelStats {
   // Timings come from the wall clock. Headless images leave them out so that two runs give the
   // same pixels.
   bool show_timings = true;
-  float fps = 0.0f;  // frames drawn per second, from the median frame time of the last 15
+  float fps = 0.0f;          // frames drawn per second, from the median frame time of the last 15
+  float ui_frame_ms = 0.0f;  // the UI's own time for a frame (median of the last 15), no step in it
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
   float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
   // Over about the last second: simulated seconds per wall-clock second (< 1: slow motion), and
