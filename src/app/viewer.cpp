@@ -205,7 +205,7 @@ void Viewer::load(Scene scene) {
   texture_ = std::move(texture);
   if (split) start_split(*split);
   if (!student_server_.empty()) start_student();
-  update_vertex_arrays();
+  arrays_stale_ = true;  // the split view's side, if any, is drawn from the next render
   copy_shown_figures();
   if (renderer_) attach_renderer();
 }
@@ -336,6 +336,7 @@ PanelStats Viewer::simulation_stats() const {
 }
 
 void Viewer::update_vertex_arrays() {
+  arrays_stale_ = false;
   const Eigen::MatrixXd& p = simulation_->positions();
   const int n = static_cast<int>(p.rows());
   for (int i = 0; i < n; ++i) {
@@ -370,9 +371,9 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // Split, each side gets half the width, under the same camera.
   window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
   const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
-  // Between batches the state is read afresh (a paused drag moves the drawn pin); while one
-  // runs, the state it started from is drawn.
-  if (!batch_started_) update_vertex_arrays();
+  // Between batches a change made since the last refresh is read afresh (a paused drag moves
+  // the drawn pin); while a batch runs, the state it started from is drawn.
+  if (!batch_started_ && arrays_stale_) update_vertex_arrays();
   const int n = static_cast<int>(positions_.size() / 3);
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   if (frame_on_next_render_) frame_camera(aspect);

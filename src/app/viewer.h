@@ -348,7 +348,9 @@ class Viewer {
   bool cursor_over_ui_ = false;
   int hovered_pin_ = -1;
 
-  // What the renderer draws, as plain arrays refreshed every frame.
+  // What the renderer draws, as plain arrays refreshed between batches. Stale after a change
+  // the last refresh did not see (render then refreshes them).
+  bool arrays_stale_ = false;
   std::vector<unsigned> triangles_, springs_;
   std::vector<float> positions_, normals_;
   std::vector<unsigned char> marks_, pinned_flags_;

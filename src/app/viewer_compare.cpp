@@ -34,6 +34,7 @@ void Viewer::start_split(const CompareSettings& settings) {
   camera_.lens_shift.setZero();
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
+  arrays_stale_ = true;  // the right side's arrays fill at the next refresh or render
 }
 
 void Viewer::stop_split() {

@@ -14,6 +14,7 @@ void Viewer::change(std::function<void()> what) {
     pending_.push_back(std::move(what));
   } else {
     what();
+    arrays_stale_ = true;  // the next render reads the state afresh
   }
 }
 
