@@ -9,6 +9,7 @@
 
 #include "app/picking.h"
 #include "app/viewer.h"
+#include "viewer_screen.h"
 
 namespace {
 
@@ -81,11 +82,7 @@ struct CameraFixture {
   }
   // Where vertex i is drawn, in window coordinates.
   Eigen::Vector2f on_screen(int i) const {
-    const Eigen::Matrix4f view_projection =
-        wobble::projection_matrix(viewer.camera(), window.x() / window.y()) *
-        wobble::view_matrix(viewer.camera());
-    const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
-    return wobble::project_to_window(view_projection, p, window)->head<2>();
+    return wobble::testing::vertex_on_screen(viewer, i, window);
   }
   wobble::Viewer viewer;
 };

@@ -1,6 +1,7 @@
 // The viewer's input path, in-process and without GL: synthetic mouse and key events go through
 // Viewer::handle_events exactly as the window delivers them, and the simulation must respond.
 #include "app/viewer.h"
+#include "viewer_screen.h"
 
 #include <gtest/gtest.h>
 
@@ -28,11 +29,7 @@ struct ViewerFixture {
   }
   // Where vertex i is drawn, in window coordinates.
   Eigen::Vector2f on_screen(int i) const {
-    const Eigen::Matrix4f view_projection =
-        wobble::projection_matrix(viewer.camera(), window.x() / window.y()) *
-        wobble::view_matrix(viewer.camera());
-    const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
-    return wobble::project_to_window(view_projection, p, window)->head<2>();
+    return wobble::testing::vertex_on_screen(viewer, i, window);
   }
   void send(InputEvent::Type type, const Eigen::Vector2f& at, int code = 0, bool control = false,
             bool ui_wants_mouse = false) {

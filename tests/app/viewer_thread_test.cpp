@@ -10,9 +10,8 @@
 #include <memory>
 #include <thread>
 
-#include "app/picking.h"
 #include "app/viewer.h"
-#include "render/camera.h"
+#include "viewer_screen.h"
 
 namespace {
 
@@ -42,11 +41,7 @@ std::unique_ptr<wobble::Viewer> cloth(
 }
 
 Eigen::Vector2f on_screen(const wobble::Viewer& viewer, int i) {
-  const Eigen::Matrix4f view_projection =
-      wobble::projection_matrix(viewer.camera(), window.x() / window.y()) *
-      wobble::view_matrix(viewer.camera());
-  const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
-  return wobble::project_to_window(view_projection, p, window)->head<2>();
+  return wobble::testing::vertex_on_screen(viewer, i, window);
 }
 
 void control_click(wobble::Viewer& viewer, const Eigen::Vector2f& at) {

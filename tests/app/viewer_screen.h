@@ -1,0 +1,24 @@
+#ifndef WOBBLE_TESTS_APP_VIEWER_SCREEN_H
+#define WOBBLE_TESTS_APP_VIEWER_SCREEN_H
+
+#include <Eigen/Core>
+
+#include "app/picking.h"
+#include "app/viewer.h"
+#include "render/camera.h"
+
+namespace wobble::testing {
+
+// Where the viewer's camera draws vertex i of its simulation, in the coordinates of a window of
+// `window` size (as the mouse events use them).
+inline Eigen::Vector2f vertex_on_screen(const Viewer& viewer, int i,
+                                        const Eigen::Vector2f& window) {
+  const Eigen::Matrix4f view_projection =
+      projection_matrix(viewer.camera(), window.x() / window.y()) * view_matrix(viewer.camera());
+  const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
+  return project_to_window(view_projection, p, window)->head<2>();
+}
+
+}  // namespace wobble::testing
+
+#endif
