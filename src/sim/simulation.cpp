@@ -114,6 +114,7 @@ void validate_simulation_params(const SimulationParams& params) {
                      limit_text(params.damping));
   }
   validate_wind(params.wind);
+  validate_self_collision(params.self_collision);
   const ContactParams& contact = params.contact;
   if (!limits::friction.contains(contact.friction)) {
     throw InputError("friction: expected " + expected_in(limits::friction) + ", got " +
@@ -180,6 +181,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   rest_diagonal_ = diagonal > 0.0 ? diagonal : 1.0;
   contact_ = ColliderContact(params_.contact.colliders, params_.contact.friction,
                              resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_));
+  self_collision_ = SelfCollision(network_, params_.self_collision);
   rebuild_forces();
   chebyshev_ = ChebyshevAcceleration(n);
   solved_.resize(n, 3);
@@ -213,6 +215,7 @@ void Simulation::reset() {
   time_ = 0.0;
   last_status_ = StepStatus::ok;
   contact_ = ColliderContact(params_.contact.colliders, contact_.friction(), contact_.offset());
+  self_collision_.clear();
 
   std::vector<char> initial(pinned_.size(), 0);
   for (int i : initial_pins_)
@@ -253,7 +256,8 @@ StepStatus Simulation::step() {
   // Contact makes a step's problem change sharply from one iteration to the next; with ρ near 1
   // the extrapolation then runs away (a cloth falling on a sphere left it at 48 m/s). While the
   // last step touched a collider, an iteration whose update grew restarts the recurrence.
-  const bool restart_on_growth = contact_.contact_count() > 0;
+  const bool restart_on_growth =
+      contact_.contact_count() > 0 || (params_.self_collision.on && self_contact_count() > 0);
   double local_ms = 0.0, global_ms = 0.0;
   for (int iteration = 0; iteration < params_.iterations; ++iteration) {
     const auto local_start = Clock::now();
@@ -288,7 +292,13 @@ StepStatus Simulation::step() {
 
   const auto contact_start = Clock::now();
   contact_.project(step_context(), next_);
-  const double contact_ms = milliseconds_since(contact_start);
+  timing_.contact_ms = milliseconds_since(contact_start);
+  timing_.self_detection_ms = timing_.self_response_ms = 0.0;
+  if (params_.self_collision.on) {
+    collide_with_itself();
+    timing_.self_detection_ms = self_collision_.detection_ms();
+    timing_.self_response_ms = self_collision_.response_ms();
+  }
 
   last_status_ = check_step();
   if (last_status_ == StepStatus::ok) {
@@ -301,10 +311,27 @@ StepStatus Simulation::step() {
   timing_.local_ms = local_ms;
   timing_.global_ms = global_ms;
   timing_.forces_ms = forces_ms;
-  timing_.contact_ms = contact_ms;
   timing_.instruments_ms = instruments_ms;
   timing_.total_ms = milliseconds_since(step_start);
   return last_status_;
+}
+
+void Simulation::collide_with_itself() {
+  // Pinned vertices, and vertices a collider holds, do not give way to a layer pushing on them:
+  // a pile's top layer is pushed up off the bottom one, not the bottom one into the ground.
+  const std::vector<char>& on_collider = contact_.contact_vertices();
+  const bool any_collider = !on_collider.empty();
+  inverse_mass_.resize(network_.m.size());
+  for (Eigen::Index i = 0; i < inverse_mass_.size(); ++i) {
+    const bool held = pinned_[i] || (any_collider && on_collider[i]);
+    inverse_mass_(i) = held ? 0.0 : 1.0 / network_.m(i);
+  }
+  self_collision_.project(current_, inverse_mass_, contact_.friction(), next_);
+  if (self_collision_.contact_count() > 0) {
+    const auto contact_start = Clock::now();
+    contact_.project_again(step_context(), next_);
+    timing_.contact_ms += milliseconds_since(contact_start);
+  }
 }
 
 StepStatus Simulation::check_step() const {

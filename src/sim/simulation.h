@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "sim/contact/collider_contact.h"
+#include "sim/contact/self_collision.h"
 #include "sim/forces/wind.h"
 #include "sim/instruments/convergence_trace.h"
 #include "sim/instruments/step_objective.h"
@@ -56,6 +57,8 @@ struct SimulationParams {
   WindParams wind;
   // Colliders, friction and the contact offset (see sim/contact/collider_contact.h).
   ContactParams contact;
+  // The surface against itself (see sim/contact/self_collision.h). Off by default.
+  SelfCollisionParams self_collision;
 };
 
 // Throws InputError unless k, dt, iterations and gravity are within the limits of
@@ -67,9 +70,11 @@ void validate_simulation_params(const SimulationParams& params);
 struct StepTiming {
   double local_ms = 0.0;
   double global_ms = 0.0;
-  double forces_ms = 0.0;       // wind
-  double contact_ms = 0.0;      // collider projection and friction
-  double instruments_ms = 0.0;  // the convergence trace, while it is recorded
+  double forces_ms = 0.0;          // wind
+  double contact_ms = 0.0;         // collider projection and friction
+  double self_detection_ms = 0.0;  // self-collision: the spatial grid and the pairs it finds
+  double self_response_ms = 0.0;   // self-collision: pushing pairs apart, friction, the swept check
+  double instruments_ms = 0.0;     // the convergence trace, while it is recorded
   double total_ms = 0.0;
 };
 
@@ -166,6 +171,13 @@ class Simulation {
   double contact_offset() const { return contact_.offset(); }
   // Vertices the last step moved out of a collider.
   int contact_count() const { return contact_.contact_count(); }
+  // Self-collision on or off, or a new thickness; nothing precomputed. Throws InputError for a
+  // thickness out of limits::self_collision_thickness.
+  void set_self_collision(const SelfCollisionParams& self_collision);
+  // Vertices the last step's self-collision moved (pushed apart from a layer of the same surface,
+  // or held back by the swept check), and the same as #V flags.
+  int self_contact_count() const;
+  const std::vector<char>& self_contact_vertices() const;
   // Simulated time (s): the sum of the accepted steps' Δt since the start or the last reset.
   double time() const { return time_; }
 
@@ -238,6 +250,8 @@ class Simulation {
   void start_iterate();
   void compute_y();
   StepStatus check_step() const;
+  // Self-collision on next_, then the colliders again for what it pushed into them.
+  void collide_with_itself();
   StepObjectiveTerms objective_terms() const;
   // Appends the objective and gradient norm at next_ to trace_, given rhs_ = k Aᵀd(next_) + y
   // and springs = Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² at next_. `plain_solve`: next_ is the solution of
@@ -259,7 +273,9 @@ class Simulation {
   Eigen::MatrixXd fext_, y_, rhs_;             // #V by 3 buffers kept to avoid allocation
   std::vector<std::unique_ptr<ForceTerm>> forces_;
   ColliderContact contact_;
-  double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
+  SelfCollision self_collision_;
+  Eigen::VectorXd inverse_mass_;  // #V: 1/m, or 0 for a pinned vertex or one on a collider
+  double rest_diagonal_ = 0.0;    // of the rest shape's bounding box (m)
   double time_ = 0.0;
 
   Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored

@@ -102,6 +102,23 @@ void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
   contact_.translate(index, offset);
 }
 
+void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
+  SimulationParams changed = params_;
+  changed.self_collision = self_collision;
+  validate_simulation_params(changed);
+  params_.self_collision = self_collision;
+  self_collision_.set_thickness(self_collision.thickness);
+  if (!self_collision.on) self_collision_.clear();
+}
+
+int Simulation::self_contact_count() const {
+  return params_.self_collision.on ? self_collision_.contact_count() : 0;
+}
+
+const std::vector<char>& Simulation::self_contact_vertices() const {
+  return self_collision_.contact_vertices();
+}
+
 bool Simulation::is_pinned(int i) const {
   check_vertex(i, "is_pinned");
   return pinned_[i] != 0;

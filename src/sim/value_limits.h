@@ -57,6 +57,8 @@ inline constexpr ValueRange air_density{0.0, 1e4, "kg/m³"};
 inline constexpr ValueRange collider_size{1e-4, 1e4, "m"};
 inline constexpr ValueRange contact_offset{0.0, 10.0, "m"};
 inline constexpr int max_colliders = 64;
+// Self-collision: the thickness the surface keeps between its own layers.
+inline constexpr ValueRange self_collision_thickness{1e-5, 1.0, "m"};
 
 // Generated meshes: the largest of each that loads and takes its first step in a few seconds.
 inline constexpr int max_cloth_resolution = 256;  // vertices a side: 65,536 vertices

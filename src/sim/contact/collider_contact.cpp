@@ -14,6 +14,16 @@ ColliderContact::ColliderContact(std::vector<Collider> colliders, double frictio
 void ColliderContact::project(const StepContext& step, Eigen::MatrixXd& next) {
   contact_count_ = 0;
   if (colliders_.empty()) return;
+  touched_.assign(next.rows(), 0);
+  project_vertices(step, next);
+}
+
+void ColliderContact::project_again(const StepContext& step, Eigen::MatrixXd& next) {
+  if (colliders_.empty()) return;
+  project_vertices(step, next);
+}
+
+void ColliderContact::project_vertices(const StepContext& step, Eigen::MatrixXd& next) {
   // A vertex pushed out of one collider can land in another (a box standing on the ground): a
   // second pass settles such corners.
   const int passes = colliders_.size() > 1 ? 2 : 1;
@@ -45,7 +55,10 @@ void ColliderContact::project(const StepContext& step, Eigen::MatrixXd& next) {
         next.row(i) = p.transpose();
       }
     }
-    if (touched) ++contact_count_;
+    if (touched && !touched_[i]) {
+      touched_[i] = 1;
+      ++contact_count_;
+    }
   }
 }
 

@@ -33,6 +33,9 @@ class ColliderContact : public PositionConstraint {
   ColliderContact(std::vector<Collider> colliders, double friction, double offset);
 
   void project(const StepContext& step, Eigen::MatrixXd& next) override;
+  // The same again after something else moved `next` (self-collision): vertices it moves now are
+  // added to those the last project() moved.
+  void project_again(const StepContext& step, Eigen::MatrixXd& next);
   void end_step() override;
 
   const std::vector<Collider>& colliders() const { return colliders_; }
@@ -44,11 +47,16 @@ class ColliderContact : public PositionConstraint {
   double offset() const { return offset_; }
   // Vertices moved out of a collider by the last projection.
   int contact_count() const { return contact_count_; }
+  // The same as #V flags (empty when there is no collider).
+  const std::vector<char>& contact_vertices() const { return touched_; }
   bool empty() const { return colliders_.empty(); }
 
  private:
   std::vector<Collider> colliders_;
   std::vector<Eigen::Vector3d> motion_;  // each collider's translation since the last step
+  void project_vertices(const StepContext& step, Eigen::MatrixXd& next);
+
+  std::vector<char> touched_;
   double friction_ = 0.0;
   double offset_ = 0.0;
   int contact_count_ = 0;
