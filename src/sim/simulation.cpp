@@ -317,20 +317,26 @@ StepStatus Simulation::step() {
 }
 
 void Simulation::collide_with_itself() {
-  // Pinned vertices, and vertices a collider holds, do not give way to a layer pushing on them:
-  // a pile's top layer is pushed up off the bottom one, not the bottom one into the ground.
+  // Pinned vertices do not give way to a layer pushing on them, and vertices a collider holds
+  // give way as if they weighed 20 times as much: a pile's top layer is pushed up off the bottom
+  // one, not the bottom one into the ground (the colliders' second pass puts back what did go
+  // in), yet two layers that both lie on the ground still separate.
+  constexpr double held_by_collider = 1.0 / 20.0;
   const std::vector<char>& on_collider = contact_.contact_vertices();
   const bool any_collider = !on_collider.empty();
   inverse_mass_.resize(network_.m.size());
   for (Eigen::Index i = 0; i < inverse_mass_.size(); ++i) {
-    const bool held = pinned_[i] || (any_collider && on_collider[i]);
-    inverse_mass_(i) = held ? 0.0 : 1.0 / network_.m(i);
+    const double scale = pinned_[i] ? 0.0 : any_collider && on_collider[i] ? held_by_collider : 1.0;
+    inverse_mass_(i) = scale / network_.m(i);
   }
   self_collision_.project(current_, inverse_mass_, contact_.friction(), next_);
-  if (self_collision_.contact_count() > 0) {
+  if (self_collision_.contact_count() > 0 && !contact_.empty()) {
+    // A collider can push a vertex the layers squeeze against it back through a layer: the
+    // layers get the last word, and what they push into a collider stays within its offset.
     const auto contact_start = Clock::now();
     contact_.project_again(step_context(), next_);
     timing_.contact_ms += milliseconds_since(contact_start);
+    self_collision_.project_again(inverse_mass_, next_);
   }
 }
 

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
+#include <map>
+#include <utility>
 
+#include "sim/contact/closest_points.h"
 #include "sim/input_error.h"
 #include "sim/value_limits.h"
 
@@ -18,55 +20,13 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The point of triangle abc closest to p, as barycentric coordinates (α_a, α_b, α_c), by the
-// region of the triangle's plane p projects into (the three corners, the three edges, the
-// inside).
-Eigen::Vector3d closest_barycentric(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                                    const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
-  const Eigen::Vector3d bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
-    const double t = d1 / (d1 - d3);
-    return {1.0 - t, t, 0.0};
-  }
-  const Eigen::Vector3d cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
-    const double t = d2 / (d2 - d6);
-    return {1.0 - t, 0.0, t};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
-    const double t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0.0, 1.0 - t, t};
-  }
-  const double sum = va + vb + vc;
-  if (!(sum > 0.0)) return {1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0};  // a degenerate triangle
-  return {va / sum, vb / sum, vc / sum};
-}
-
 Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
   return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
 }
 
-// Cell coordinates to a slot of a table of `slots` entries (a power of two).
-std::uint32_t cell_slot(std::int64_t x, std::int64_t y, std::int64_t z, std::uint32_t slots) {
-  const std::uint64_t h = static_cast<std::uint64_t>(x) * 73856093u ^
-                          static_cast<std::uint64_t>(y) * 19349663u ^
-                          static_cast<std::uint64_t>(z) * 83492791u;
-  return static_cast<std::uint32_t>(h ^ (h >> 29)) & (slots - 1);
-}
-
-// A box covering more cells than this goes on a list every vertex checks instead (a triangle
-// that moved far in one step: a dragged pin's).
-constexpr std::int64_t max_cells_per_box = 512;
+// Gauss-Seidel sweeps stop once no pair is short of the thickness by more than this fraction.
+constexpr double settled_fraction = 1e-3;
+constexpr int max_sweeps = 16;
 
 }  // namespace
 
@@ -81,242 +41,240 @@ void validate_self_collision(const SelfCollisionParams& params) {
 SelfCollision::SelfCollision(const SpringNetwork& rest, const SelfCollisionParams& params)
     : params_(params), rest_(rest.V), triangles_(rest.F) {
   std::vector<char> on_surface(rest.V.rows(), 0);
+  std::map<std::pair<int, int>, int> edge_ids;
+  std::vector<std::pair<int, int>> edges;
   double edge_sum = 0.0;
   for (Eigen::Index t = 0; t < triangles_.rows(); ++t) {
     for (int c = 0; c < 3; ++c) {
-      on_surface[triangles_(t, c)] = 1;
-      edge_sum += (row(rest_, triangles_(t, c)) - row(rest_, triangles_(t, (c + 1) % 3))).norm();
+      const int i = triangles_(t, c), j = triangles_(t, (c + 1) % 3);
+      on_surface[i] = 1;
+      const std::pair<int, int> key(std::min(i, j), std::max(i, j));
+      if (edge_ids.emplace(key, static_cast<int>(edges.size())).second) {
+        edges.push_back(key);
+        edge_sum += (row(rest_, i) - row(rest_, j)).norm();
+      }
     }
+  }
+  edges_.resize(static_cast<Eigen::Index>(edges.size()), 2);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edges_(e, 0) = edges[e].first;
+    edges_(e, 1) = edges[e].second;
   }
   for (Eigen::Index i = 0; i < rest.V.rows(); ++i) {
     if (on_surface[i]) surface_vertices_.push_back(static_cast<int>(i));
   }
-  // About one triangle's size: each swept box covers a few cells, each cell holds a few boxes.
-  const double mean_edge = triangles_.rows() > 0 ? edge_sum / (3.0 * triangles_.rows()) : 1.0;
-  cell_ = mean_edge > 0.0 ? mean_edge : 1.0;
+  // Cells about an edge long: each swept box covers a few cells, each cell holds a few boxes.
+  const double mean_edge = edges.empty() ? 1.0 : edge_sum / static_cast<double>(edges.size());
+  const double cell = mean_edge > 0.0 ? mean_edge : 1.0;
+  triangle_grid_ = SpatialGrid(cell);
+  edge_grid_ = SpatialGrid(cell);
   in_contact_.assign(rest.V.rows(), 0);
-  seen_.assign(triangles_.rows(), -1);
+  seen_triangle_.assign(triangles_.rows(), -1);
 }
 
 void SelfCollision::clear() {
   std::fill(in_contact_.begin(), in_contact_.end(), 0);
   contact_count_ = 0;
   pair_count_ = 0;
+  pairs_.clear();
 }
 
-void SelfCollision::build_grid(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next) {
-  const Eigen::Index triangles = triangles_.rows();
-  const double grow = params_.thickness;
-  boxes_.resize(triangles);
-  std::uint32_t slots = 1;
-  while (slots < 2 * static_cast<std::uint64_t>(triangles) + 1)
-    slots *= 2;
-  cell_start_.assign(slots + 1, 0);
-  large_.clear();
-  const double inverse_cell = 1.0 / cell_;
-  const auto cell_range = [&](const Eigen::AlignedBox3d& box, Eigen::Array3i& low,
-                              Eigen::Array3i& high) {
-    const Eigen::Array3d lo = (box.min().array() * inverse_cell).floor();
-    const Eigen::Array3d hi = (box.max().array() * inverse_cell).floor();
-    if (((hi - lo + 1.0).prod()) > static_cast<double>(max_cells_per_box)) return false;
-    low = lo.cast<int>();
-    high = hi.cast<int>();
-    return true;
+void SelfCollision::sweep_boxes(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next) {
+  // Two features closer than the thickness have boxes closer than that along every axis: each
+  // box grows by half of it.
+  const double grow = 0.5 * params_.thickness;
+  const auto swept = [&](const int* vertices, int count) {
+    Eigen::AlignedBox3d box;
+    for (int k = 0; k < count; ++k) {
+      box.extend(row(current, vertices[k]));
+      box.extend(row(next, vertices[k]));
+    }
+    box.min().array() -= grow;
+    box.max().array() += grow;
+    return box;
   };
-  // Two passes of a counting sort: how many triangles each slot gets, then the triangles.
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<int> fill;
-    if (pass == 1) {
-      for (std::uint32_t s = 0; s < slots; ++s)
-        cell_start_[s + 1] += cell_start_[s];
-      cell_triangles_.resize(cell_start_[slots]);
-      fill.assign(cell_start_.begin(), cell_start_.end() - 1);
-    }
-    for (Eigen::Index t = 0; t < triangles; ++t) {
-      if (pass == 0) {
-        Eigen::AlignedBox3d box;
-        for (int c = 0; c < 3; ++c) {
-          box.extend(row(current, triangles_(t, c)));
-          box.extend(row(next, triangles_(t, c)));
-        }
-        box.min().array() -= grow;
-        box.max().array() += grow;
-        boxes_[t] = box;
-      }
-      Eigen::Array3i low, high;
-      if (!cell_range(boxes_[t], low, high)) {
-        if (pass == 0) large_.push_back(static_cast<int>(t));
-        continue;
-      }
-      for (int x = low.x(); x <= high.x(); ++x) {
-        for (int y = low.y(); y <= high.y(); ++y) {
-          for (int z = low.z(); z <= high.z(); ++z) {
-            const std::uint32_t slot = cell_slot(x, y, z, slots);
-            if (pass == 0) {
-              ++cell_start_[slot + 1];
-            } else {
-              cell_triangles_[fill[slot]++] = static_cast<int>(t);
-            }
-          }
-        }
-      }
-    }
+  triangle_boxes_.resize(triangles_.rows());
+  for (Eigen::Index t = 0; t < triangles_.rows(); ++t) {
+    const int corners[3] = {triangles_(t, 0), triangles_(t, 1), triangles_(t, 2)};
+    triangle_boxes_[t] = swept(corners, 3);
+  }
+  edge_boxes_.resize(edges_.rows());
+  for (Eigen::Index e = 0; e < edges_.rows(); ++e) {
+    const int ends[2] = {edges_(e, 0), edges_(e, 1)};
+    edge_boxes_[e] = swept(ends, 2);
   }
 }
 
-void SelfCollision::detect(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next) {
-  build_grid(current, next);
-  pairs_.clear();
-  std::fill(seen_.begin(), seen_.end(), -1);
+void SelfCollision::keep_if_close(Pair pair, int first_size, const Eigen::MatrixXd& current,
+                                  const Eigen::MatrixXd& next) {
   const double h = params_.thickness;
-  const std::uint32_t slots = static_cast<std::uint32_t>(cell_start_.size() - 1);
-  const double inverse_cell = 1.0 / cell_;
+  // The gap between the pair's two points at the start, and how much closer they can come: the
+  // distance between the two features changes by at most the largest motion of a vertex of one
+  // relative to the first vertex, plus the same for the other.
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+    start += pair.beta[k] * row(current, pair.vertex[k]);
+  const double distance = start.norm();
+  const Eigen::Vector3d reference = row(next, pair.vertex[0]) - row(current, pair.vertex[0]);
+  double closing_first = 0.0, closing_second = 0.0;
+  for (int k = 1; k < 4; ++k) {
+    const double moved =
+        (row(next, pair.vertex[k]) - row(current, pair.vertex[k]) - reference).norm();
+    double& closing = k < first_size ? closing_first : closing_second;
+    closing = std::max(closing, moved);
+  }
+  if (distance - closing_first - closing_second >= h) return;
+  // Pairs this close in the rest shape are a fine mesh's neighbours, not two layers.
+  Eigen::Vector3d rest_gap = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k)
+    rest_gap += pair.beta[k] * row(rest_, pair.vertex[k]);
+  if (rest_gap.norm() < h) return;
+  if (distance > 1e-9 * h) {
+    pair.normal = start / distance;
+  } else {
+    // Touching at the start (nothing kept them apart): the normal of the two features' plane,
+    // on the side the pair ends on.
+    pair.normal = (row(current, pair.vertex[1]) - row(current, pair.vertex[0]))
+                      .cross(row(current, pair.vertex[3]) - row(current, pair.vertex[2]));
+    if (!(pair.normal.squaredNorm() > 0.0)) return;
+    pair.normal.normalize();
+    Eigen::Vector3d end = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 4; ++k)
+      end += pair.beta[k] * row(next, pair.vertex[k]);
+    if (end.dot(pair.normal) < 0.0) pair.normal = -pair.normal;
+  }
+  pairs_.push_back(pair);
+}
 
-  const auto consider = [&](int v, int t, const Eigen::AlignedBox3d& vertex_box) {
-    if (seen_[t] == v) return;
-    seen_[t] = v;
-    const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
-    if (v == a || v == b || v == c) return;
-    if (!vertex_box.intersects(boxes_[t])) return;
-    // Where the pair starts, and how much closer it can come: the distance from the vertex to
-    // the triangle changes by at most the largest motion of a corner relative to the vertex.
-    const Eigen::Vector3d v0 = row(current, v);
-    const Eigen::Vector3d a0 = row(current, a), b0 = row(current, b), c0 = row(current, c);
-    const Eigen::Vector3d alpha = closest_barycentric(v0, a0, b0, c0);
-    const Eigen::Vector3d q0 = alpha(0) * a0 + alpha(1) * b0 + alpha(2) * c0;
-    const double d0 = (v0 - q0).norm();
-    const Eigen::Vector3d moved = row(next, v) - v0;
-    double closing = 0.0;
-    for (const int corner : {a, b, c}) {
-      closing = std::max(closing, (row(next, corner) - row(current, corner) - moved).norm());
-    }
-    if (d0 - closing >= h) return;
-    // Pairs this close in the rest shape (a fine mesh's near neighbours) are left alone.
-    const Eigen::Vector3d rv = row(rest_, v);
-    const Eigen::Vector3d ra = row(rest_, a), rb = row(rest_, b), rc = row(rest_, c);
-    const Eigen::Vector3d rest_alpha = closest_barycentric(rv, ra, rb, rc);
-    if ((rv - (rest_alpha(0) * ra + rest_alpha(1) * rb + rest_alpha(2) * rc)).norm() < h) return;
-    Eigen::Vector3d normal;
-    if (d0 > 1e-9 * h) {
-      normal = (v0 - q0) / d0;
-    } else {
-      // On the triangle at the start (nothing kept it off): its face normal, on the side the
-      // vertex ends on.
-      normal = (b0 - a0).cross(c0 - a0);
-      if (normal.squaredNorm() == 0.0) return;
-      normal.normalize();
-      const Eigen::Vector3d q =
-          alpha(0) * row(next, a) + alpha(1) * row(next, b) + alpha(2) * row(next, c);
-      if ((row(next, v) - q).dot(normal) < 0.0) normal = -normal;
-    }
-    pairs_.push_back(Pair{v, t, alpha, normal, 0.0});
-  };
-
+void SelfCollision::find_vertex_triangle_pairs(const Eigen::MatrixXd& current,
+                                               const Eigen::MatrixXd& next) {
+  std::fill(seen_triangle_.begin(), seen_triangle_.end(), -1);
   for (const int v : surface_vertices_) {
     Eigen::AlignedBox3d box(row(current, v));
     box.extend(row(next, v));
-    const Eigen::Array3d lo = (box.min().array() * inverse_cell).floor();
-    const Eigen::Array3d hi = (box.max().array() * inverse_cell).floor();
-    if ((hi - lo + 1.0).prod() > static_cast<double>(max_cells_per_box)) {
-      // A vertex that moved far: every triangle.
-      for (Eigen::Index t = 0; t < triangles_.rows(); ++t)
-        consider(v, static_cast<int>(t), box);
-      continue;
+    box.min().array() -= 0.5 * params_.thickness;
+    box.max().array() += 0.5 * params_.thickness;
+    const Eigen::Vector3d v0 = row(current, v);
+    triangle_grid_.for_each_candidate(box, [&](int t) {
+      if (seen_triangle_[t] == v) return;
+      seen_triangle_[t] = v;
+      const int a = triangles_(t, 0), b = triangles_(t, 1), c = triangles_(t, 2);
+      if (v == a || v == b || v == c || !box.intersects(triangle_boxes_[t])) return;
+      const Eigen::Vector3d alpha =
+          closest_on_triangle(v0, row(current, a), row(current, b), row(current, c));
+      keep_if_close(Pair{{v, a, b, c}, {1.0, -alpha(0), -alpha(1), -alpha(2)}, {}, 0.0}, 1, current,
+                    next);
+    });
+  }
+}
+
+void SelfCollision::find_edge_edge_pairs(const Eigen::MatrixXd& current,
+                                         const Eigen::MatrixXd& next) {
+  edge_grid_.for_each_overlapping_pair([&](int e, int f) {
+    const int p0 = edges_(e, 0), p1 = edges_(e, 1), q0 = edges_(f, 0), q1 = edges_(f, 1);
+    if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return;
+    const Eigen::Vector2d su =
+        closest_on_segments(row(current, p0), row(current, p1), row(current, q0), row(current, q1));
+    keep_if_close(Pair{{p0, p1, q0, q1}, {1.0 - su(0), su(0), -(1.0 - su(1)), -su(1)}, {}, 0.0}, 2,
+                  current, next);
+  });
+}
+
+double SelfCollision::separate(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next) {
+  const double h = params_.thickness;
+  double worst = 0.0;
+  for (Pair& pair : pairs_) {
+    double gap = 0.0, weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const int i = pair.vertex[k];
+      gap += pair.beta[k] * (next(i, 0) * pair.normal(0) + next(i, 1) * pair.normal(1) +
+                             next(i, 2) * pair.normal(2));
+      weight += pair.beta[k] * pair.beta[k] * inverse_mass(i);
     }
-    for (int x = static_cast<int>(lo.x()); x <= hi.x(); ++x) {
-      for (int y = static_cast<int>(lo.y()); y <= hi.y(); ++y) {
-        for (int z = static_cast<int>(lo.z()); z <= hi.z(); ++z) {
-          const std::uint32_t slot = cell_slot(x, y, z, slots);
-          for (int s = cell_start_[slot]; s < cell_start_[slot + 1]; ++s)
-            consider(v, cell_triangles_[s], box);
-        }
-      }
+    const double violation = h - gap;
+    if (!(violation > 0.0) || !(weight > 0.0)) continue;  // kept apart, or nothing can move
+    // No vertex moves farther than the violation: when the only vertex free to move has a small
+    // weight βₖ (a triangle's corner far from the contact, the others pinned), the full
+    // correction would throw it violation/βₖ away.
+    double largest = 0.0;
+    for (int k = 0; k < 4; ++k)
+      largest = std::max(largest, inverse_mass(pair.vertex[k]) * std::abs(pair.beta[k]));
+    const double lambda = std::min(violation / weight, violation / largest);
+    for (int k = 0; k < 4; ++k) {
+      const int i = pair.vertex[k];
+      next.row(i) += (inverse_mass(i) * pair.beta[k] * lambda) * pair.normal.transpose();
     }
-    for (const int t : large_)
-      consider(v, t, box);
+    pair.lambda += lambda;
+    worst = std::max(worst, violation);
+  }
+  return worst;
+}
+
+void SelfCollision::apply_friction(const Eigen::MatrixXd& current,
+                                   const Eigen::VectorXd& inverse_mass, double friction,
+                                   Eigen::MatrixXd& next) {
+  for (const Pair& pair : pairs_) {
+    if (!(pair.lambda > 0.0)) continue;
+    // The pair's relative motion over the step, less its normal part.
+    Eigen::Vector3d relative = Eigen::Vector3d::Zero();
+    double weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const int i = pair.vertex[k];
+      relative += pair.beta[k] * (row(next, i) - row(current, i));
+      weight += pair.beta[k] * pair.beta[k] * inverse_mass(i);
+    }
+    const Eigen::Vector3d tangential = relative - relative.dot(pair.normal) * pair.normal;
+    const double slide = tangential.norm();
+    if (!(slide > 0.0) || !(weight > 0.0)) continue;
+    // Coulomb: the slide shrinks by μ times the depth the pair was pushed out, at most to rest.
+    const double undone = std::min(slide, friction * pair.lambda * weight);
+    const Eigen::Vector3d direction = tangential / slide;
+    for (int k = 0; k < 4; ++k) {
+      const int i = pair.vertex[k];
+      next.row(i) -= (inverse_mass(i) * pair.beta[k] * undone / weight) * direction.transpose();
+    }
   }
 }
 
 void SelfCollision::project(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
                             double friction, Eigen::MatrixXd& next) {
-  std::fill(in_contact_.begin(), in_contact_.end(), 0);
-  contact_count_ = 0;
-  pair_count_ = 0;
+  clear();
   const auto detection_start = Clock::now();
-  detect(current, next);
+  sweep_boxes(current, next);
+  triangle_grid_.build(triangle_boxes_);
+  edge_grid_.build(edge_boxes_);
+  find_vertex_triangle_pairs(current, next);
+  find_edge_edge_pairs(current, next);
   detection_ms_ = milliseconds_since(detection_start);
 
   const auto response_start = Clock::now();
-  const double h = params_.thickness;
-  // The gap of pair p along its normal, and the weight of a push on it.
-  const auto gap = [&](const Pair& p) {
-    const Eigen::Vector3d q = p.alpha(0) * row(next, triangles_(p.triangle, 0)) +
-                              p.alpha(1) * row(next, triangles_(p.triangle, 1)) +
-                              p.alpha(2) * row(next, triangles_(p.triangle, 2));
-    return (row(next, p.vertex) - q).dot(p.normal);
-  };
-  const auto weight = [&](const Pair& p) {
-    double w = inverse_mass(p.vertex);
-    for (int c = 0; c < 3; ++c)
-      w += p.alpha(c) * p.alpha(c) * inverse_mass(triangles_(p.triangle, c));
-    return w;
-  };
-  // Moves the pair's vertex by w_v·λ·d and each corner by −αᵢwᵢ·λ·d.
-  const auto push = [&](const Pair& p, double lambda, const Eigen::Vector3d& direction) {
-    next.row(p.vertex) += (inverse_mass(p.vertex) * lambda) * direction.transpose();
-    for (int c = 0; c < 3; ++c) {
-      const int corner = triangles_(p.triangle, c);
-      next.row(corner) -= (p.alpha(c) * inverse_mass(corner) * lambda) * direction.transpose();
-    }
-  };
-  const auto separate = [&]() {
-    double worst = 0.0;
-    for (Pair& p : pairs_) {
-      const double violation = h - gap(p);
-      if (!(violation > 0.0)) continue;
-      const double w = weight(p);
-      if (!(w > 0.0)) continue;  // four pinned vertices
-      const double lambda = violation / w;
-      push(p, lambda, p.normal);
-      p.lambda += lambda;
-      worst = std::max(worst, violation);
-    }
-    return worst;
-  };
-  // Gauss-Seidel sweeps until every pair keeps the thickness to a thousandth.
-  constexpr int max_sweeps = 16;
   for (int sweep = 0; sweep < max_sweeps; ++sweep) {
-    if (separate() <= 1e-3 * h) break;
+    if (separate(inverse_mass, next) <= settled_fraction * params_.thickness) break;
   }
   if (friction > 0.0) {
-    for (const Pair& p : pairs_) {
-      if (!(p.lambda > 0.0)) continue;
-      const double w = weight(p);
-      // The pair's relative motion over the step, less its normal part.
-      Eigen::Vector3d relative = row(next, p.vertex) - row(current, p.vertex);
-      for (int c = 0; c < 3; ++c) {
-        const int corner = triangles_(p.triangle, c);
-        relative -= p.alpha(c) * (row(next, corner) - row(current, corner));
-      }
-      const Eigen::Vector3d tangential = relative - relative.dot(p.normal) * p.normal;
-      const double slide = tangential.norm();
-      if (!(slide > 0.0)) continue;
-      const double budget = friction * p.lambda * w;  // μ times the depth pushed out
-      const double undone = std::min(slide, budget);
-      push(p, -undone / w, tangential / slide);
+    apply_friction(current, inverse_mass, friction, next);
+    for (int sweep = 0; sweep < max_sweeps; ++sweep) {
+      if (separate(inverse_mass, next) <= settled_fraction * params_.thickness) break;
     }
-    separate();
   }
-  for (const Pair& p : pairs_) {
-    if (!(p.lambda > 0.0)) continue;
+  for (const Pair& pair : pairs_) {
+    if (!(pair.lambda > 0.0)) continue;
     ++pair_count_;
-    in_contact_[p.vertex] = 1;
-    for (int c = 0; c < 3; ++c)
-      in_contact_[triangles_(p.triangle, c)] = 1;
+    for (int k = 0; k < 4; ++k) {
+      if (pair.beta[k] != 0.0) in_contact_[pair.vertex[k]] = 1;
+    }
   }
   for (const char flag : in_contact_)
     contact_count_ += flag;
   response_ms_ = milliseconds_since(response_start);
+}
+
+void SelfCollision::project_again(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next) {
+  const auto start = Clock::now();
+  for (int sweep = 0; sweep < max_sweeps; ++sweep) {
+    if (separate(inverse_mass, next) <= settled_fraction * params_.thickness) break;
+  }
+  response_ms_ += milliseconds_since(start);
 }
 
 }  // namespace wobble

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+#include "sim/contact/spatial_grid.h"
 #include "sim/spring_network.h"
 
 namespace wobble {
@@ -22,19 +23,23 @@ void validate_self_collision(const SelfCollisionParams& params);
 // Keeps a surface (the network's render triangles F) from passing through itself, after the
 // step's iterations, without touching Q.
 //
-// Detection: each triangle's box swept over the step (from pᵗ to the solved positions, grown
-// by the thickness) goes into a uniform grid rebuilt every step; each surface vertex looks up
-// the cells its own swept box covers. A pair can touch only if the vertex comes within the
-// thickness of the triangle during the step; pairs sharing a vertex, and pairs closer than the
-// thickness in the rest shape, are skipped.
+// Detection: every triangle's and every edge's box, swept over the step (from pᵗ to the solved
+// positions) and grown by the thickness, goes into a uniform grid rebuilt every step; each
+// surface vertex looks up the triangles near its own swept box, each edge the edges near its
+// box. A pair is kept only if it can come within the thickness during the step (its distance at
+// the start less the largest motion of one of its vertices relative to another); pairs sharing
+// a vertex, and pairs closer than the thickness in the rest shape (a fine mesh's neighbours),
+// are skipped.
 //
-// Response: for each pair the closest point q₀ = Σαᵢxᵢ of the triangle to the vertex v at the
-// start of the step gives a separating plane, normal n₀ = (v₀ − q₀)/‖v₀ − q₀‖ (the whole
-// triangle lies behind it, q₀ being the closest point). The step's positions must keep
-// (v − Σαᵢxᵢ)·n₀ ≥ thickness: a linear constraint on four vertices, enforced by projection
-// (Gauss-Seidel, inverse-mass weighted, pinned vertices immovable). Because the plane comes from
-// the start of the step, a vertex cannot pass through a triangle however far it moves in one
-// step (no velocity clamp is needed). Coulomb friction then acts on each pair's tangential
+// Response: for a vertex v and a triangle, the point q₀ = Σαᵢxᵢ of the triangle closest to v at
+// the start of the step gives a separating plane with normal n₀ = (v₀ − q₀)/‖v₀ − q₀‖ (the whole
+// triangle lies behind it, q₀ being the closest point); for two edges, their closest points at
+// the start do the same. The step's positions must keep the gap along n₀ between the same two
+// points (same barycentric weights) at least the thickness: a linear constraint on four
+// vertices, (Σ βₖxₖ)·n₀ ≥ thickness, enforced by Gauss-Seidel projection weighted by inverse
+// masses (a pinned vertex does not move). Because the planes come from the start of the step,
+// a vertex cannot pass through a triangle, nor an edge through an edge, however far it moves in
+// one step: no velocity clamp is needed. Coulomb friction then acts on each pair's tangential
 // relative motion, as for colliders (μ the material's). The positions are the next step's
 // velocity too: a pushed vertex keeps no velocity into the layer.
 class SelfCollision {
@@ -44,10 +49,14 @@ class SelfCollision {
   SelfCollision(const SpringNetwork& rest, const SelfCollisionParams& params);
 
   // Moves `next` (#V by 3, m) so that the motion from `current` (#V by 3, pᵗ) keeps every vertex
-  // `thickness` from every non-adjacent triangle. `inverse_mass` (#V, 1/kg) is 0 for a pinned
-  // vertex; `friction` is μ.
+  // `thickness` from every non-adjacent triangle, and every edge from every non-adjacent edge.
+  // `inverse_mass` (#V, 1/kg) is 0 for a vertex that must not move; `friction` is μ.
   void project(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass, double friction,
                Eigen::MatrixXd& next);
+
+  // The last projection's pairs kept apart again after something else moved `next` (the
+  // colliders); no new detection.
+  void project_again(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
 
   const SelfCollisionParams& params() const { return params_; }
   void set_thickness(double thickness) { params_.thickness = thickness; }
@@ -56,32 +65,41 @@ class SelfCollision {
   // Vertices the last projection moved, and the same as #V flags.
   int contact_count() const { return contact_count_; }
   const std::vector<char>& contact_vertices() const { return in_contact_; }
-  // Pairs whose constraint the last projection found within the thickness.
+  // Vertex-triangle and edge-edge pairs the last projection pushed apart.
   int pair_count() const { return pair_count_; }
+  // Pairs the last detection found able to touch (pushed or not).
+  int candidate_count() const { return static_cast<int>(pairs_.size()); }
   double detection_ms() const { return detection_ms_; }
   double response_ms() const { return response_ms_; }
 
  private:
+  // (Σ βₖ x_{vertex[k]})·normal ≥ thickness.
   struct Pair {
-    int vertex;
-    int triangle;
-    Eigen::Vector3d alpha;   // barycentric coordinates of q₀ on the triangle
-    Eigen::Vector3d normal;  // n₀
-    double lambda = 0.0;     // the push applied so far along n₀ (m·kg)
+    int vertex[4];
+    double beta[4];
+    Eigen::Vector3d normal;
+    double lambda = 0.0;  // the push applied so far along the normal (m·kg)
   };
-  void detect(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
-  void build_grid(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
+  void sweep_boxes(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
+  void find_vertex_triangle_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
+  void find_edge_edge_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
+  // Keeps the pair when it can come within the thickness during the step. Its first
+  // `first_size` vertices are one feature (the vertex, or the first edge), the rest the other.
+  void keep_if_close(Pair pair, int first_size, const Eigen::MatrixXd& current,
+                     const Eigen::MatrixXd& next);
+  // Gauss-Seidel: one sweep over the pairs; returns the largest violation it found (m).
+  double separate(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
+  void apply_friction(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
+                      double friction, Eigen::MatrixXd& next);
 
   SelfCollisionParams params_;
   Eigen::MatrixXd rest_;               // #V by 3 rest positions
   Eigen::MatrixXi triangles_;          // #F by 3
+  Eigen::MatrixXi edges_;              // #edges by 2: each triangle edge once
   std::vector<int> surface_vertices_;  // vertices on a triangle
-  double cell_ = 1.0;                  // grid cell size (m)
-  // The grid: triangle ids by cell, cells hashed into a table of `cell_start_.size() - 1` slots.
-  std::vector<int> cell_start_, cell_triangles_;
-  std::vector<Eigen::AlignedBox3d> boxes_;  // each triangle's swept box, grown by the thickness
-  std::vector<int> large_;                  // triangles whose box covers too many cells
-  std::vector<int> seen_;                   // per triangle: the last vertex that looked at it
+  SpatialGrid triangle_grid_, edge_grid_;
+  std::vector<Eigen::AlignedBox3d> triangle_boxes_, edge_boxes_;  // swept, grown by the thickness
+  std::vector<int> seen_triangle_;  // the last vertex that looked at each triangle
   std::vector<Pair> pairs_;
   std::vector<char> in_contact_;
   int contact_count_ = 0;
