@@ -10,13 +10,10 @@ namespace wobble::testing {
 
 namespace {
 
-constexpr double relative_zero = 1e-12;
-
-// o(a,b,c,d) over four vertices, always evaluated with the vertices sorted by index and the
-// sign of the permutation applied, so the same four vertices give the same number whichever
-// test asks (a segment through the shared edge of two triangles is judged the same by both).
-// A value within rounding of zero, |o| ≤ 1e-12·‖b−a‖‖c−a‖‖d−a‖, is zero: four points of a flat
-// sheet that was rotated are coplanar although rounding scatters them by about 1e-16.
+// o(a,b,c,d) = (b−a)·((c−a)×(d−a)) over four vertices, always evaluated with the vertices
+// sorted by index and the sign of the permutation applied, so the same four vertices give the
+// same number whichever test asks (a segment through the shared edge of two triangles is judged
+// the same way by both).
 double orientation(const Eigen::MatrixXd& V, std::array<int, 4> ids) {
   double sign = 1.0;
   for (int i = 1; i < 4; ++i) {
@@ -29,22 +26,24 @@ double orientation(const Eigen::MatrixXd& V, std::array<int, 4> ids) {
   const Eigen::Vector3d ab = V.row(ids[1]).transpose() - a;
   const Eigen::Vector3d ac = V.row(ids[2]).transpose() - a;
   const Eigen::Vector3d ad = V.row(ids[3]).transpose() - a;
-  const double o = ab.dot(ac.cross(ad));
-  if (std::abs(o) <= relative_zero * ab.norm() * ac.norm() * ad.norm()) return 0.0;
-  return sign * o;
+  return sign * ab.dot(ac.cross(ad));
 }
 
-bool opposite_or_touching(double s, double t) {
-  return !((s > 0.0 && t > 0.0) || (s < 0.0 && t < 0.0));
-}
-
-// The closed segment p–q against the closed triangle a,b,c (no shared vertex).
-bool segment_crosses_triangle(const Eigen::MatrixXd& V, int p, int q, int a, int b, int c) {
-  const double sp = orientation(V, {a, b, c, p});
-  const double sq = orientation(V, {a, b, c, q});
-  if (sp == 0.0 && sq == 0.0) return false;  // in the plane, or a degenerate triangle
-  if (!opposite_or_touching(sp, sq)) return false;
-  // The line p–q meets the triangle iff it passes on the same side of all three edges.
+// The segment p–q against the closed triangle a,b,c (no shared vertex): p and q more than `gap`
+// from the triangle's plane on opposite sides, and the line through them meeting the triangle.
+bool segment_crosses_triangle(const Eigen::MatrixXd& V, int p, int q, int a, int b, int c,
+                              double gap) {
+  const Eigen::Vector3d va = V.row(a).transpose();
+  const double twice_area = (Eigen::Vector3d(V.row(b).transpose()) - va)
+                                .cross(Eigen::Vector3d(V.row(c).transpose()) - va)
+                                .norm();
+  if (!(twice_area > 0.0)) return false;  // degenerate triangle: no plane to cross
+  // o(a,b,c,x) = 2·area × the signed distance of x from the plane.
+  const double dp = orientation(V, {a, b, c, p}) / twice_area;
+  const double dq = orientation(V, {a, b, c, q}) / twice_area;
+  if (!((dp > gap && dq < -gap) || (dp < -gap && dq > gap))) return false;
+  // The line p–q meets the closed triangle iff it passes on the same side of all three edges
+  // (a zero: through an edge or a vertex, which counts).
   const double ab = orientation(V, {p, q, a, b});
   const double bc = orientation(V, {p, q, b, c});
   const double ca = orientation(V, {p, q, c, a});
@@ -52,6 +51,11 @@ bool segment_crosses_triangle(const Eigen::MatrixXd& V, int p, int q, int a, int
   const bool any_negative = ab < 0.0 || bc < 0.0 || ca < 0.0;
   return !(any_positive && any_negative);
 }
+
+// An endpoint closer than this to a triangle's plane, as a fraction of the mesh's bounding box
+// diagonal, is on the plane: far above rounding (a flat sheet turned in space, or solved by the
+// simulator, scatters by about 1e-16 of its size) and far below any thickness cloth keeps.
+constexpr double plane_gap = 1e-9;
 
 constexpr int cell_bits = 21;
 constexpr std::int64_t max_cell = (std::int64_t{1} << cell_bits) - 1;
@@ -109,6 +113,7 @@ long count_mesh_crossings(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
   // Keep the cell coordinates within their bits (and away from a zero cell).
   cell = std::max({cell, all.sizes().maxCoeff() / static_cast<double>(max_cell - 1), 1e-300});
   const Eigen::Vector3d origin = all.min();
+  const double gap = plane_gap * all.diagonal().norm();
   const auto range = [&](const Eigen::AlignedBox3d& box) {
     CellRange r;
     for (int d = 0; d < 3; ++d) {
@@ -150,7 +155,7 @@ long count_mesh_crossings(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
       const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
       if (p == a || p == b || p == c || q == a || q == b || q == c) return;
       if (!boxes[f].intersects(segment_box)) return;
-      if (segment_crosses_triangle(V, p, q, a, b, c)) hits.push_back(f);
+      if (segment_crosses_triangle(V, p, q, a, b, c, gap)) hits.push_back(f);
     };
     const CellRange r = range(segment_box);
     // A very long edge would visit more cells than the grid holds entries: test every triangle.

@@ -78,7 +78,7 @@ TEST(MeshCrossings, TwoPiercingTrianglesReportWhichEdgeCrossesWhichTriangle) {
   EXPECT_EQ(crossings, expected);
 }
 
-TEST(MeshCrossings, TouchingCountsAndLyingInThePlaneDoesNot) {
+TEST(MeshCrossings, TouchingDoesNotCountAndPassingThroughDoes) {
   Eigen::MatrixXd V(6, 3);
   V << 0, 0, 0, 1, 0, 0, 0, 1, 0,  // triangle in z = 0
       0.25, 0.25, 0,               // a vertex exactly on it
@@ -86,14 +86,26 @@ TEST(MeshCrossings, TouchingCountsAndLyingInThePlaneDoesNot) {
       3, 3, 3;
   Eigen::MatrixXi F(2, 3);
   F << 0, 1, 2, 3, 4, 5;
+  EXPECT_EQ(count_mesh_crossings(V, F), 0);
+
+  // A micrometre through it: both edges that end at that vertex cross.
+  V(3, 2) = -1e-6;
   std::vector<std::pair<int, int>> crossings;
   Eigen::MatrixXi edges;
-  // Both edges that end at the touching vertex count.
   EXPECT_EQ(count_mesh_crossings(V, F, &crossings, &edges), 2);
   for (const auto& [edge, triangle] : crossings) {
     EXPECT_EQ(edges(edge, 0), 3);
     EXPECT_EQ(triangle, 0);
   }
+
+  // Through the first triangle's edge from (0,0,0) to (1,0,0), exactly: counts, and that edge
+  // passes just as exactly through the second triangle's edge (3,4), which counts too.
+  V.row(3) << 0.5, 0, -1;
+  V.row(4) << 0.5, 0, 1;
+  V.row(5) << 3, -3, 0;
+  EXPECT_EQ(count_mesh_crossings(V, F, &crossings, &edges), 2);
+  const std::vector<std::pair<int, int>> expected = {{0, 1}, {3, 0}};  // (0,1)×1, (3,4)×0
+  EXPECT_EQ(crossings, expected);
 
   // The second triangle laid in the first one's plane, overlapping it: not counted.
   V.row(3) << 0.1, 0.1, 0;
