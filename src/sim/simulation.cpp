@@ -330,7 +330,7 @@ void Simulation::collide_with_itself() {
     inverse_mass_(i) = scale / network_.m(i);
   }
   self_collision_.project(current_, inverse_mass_, contact_.friction(), next_);
-  if (self_collision_.contact_count() > 0 && !contact_.empty()) {
+  if (self_collision_.pair_count() > 0 && !contact_.empty()) {
     // A collider can push a vertex the layers squeeze against it back through a layer: the
     // layers get the last word, and what they push into a collider stays within its offset.
     const auto contact_start = Clock::now();
@@ -338,6 +338,7 @@ void Simulation::collide_with_itself() {
     timing_.contact_ms += milliseconds_since(contact_start);
     self_collision_.project_again(inverse_mass_, next_);
   }
+  self_collision_.finish(current_, next_);
 }
 
 StepStatus Simulation::check_step() const {

@@ -57,9 +57,13 @@ class SelfCollision {
   // The last projection's pairs kept apart again after something else moved `next` (the
   // colliders); no new detection.
   void project_again(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
+  // The step's last word, after project() (and project_again()): undo_crossings, and the
+  // contact count.
+  void finish(const Eigen::MatrixXd& current, Eigen::MatrixXd& next);
 
   const SelfCollisionParams& params() const { return params_; }
-  void set_thickness(double thickness) { params_.thickness = thickness; }
+  // A new thickness: the rest neighbourhoods are found again.
+  void set_thickness(double thickness);
   // Forgets the last projection's contacts.
   void clear();
   // Vertices the last projection moved, and the same as #V flags.
@@ -69,6 +73,8 @@ class SelfCollision {
   int pair_count() const { return pair_count_; }
   // Pairs the last detection found able to touch (pushed or not).
   int candidate_count() const { return static_cast<int>(pairs_.size()); }
+  // Vertices the last resort put back to where they started the last step (counted each time).
+  int undone_count() const { return undone_; }
   double detection_ms() const { return detection_ms_; }
   double response_ms() const { return response_ms_; }
 
@@ -78,17 +84,30 @@ class SelfCollision {
     int vertex[4];
     double beta[4];
     Eigen::Vector3d normal;
-    double lambda = 0.0;  // the push applied so far along the normal (m·kg)
+    double target = 0.0;  // the gap it must keep this step (m): the thickness, or less
+    double depth = 0.0;   // how far the pair was pushed apart along the normal so far (m)
+    bool vertex_triangle = true;  // or edge-edge
   };
-  void sweep_boxes(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
-  void find_vertex_triangle_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
-  void find_edge_edge_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next);
+  // The pairs closer than rest_skip_factor thicknesses in the rest shape, which never count.
+  void find_rest_neighbours();
+  // Each step's detection allows `margin` (m) more motion than current → next.
+  void sweep_boxes(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next, double margin);
+  void find_vertex_triangle_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next,
+                                  double margin);
+  void find_edge_edge_pairs(const Eigen::MatrixXd& current, const Eigen::MatrixXd& next,
+                            double margin);
   // Keeps the pair when it can come within the thickness during the step. Its first
   // `first_size` vertices are one feature (the vertex, or the first edge), the rest the other.
   void keep_if_close(Pair pair, int first_size, const Eigen::MatrixXd& current,
-                     const Eigen::MatrixXd& next);
+                     const Eigen::MatrixXd& next, double margin);
   // Gauss-Seidel: one sweep over the pairs; returns the largest violation it found (m).
   double separate(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
+  // The last resort: an edge of `next` that passes through a triangle it did not pass through at
+  // the start (the planes are a first-order guard: a pair turning fast in one step can slip
+  // past) has its two vertices and the triangle's three put back where they started the step;
+  // repeated until no such crossing is left. Putting every vertex back gives pᵗ, so the step
+  // ends with no crossing it did not start with.
+  void undo_crossings(const Eigen::MatrixXd& current, Eigen::MatrixXd& next);
   void apply_friction(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
                       double friction, Eigen::MatrixXd& next);
 
@@ -100,7 +119,13 @@ class SelfCollision {
   SpatialGrid triangle_grid_, edge_grid_;
   std::vector<Eigen::AlignedBox3d> triangle_boxes_, edge_boxes_;  // swept, grown by the thickness
   std::vector<int> seen_triangle_;  // the last vertex that looked at each triangle
+  // Rest neighbourhoods as compressed rows: the triangles near each vertex, and the
+  // higher-numbered edges near each edge.
+  std::vector<int> rest_triangles_start_, rest_triangles_, rest_edges_start_, rest_edges_;
   std::vector<Pair> pairs_;
+  Eigen::MatrixXd solved_;  // #V by 3: next as the response found it
+  std::vector<int> crossed_;
+  int undone_ = 0;
   std::vector<char> in_contact_;
   int contact_count_ = 0;
   int pair_count_ = 0;

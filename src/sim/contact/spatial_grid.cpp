@@ -28,8 +28,15 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes) {
   boxes_ = &boxes;
   box_count_ = boxes.size();
   is_large_.assign(boxes.size(), 0);
+  // About twice as many slots as filed entries (a box in several cells is several entries), so
+  // that few cells share a slot: a shared slot's boxes are all tested against each other.
+  std::size_t entries = 0;
+  for (const Eigen::AlignedBox3d& box : boxes) {
+    Eigen::Array3i low, high;
+    if (cell_range(box, low, high)) entries += static_cast<std::size_t>((high - low + 1).prod());
+  }
   slots_ = 1;
-  while (slots_ < 2 * boxes.size() + 1)
+  while (slots_ < 2 * entries + 1)
     slots_ *= 2;
   start_.assign(slots_ + 1, 0);
   large_.clear();
