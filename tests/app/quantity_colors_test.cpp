@@ -254,24 +254,26 @@ TEST(QuantityColors, ContactColoursFollowTheFlagsSelfFirst) {
     EXPECT_EQ(color_of(colors, i), wobble::contact_free_color()) << i;
 }
 
-// Two triangles of one surface: the lower pinned, the upper smaller, 5 cm above it and falling
-// through it within a step unless self-collision holds it a thickness away.
+// Three triangles of one surface: two pinned side by side, and a smaller free one 5 cm above the
+// first, falling through it within a step unless self-collision holds it a thickness away. The
+// second pinned triangle's far vertex 6 is nowhere near it.
 wobble::Simulation falling_triangle() {
   wobble::SpringNetwork network;
-  network.V.resize(6, 3);
-  network.V << 0, 0, 0, 1, 0, 0, 0, 0, 1,  //
-      0.2, 0.05, 0.2, 0.4, 0.05, 0.2, 0.2, 0.05, 0.4;
-  network.E.resize(6, 2);
-  network.E << 0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 3;
-  network.F.resize(2, 3);
-  network.F << 0, 2, 1, 3, 5, 4;
-  network.m = Eigen::VectorXd::Constant(6, 0.1);
+  network.V.resize(7, 3);
+  network.V << 0, 0, 0, 1, 0, 0, 0, 0, 1,              //
+      0.2, 0.05, 0.2, 0.4, 0.05, 0.2, 0.2, 0.05, 0.4,  //
+      3, 0, 0;
+  network.E.resize(8, 2);
+  network.E << 0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 3, 1, 6, 6, 2;
+  network.F.resize(3, 3);
+  network.F << 0, 2, 1, 3, 5, 4, 1, 2, 6;
+  network.m = Eigen::VectorXd::Constant(7, 0.1);
   wobble::SimulationParams params;
   params.self_collision.on = true;
   params.self_collision.thickness = 0.01;
-  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(6, 3);
-  velocity.bottomRows(3).col(1).setConstant(-6.0);  // 0.1 m in a step of 1/60 s
-  return wobble::Simulation(network, {0, 1, 2}, params, velocity);
+  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(7, 3);
+  velocity.block(3, 1, 3, 1).setConstant(-6.0);  // 0.1 m in a step of 1/60 s
+  return wobble::Simulation(network, {0, 1, 2, 6}, params, velocity);
 }
 
 TEST(QuantityColors, ContactsGiveTheSelfContactColourExactlyToFlaggedVertices) {
@@ -279,27 +281,27 @@ TEST(QuantityColors, ContactsGiveTheSelfContactColourExactlyToFlaggedVertices) {
   wobble::QuantityColors colors;
   // Before the first step no vertex is in contact.
   colors.update(ColorQuantity::contacts, simulation);
-  ASSERT_EQ(colors.vertex_colors().size(), 18u);
-  for (int i = 0; i < 6; ++i)
+  ASSERT_EQ(colors.vertex_colors().size(), 21u);
+  for (int i = 0; i < 7; ++i)
     EXPECT_EQ(color_of(colors.vertex_colors(), i), wobble::contact_free_color()) << i;
 
   ASSERT_EQ(simulation.step(), wobble::StepStatus::ok);
   const std::vector<char>& flags = simulation.self_contact_vertices();
-  ASSERT_EQ(flags.size(), 6u);
-  ASSERT_GT(simulation.self_contact_count(), 0) << "the upper triangle is held above the lower";
-  ASSERT_LT(simulation.self_contact_count(), 6) << "the pinned triangle does not move";
+  ASSERT_EQ(flags.size(), 7u);
+  ASSERT_TRUE(flags[3] && flags[4] && flags[5]) << "the upper triangle is held above the lower";
+  ASSERT_FALSE(flags[6]) << "far from the falling triangle";
   colors.update(ColorQuantity::contacts, simulation);
   EXPECT_EQ(colors.range(), 0.0f);
-  ASSERT_EQ(colors.vertex_colors().size(), 18u);
-  for (int i = 0; i < 6; ++i) {
+  ASSERT_EQ(colors.vertex_colors().size(), 21u);
+  for (int i = 0; i < 7; ++i) {
     EXPECT_EQ(color_of(colors.vertex_colors(), i),
               flags[i] ? wobble::self_contact_color() : wobble::contact_free_color())
         << i;
   }
   // A spring is coloured as its first end in contact.
-  ASSERT_EQ(colors.spring_colors().size(), 18u);
+  ASSERT_EQ(colors.spring_colors().size(), 24u);
   const Eigen::MatrixXi& E = simulation.rest().E;
-  for (int e = 0; e < 6; ++e) {
+  for (int e = 0; e < 8; ++e) {
     const bool touching = flags[E(e, 0)] || flags[E(e, 1)];
     EXPECT_EQ(color_of(colors.spring_colors(), e),
               touching ? wobble::self_contact_color() : wobble::contact_free_color())
@@ -308,10 +310,11 @@ TEST(QuantityColors, ContactsGiveTheSelfContactColourExactlyToFlaggedVertices) {
 }
 
 TEST(QuantityColors, ContactsGiveTheColliderColourExactlyToVerticesOnACollider) {
-  // The chain lying on the ground: its free vertices fall into it and are pushed back.
+  // The chain hanging from a pin 1 m up down to the ground: its free vertices, lying on it, fall
+  // into it and are pushed back; the pin is far above it.
   wobble::SpringNetwork network;
   network.V.resize(3, 3);
-  network.V << 0, 0, 0, 1, 0, 0, 2, 0, 0;
+  network.V << 0, 1, 0, 1, 0, 0, 2, 0, 0;
   network.E.resize(2, 2);
   network.E << 0, 1, 1, 2;
   network.m = Eigen::VectorXd::Constant(3, 0.1);
@@ -333,7 +336,8 @@ TEST(QuantityColors, ContactsGiveTheColliderColourExactlyToVerticesOnACollider) 
               flags[i] ? wobble::collider_contact_color() : wobble::contact_free_color())
         << i;
   }
-  EXPECT_FALSE(flags[0]) << "pinned";
+  EXPECT_FALSE(flags[0]) << "1 m above the ground";
+  EXPECT_TRUE(flags[2]);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // the command line opens and refused for a course scene; --stats reports self-collision.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -94,15 +96,21 @@ TEST(SelfCollisionOptions, ACourseSceneRefusesIt) {
             "behaviour (no self-collision)");
 }
 
-// The real executable: exit code 2 and one line naming the option, for both modes.
+// The real executable: exit code 2 and one line naming the option, headless, headless with an
+// image (through the viewer) and in a window (refused before any window opens).
 TEST(SelfCollisionOptions, ACourseSceneExitsWithCode2AndOneLine) {
-  for (const std::string mode : {"--headless", "--headless --screenshot /dev/null"}) {
-    const Result result = run_wobble("'" + course_scene + "' --self-collision " + mode);
+  TemporaryFolder folder;
+  const std::string image = folder.file("banner.png");
+  for (const std::string& mode :
+       std::vector<std::string>{"--headless", "--headless --screenshot '" + image + "'", ""}) {
+    const Result result =
+        run_wobble("'" + course_scene + "' --self-collision " + mode, "DISPLAY= ");
     EXPECT_EQ(result.exit_code, 2) << mode;
     EXPECT_NE(result.err.find("--self-collision: not for a course scene"), std::string::npos)
         << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
   }
+  EXPECT_FALSE(std::filesystem::exists(image));
 }
 
 nlohmann::json stats_of(const std::string& arguments) {
