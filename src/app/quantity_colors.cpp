@@ -202,7 +202,7 @@ void QuantityColors::measure(ColorQuantity quantity, const Simulation& simulatio
                   vertex_values_);
     speed_range_.update(robust_maximum(vertex_values_, scratch_));
   } else if (quantity == ColorQuantity::contacts) {
-    // Counted here as a length so that paint, which takes its vertex count from it, agrees.
+    // Nothing to measure; paint takes the vertex count from these values' length.
     vertex_values_.resize(simulation.positions().rows());
   }
 }

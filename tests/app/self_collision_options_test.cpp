@@ -45,6 +45,14 @@ std::string error_of(std::vector<std::string> words) {
 
 const std::string course_scene = std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json";
 
+TEST(SelfCollisionOptions, HelpListsThem) {
+  const Result result = run_wobble("--help");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.out.find("--self-collision "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("--self-collision-thickness"), std::string::npos);
+  EXPECT_NE(result.out.find("contacts"), std::string::npos) << "--color-by's choices";
+}
+
 TEST(SelfCollisionOptions, OffUnlessAskedFor) {
   EXPECT_FALSE(parse({"cloth"}).self_collision);
   EXPECT_FALSE(wobble::open_scene(parse({"cloth"})).params.self_collision.on);
