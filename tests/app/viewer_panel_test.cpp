@@ -17,9 +17,10 @@ namespace {
 const Eigen::Vector2f window(1280.0f, 720.0f);
 
 struct PanelFixture {
-  explicit PanelFixture(wobble::Scene scene)
+  explicit PanelFixture(wobble::Scene scene,
+                        const wobble::ViewerSettings& settings = wobble::ViewerSettings())
       : imgui(window.x(), window.y()),
-        viewer(std::move(scene), wobble::ViewerSettings(), wobble::builtin_scene_names()) {
+        viewer(std::move(scene), settings, wobble::builtin_scene_names()) {
     viewer.render(1280, 720, window, 1.0f);
     // The panel sizes itself to its contents over its first frames.
     for (int i = 0; i < 3; ++i)
@@ -89,6 +90,22 @@ TEST(ViewerPanel, TheCheckboxReachesASimulationSteppingOnItsThread) {
   f.click(*box);
   f.viewer.finish_steps();
   EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+}
+
+// The split view's right side follows the left's environment, self-collision included.
+TEST(ViewerPanel, TheSplitViewsRightSideFollowsTheCheckbox) {
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings("iterations=5");
+  PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
+  ASSERT_NE(f.viewer.right_side(), nullptr);
+  const std::optional<ImVec2> box = f.find("self-collision");
+  ASSERT_TRUE(box);
+  f.click(*box);
+  f.viewer.advance();
+  EXPECT_TRUE(f.viewer.right_side()->params().self_collision.on);
+  f.click(*f.find("self-collision"));
+  f.viewer.advance();
+  EXPECT_FALSE(f.viewer.right_side()->params().self_collision.on);
 }
 
 TEST(ViewerPanel, ACourseSceneOffersNoSelfCollision) {
