@@ -93,7 +93,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, obj_sequence, damping, friction, color_by;
+      record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -125,6 +125,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--wind", command.wind,
                "Turn the wind on: the scene's, or a default breeze (course scenes: the course "
                "wind)");
+  app.add_flag("--self-collision", command.self_collision,
+               "Keep the surface from passing through itself (thickness: the scene's, else "
+               "0.01 m; not for course scenes)");
+  app.add_option("--self-collision-thickness", self_collision_thickness,
+                 "Self-collision thickness in m, 1e-5 to 1; implies --self-collision");
   std::vector<std::string> drags;
   app.add_option("--drag", drags,
                  "Drag a vertex: VERTEX:DX,DY,DZ@FRAME (over 30 frames) or @FRAME-LAST; "
@@ -142,8 +147,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
   app.add_flag("--points", command.points, "Start with every vertex shown as a point");
   app.add_option("--color-by", color_by,
-                 "Colour the shape by spring strain or vertex speed, with a legend: material, "
-                 "strain or speed (default material; the V key cycles)");
+                 "Colour the shape by spring strain, vertex speed or contacts, with a legend: "
+                 "material, strain, speed or contacts (default material; the V key cycles)");
   app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
   app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
@@ -182,6 +187,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (dt) command.dt = number_in("--dt", *dt, limits::time_step);
   if (damping) command.damping = number_from_zero("--damping", *damping, limits::damping);
   if (friction) command.friction = number_from_zero("--friction", *friction, limits::friction);
+  if (self_collision_thickness) {
+    command.self_collision_thickness = number_in(
+        "--self-collision-thickness", *self_collision_thickness, limits::self_collision_thickness);
+    command.self_collision = true;
+  }
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
   if (width)
     command.width = static_cast<int>(whole_number("--width", *width, CommandLine::max_image_side));
@@ -233,7 +243,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (color_by) {
     const std::optional<ColorQuantity> quantity = color_quantity_named(*color_by);
     if (!quantity) {
-      throw InputError("--color-by: expected material, strain or speed, got '" + *color_by + "'");
+      throw InputError("--color-by: expected material, strain, speed or contacts, got '" +
+                       *color_by + "'");
     }
     command.color_by = *quantity;
   }
@@ -248,6 +259,18 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
         params.wind.model == WindModel::aerodynamic && params.wind.velocity.isZero(0.0);
     if (calm) params.wind = WindParams::default_breeze();
     params.wind.on = true;
+  }
+  if (command.self_collision) {
+    if (params.gravity_model == GravityModel::force_per_vertex) {
+      throw InputError(
+          std::string(command.self_collision_thickness ? "--self-collision-thickness"
+                                                       : "--self-collision") +
+          ": not for a course scene, which keeps the reference's behaviour (no self-collision)");
+    }
+    params.self_collision.on = true;
+    if (command.self_collision_thickness) {
+      params.self_collision.thickness = *command.self_collision_thickness;
+    }
   }
 }
 

@@ -34,6 +34,10 @@ struct CommandLine {
   std::optional<double> friction;   // the material's μ against every collider, limits::friction
   bool wind = false;                // turn the scene's wind on (or the default breeze)
   std::vector<ScriptedDrag> drags;  // --drag, in the order given
+  // --self-collision: turn self-collision on; --self-collision-thickness (m, within
+  // limits::self_collision_thickness) gives its thickness and implies it.
+  bool self_collision = false;
+  std::optional<double> self_collision_thickness;
   // Images (both modes) and what they show.
   int width = 1280, height = 720;  // window or offscreen image size, pixels
   std::string screenshot;          // PNG of the frame after the last step; empty: none
@@ -42,7 +46,7 @@ struct CommandLine {
   bool plots = false;              // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;    // degrees
-  ColorQuantity color_by = ColorQuantity::material;  // strain or speed: coloured, with a legend
+  ColorQuantity color_by = ColorQuantity::material;  // else coloured, with a legend
 
   bool writes_images() const { return !screenshot.empty() || !record.empty(); }
 
@@ -60,9 +64,12 @@ struct CommandLine {
 // for an unknown option, a malformed value, or a value out of range.
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
 
-// Puts the command line's --damping, --friction and --wind into a scene's parameters. --wind
-// turns on the wind the scene has (the course wind for a course scene); a scene whose
-// aerodynamic wind has no velocity gets WindParams::default_breeze().
+// Puts the command line's --damping, --friction, --wind and --self-collision into a scene's
+// parameters. --wind turns on the wind the scene has (the course wind for a course scene); a scene
+// whose aerodynamic wind has no velocity gets WindParams::default_breeze(). --self-collision
+// turns self-collision on with the scene's thickness (default 0.01 m) unless
+// --self-collision-thickness gives one. Throws InputError when either self-collision option meets
+// a course scene (params.gravity_model force_per_vertex): those keep the reference's behaviour.
 void apply_scene_overrides(const CommandLine& command, SimulationParams& params);
 
 }  // namespace wobble

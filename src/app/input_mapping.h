@@ -17,7 +17,7 @@ enum class ViewerCommand {
   toggle_colliders,
   toggle_points,
   toggle_springs,
-  cycle_color_by,  // material → strain → speed → material
+  cycle_color_by,  // material → strain → speed → contacts → material
   toggle_help,
   toggle_plots,    // the convergence and energy plots
   toggle_split,    // the split view: the scene twice, side by side

@@ -34,6 +34,8 @@ ColorQuantity next_color_quantity(ColorQuantity quantity) {
     case ColorQuantity::strain:
       return ColorQuantity::speed;
     case ColorQuantity::speed:
+      return ColorQuantity::contacts;
+    case ColorQuantity::contacts:
       return ColorQuantity::material;
   }
   return ColorQuantity::material;
@@ -47,16 +49,45 @@ const char* color_quantity_name(ColorQuantity quantity) {
       return "strain";
     case ColorQuantity::speed:
       return "speed";
+    case ColorQuantity::contacts:
+      return "contacts";
   }
   return "material";
 }
 
 std::optional<ColorQuantity> color_quantity_named(const std::string& name) {
-  for (ColorQuantity quantity :
-       {ColorQuantity::material, ColorQuantity::strain, ColorQuantity::speed}) {
+  for (ColorQuantity quantity : {ColorQuantity::material, ColorQuantity::strain,
+                                 ColorQuantity::speed, ColorQuantity::contacts}) {
     if (name == color_quantity_name(quantity)) return quantity;
   }
   return std::nullopt;
+}
+
+// Magenta and cyan-blue stand apart from each other, from the grey and from the orange and blue
+// of the material's two sides.
+Eigen::Vector3f self_contact_color() {
+  return {0.85f, 0.08f, 0.55f};
+}
+
+Eigen::Vector3f collider_contact_color() {
+  return {0.05f, 0.55f, 0.95f};
+}
+
+Eigen::Vector3f contact_free_color() {
+  return {0.55f, 0.55f, 0.55f};
+}
+
+void contact_colors(const std::vector<char>& self, const std::vector<char>& collider,
+                    int vertex_count, std::vector<float>& colors) {
+  const auto size = static_cast<std::size_t>(vertex_count);
+  const bool has_self = self.size() == size, has_collider = collider.size() == size;
+  colors.resize(3 * size);
+  for (int i = 0; i < vertex_count; ++i) {
+    const Eigen::Vector3f color = has_self && self[i]           ? self_contact_color()
+                                  : has_collider && collider[i] ? collider_contact_color()
+                                                                : contact_free_color();
+    put(colors, i, color);
+  }
 }
 
 void spring_strains(const Eigen::MatrixXd& V, const Eigen::MatrixXi& E, const Eigen::VectorXd& r,
@@ -141,6 +172,7 @@ float QuantityColors::measured_range() const {
     case ColorQuantity::speed:
       return speed_range_.value();
     case ColorQuantity::material:
+    case ColorQuantity::contacts:
       break;
   }
   return 0.0f;
@@ -169,11 +201,15 @@ void QuantityColors::measure(ColorQuantity quantity, const Simulation& simulatio
     vertex_speeds(simulation.positions(), simulation.previous_positions(), simulation.params().dt,
                   vertex_values_);
     speed_range_.update(robust_maximum(vertex_values_, scratch_));
+  } else if (quantity == ColorQuantity::contacts) {
+    // Nothing to measure; paint takes the vertex count from these values' length.
+    vertex_values_.resize(simulation.positions().rows());
   }
 }
 
 void QuantityColors::paint(const Simulation& simulation, float range, bool with_springs) {
-  painted_range_ = quantity_ == ColorQuantity::material ? 0.0f : range;
+  painted_range_ =
+      quantity_ == ColorQuantity::material || quantity_ == ColorQuantity::contacts ? 0.0f : range;
   if (quantity_ == ColorQuantity::material) {
     vertex_colors_.clear();
     spring_colors_.clear();
@@ -189,6 +225,22 @@ void QuantityColors::paint(const Simulation& simulation, float range, bool with_
       put(spring_colors_, e, diverging_color(spring_values_[e] / range));
     for (Eigen::Index i = 0; i < vertex_count; ++i)
       put(vertex_colors_, i, diverging_color(vertex_values_[i] / range));
+    return;
+  }
+  if (quantity_ == ColorQuantity::contacts) {
+    const std::vector<char>& self = simulation.self_contact_vertices();
+    const std::vector<char>& collider = simulation.collider_contact_vertices();
+    contact_colors(self, collider, static_cast<int>(vertex_count), vertex_colors_);
+    const auto size = static_cast<std::size_t>(vertex_count);
+    const auto touching = [&](Eigen::Index i) {
+      return (self.size() == size && self[i]) || (collider.size() == size && collider[i]);
+    };
+    // A spring takes the colour of its first end in contact, if either is.
+    for (Eigen::Index e = 0; e < colored_springs; ++e) {
+      const Eigen::Index end = touching(E(e, 0)) ? E(e, 0) : E(e, 1);
+      for (int k = 0; k < 3; ++k)
+        spring_colors_[3 * e + k] = vertex_colors_[3 * end + k];
+    }
     return;
   }
   for (Eigen::Index i = 0; i < vertex_count; ++i)

@@ -11,15 +11,16 @@ namespace wobble {
 class Simulation;
 
 // Colouring the shape by a quantity a student can read: how far each spring is stretched or
-// compressed, or how fast each vertex moves. Pure functions on Eigen arrays, and QuantityColors,
-// which turns a simulation state into colours for the renderer's plain arrays. No GL.
+// compressed, how fast each vertex moves, or which vertices are in contact. Pure functions on Eigen
+// arrays, and QuantityColors, which turns a simulation state into colours for the renderer's plain
+// arrays. No GL.
 
 // What the surface and springs are coloured by, in the order the V key cycles through and the
 // panel's combo lists them (PanelSettings::color_by is this as an int).
-enum class ColorQuantity { material, strain, speed };
+enum class ColorQuantity { material, strain, speed, contacts };
 
 ColorQuantity next_color_quantity(ColorQuantity quantity);
-// "material", "strain", "speed".
+// "material", "strain", "speed", "contacts".
 const char* color_quantity_name(ColorQuantity quantity);
 // The quantity with that name, or nothing.
 std::optional<ColorQuantity> color_quantity_named(const std::string& name);
@@ -47,6 +48,22 @@ void vertex_mean_of_springs(const Eigen::MatrixXi& E, const Eigen::VectorXf& spr
 //   speed              #V, resized
 void vertex_speeds(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous, double dt,
                    Eigen::VectorXf& speed);
+
+// Colouring by contacts: linear RGB of a vertex the last step's self-collision moved, of one on a
+// collider, and of one in neither.
+Eigen::Vector3f self_contact_color();
+Eigen::Vector3f collider_contact_color();
+Eigen::Vector3f contact_free_color();
+
+// Colours of the vertices by contact: self_contact_color() where `self` is set (a vertex in both
+// kinds of contact shows the self contact), collider_contact_color() where `collider` is set,
+// contact_free_color() elsewhere. A list of flags that is not vertex_count long (empty: before
+// the first step, self-collision off or no collider) counts as none set.
+//   self, collider  #V flags, non-zero: in contact
+//   vertex_count    #V
+//   colors          3·#V linear RGB, row-major, resized
+void contact_colors(const std::vector<char>& self, const std::vector<char>& collider,
+                    int vertex_count, std::vector<float>& colors);
 
 // `value` (≥ 0) with two significant digits and no exponent, for a legend: 0.021 → "0.021",
 // 2.14 → "2.1", 123 → "123", 0 → "0".
@@ -88,7 +105,9 @@ class SmoothedRange {
 // the surface by the mean strain of each vertex's springs, over a symmetric range ±range().
 // Speed: the vertices by their speed over 0 … range() m/s, each spring by the mean of its ends'
 // speeds. The range is the smoothed robust maximum, with a floor so a resting shape is not
-// coloured by noise. Allocates only when the shape's size changes.
+// coloured by noise. Contacts: the vertices by contact_colors() of the simulation's self contact
+// and collider contact flags, each spring as its first end in contact (or as a free one), no
+// range. Allocates only when the shape's size changes.
 class QuantityColors {
  public:
   static constexpr float strain_floor = 1e-4f;  // 0.01%
@@ -108,7 +127,8 @@ class QuantityColors {
   float measured_range() const;
 
   ColorQuantity quantity() const { return quantity_; }
-  // The range of the colours: strain −range … +range (dimensionless), speed 0 … range (m/s).
+  // The range of the colours: strain −range … +range (dimensionless), speed 0 … range (m/s);
+  // 0 for material and contacts.
   float range() const { return painted_range_; }
   // #V by 3 and #E by 3 linear RGB, row-major; empty for material (and the springs' without
   // with_springs).

@@ -94,11 +94,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 
   StepTimes times;
-  if (command.stats) {
-    times.step_ms.reserve(frames);
-    times.local_ms.reserve(frames);
-    times.global_ms.reserve(frames);
-  }
+  if (command.stats) times.reserve(frames);
   for (long frame = 0; frame < frames; ++frame) {
     drags.before_step(simulation, frame + 1);
     const StepStatus status = simulation.step();

@@ -4,10 +4,18 @@
 
 namespace wobble {
 
+void StepTimes::reserve(long steps) {
+  for (std::vector<double>* times :
+       {&step_ms, &local_ms, &global_ms, &self_detection_ms, &self_response_ms})
+    times->reserve(steps);
+}
+
 void StepTimes::add(const StepTiming& timing) {
   step_ms.push_back(timing.total_ms);
   local_ms.push_back(timing.local_ms);
   global_ms.push_back(timing.global_ms);
+  self_detection_ms.push_back(timing.self_detection_ms);
+  self_response_ms.push_back(timing.self_response_ms);
 }
 
 double median(std::vector<double> values) {
@@ -43,6 +51,11 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
       {"local_ms_median", median(times.local_ms)},
       {"global_ms_median", median(times.global_ms)},
+      {"self_collision", params.self_collision.on},
+      {"self_collision_thickness", params.self_collision.thickness},
+      {"self_contacts", simulation.self_contact_count()},
+      {"self_detection_ms_median", median(times.self_detection_ms)},
+      {"self_response_ms_median", median(times.self_response_ms)},
   };
 }
 

@@ -12,6 +12,8 @@ namespace wobble {
 // The wall-clock times of a run's steps (ms), as --stats reports them.
 struct StepTimes {
   std::vector<double> step_ms, local_ms, global_ms;
+  std::vector<double> self_detection_ms, self_response_ms;  // 0 while self-collision is off
+  void reserve(long steps);
   void add(const StepTiming& timing);
 };
 
@@ -19,7 +21,9 @@ struct StepTimes {
 double median(std::vector<double> values);
 
 // --stats: the scene, the simulation's settings and factor, and the step times' medians (the
-// README lists the keys). Headless adds the render time, the window the UI's frame time.
+// README lists the keys), with self-collision's: whether it is on, its thickness (m), the last
+// step's self contacts and the medians of its detection and response times. Headless adds the
+// render time, the window the UI's frame time.
 nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene& scene, long frames,
                                       const StepTimes& times);
 

@@ -247,6 +247,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.forces_ms = static_cast<float>(step.forces_ms);
   stats.instruments_ms = static_cast<float>(step.instruments_ms);
   stats.contact_ms = static_cast<float>(step.contact_ms);
+  stats.self_detection_ms = static_cast<float>(step.self_detection_ms);
+  stats.self_response_ms = static_cast<float>(step.self_response_ms);
 
   // The panel's UI scale (for projectors) multiplies the screen's.
   ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
@@ -329,6 +331,8 @@ PanelStats Viewer::simulation_stats() const {
   stats.has_colliders = !simulation_->colliders().empty();
   stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
   stats.contacts = simulation_->contact_count();
+  stats.self_collision = simulation_->params().self_collision.on;
+  stats.self_contacts = simulation_->self_contact_count();
   stats.student_side = student_ != nullptr;
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
   stats.warning = step_warning_;

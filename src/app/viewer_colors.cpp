@@ -1,4 +1,4 @@
-// The viewer's colouring by a quantity (spring strain, vertex speed) and its legend.
+// The viewer's colouring by a quantity (spring strain, vertex speed, contacts) and its legend.
 #include <algorithm>
 
 #include "ui/color_legend.h"
@@ -10,6 +10,23 @@ namespace {
 
 // Samples of a colour map for the legend's bar: enough that the bar follows the map's curve.
 constexpr int legend_samples = 33;
+
+// Three blocks, free, self contact and collider contact, each of as many samples as the bar's
+// blend between neighbours stays a thin edge.
+ColorLegend contacts_legend() {
+  ColorLegend legend;
+  legend.title = "contacts (last step)";
+  legend.low = "free";
+  legend.middle = "self";
+  legend.high = "collider";
+  legend.note = "magenta: self contact, blue: on a collider";
+  for (const Eigen::Vector3f& color :
+       {contact_free_color(), self_contact_color(), collider_contact_color()}) {
+    for (int i = 0; i < legend_samples / 3; ++i)
+      legend.colors.insert(legend.colors.end(), color.data(), color.data() + 3);
+  }
+  return legend;
+}
 
 }  // namespace
 
@@ -48,6 +65,13 @@ void Viewer::build_legend(float ui_scale) {
   }
   const ColorQuantity quantity = quantity_colors_.quantity();
   if (quantity == ColorQuantity::material) return;
+  LegendClearance clearance;
+  clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
+  clearance.side_labels = twin_ != nullptr;
+  if (quantity == ColorQuantity::contacts) {
+    draw_color_legend(contacts_legend(), ui_scale, clearance);
+    return;
+  }
   const float range = quantity_colors_.range();
   ColorLegend legend;
   legend.colors.reserve(3 * legend_samples);
@@ -69,9 +93,6 @@ void Viewer::build_legend(float ui_scale) {
     legend.high = two_significant_digits(range);
     legend.note = "range: 99th percentile, smoothed";
   }
-  LegendClearance clearance;
-  clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
-  clearance.side_labels = twin_ != nullptr;
   draw_color_legend(legend, ui_scale, clearance);
 }
 

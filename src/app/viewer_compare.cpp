@@ -112,6 +112,10 @@ void Viewer::sync_twin() {
       wind.air_density != twin_wind.air_density) {
     twin.set_wind(wind);
   }
+  const SelfCollisionParams& self = from.self_collision;
+  if (self.on != to.self_collision.on || self.thickness != to.self_collision.thickness) {
+    twin.set_self_collision(self);
+  }
 }
 
 void Viewer::advance_twin(double seconds) {

@@ -1,10 +1,11 @@
-// The viewer's environment: damping, friction and wind as the panel and the W key set them, the
-// ground grid under the scene, and the colliders' triangles.
+// The viewer's environment: damping, friction, wind and self-collision as the panel and the W key
+// set them, the ground grid under the scene, and the colliders' triangles.
 #include <algorithm>
 #include <cmath>
 
 #include "environment_controls.h"
 #include "ground_placement.h"
+#include "sim/value_limits.h"
 #include "viewer.h"
 
 namespace wobble {
@@ -16,6 +17,8 @@ void Viewer::show_environment_in_panel() {
   panel_.wind = params.wind.on;
   panel_.wind_speed = shown_wind_speed_ = static_cast<float>(wind_speed(params.wind));
   panel_.wind_heading = shown_wind_heading_ = static_cast<float>(wind_heading_degrees(params.wind));
+  panel_.self_collision = params.self_collision.on;
+  panel_.self_collision_mm = static_cast<float>(1000.0 * params.self_collision.thickness);
 }
 
 void Viewer::apply_environment_settings() {
@@ -35,6 +38,23 @@ void Viewer::apply_environment_settings() {
         wind_with_speed_and_heading(params.wind, panel_.wind_speed, panel_.wind_heading));
     shown_wind_speed_ = panel_.wind_speed;
     shown_wind_heading_ = panel_.wind_heading;
+  }
+  // Nothing precomputed either. The checkbox alone keeps the thickness as it is (a float's mm
+  // would not give 0.01 m back exactly); the slider's value is clamped, as a float's rounding can
+  // fall just outside the limits. A course scene is offered neither.
+  const SelfCollisionParams& self = params.self_collision;
+  const bool course = params.gravity_model == GravityModel::force_per_vertex;
+  const bool thickness_moved =
+      static_cast<float>(1000.0 * self.thickness) != panel_.self_collision_mm;
+  if (!course && (self.on != panel_.self_collision || thickness_moved)) {
+    SelfCollisionParams changed = self;
+    changed.on = panel_.self_collision;
+    if (thickness_moved) {
+      const ValueRange& range = limits::self_collision_thickness;
+      changed.thickness = std::clamp(1e-3 * panel_.self_collision_mm, range.low, range.high);
+    }
+    simulation_->set_self_collision(changed);
+    panel_.self_collision_mm = static_cast<float>(1000.0 * changed.thickness);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "io/scene_colliders.h"
 #include "io/scene_masses.h"
 #include "io/scene_pins.h"
+#include "io/scene_self_collision.h"
 #include "io/scene_wind.h"
 #include "io/shape_limits.h"
 #include "sim/input_error.h"
@@ -224,6 +225,8 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
   }
   if (top.has("colliders"))
     scene.params.contact.colliders = scene_colliders(path, top, "colliders");
+  if (top.has("self_collision"))
+    scene.params.self_collision = scene_self_collision(top, "self_collision");
 
   if (top.has("pins")) {
     scene.pins = scene_pins(top, "pins", scene.network.V, shape.cloth_resolution);

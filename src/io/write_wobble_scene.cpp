@@ -152,6 +152,10 @@ nlohmann::json wobble_scene_json(const Scene& scene, const std::string& mesh_fil
   for (const Collider& collider : params.contact.colliders)
     colliders.push_back(collider_json(collider));
   object["colliders"] = std::move(colliders);
+  // The key's presence is what turns self-collision on, so it is written only then.
+  if (params.self_collision.on) {
+    object["self_collision"] = {{"thickness", params.self_collision.thickness}};
+  }
   json velocity = initial_velocity_json(scene);
   if (!velocity.is_null()) object["initial_velocity"] = std::move(velocity);
 

@@ -171,6 +171,8 @@ class Simulation {
   double contact_offset() const { return contact_.offset(); }
   // Vertices the last step moved out of a collider.
   int contact_count() const { return contact_.contact_count(); }
+  // The same as #V flags (empty when there is no collider).
+  const std::vector<char>& collider_contact_vertices() const { return contact_.contact_vertices(); }
   // Self-collision on or off, or a new thickness; nothing precomputed. Throws InputError for a
   // thickness out of limits::self_collision_thickness.
   void set_self_collision(const SelfCollisionParams& self_collision);

@@ -176,6 +176,18 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                        ImGuiSliderFlags_AlwaysClamp);
   }
   if (stats.has_colliders) ImGui::Checkbox("colliders", &settings.colliders);
+  // A course scene reproduces the course's program, which has no self-collision: not offered.
+  if (!stats.course_scene) {
+    ImGui::Checkbox("self-collision", &settings.self_collision);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Keep the surface from passing through itself, a thickness apart");
+    }
+    if (settings.self_collision) {
+      ImGui::SliderFloat("thickness (mm)", &settings.self_collision_mm,
+                         PanelSettings::min_self_collision_mm, PanelSettings::max_self_collision_mm,
+                         "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    }
+  }
 
   section("view");
   ImGui::Checkbox("surface", &settings.surface);
@@ -186,7 +198,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::Checkbox("springs", &settings.springs);
   ImGui::SameLine();
   ImGui::Checkbox("points", &settings.points);
-  const char* const color_names[] = {"material", "strain", "speed"};
+  const char* const color_names[] = {"material", "strain", "speed", "contacts"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
 
   ImGui::SliderFloat("UI scale", &settings.ui_scale, PanelSettings::min_ui_scale,
@@ -237,6 +249,16 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   stat_row("springs", "%.0f", stats.springs);
   stat_row("pins", "%.0f", stats.pins);
   if (stats.has_colliders) stat_row("contacts", "%.0f", stats.contacts);
+  if (stats.self_collision) {
+    ImGui::TextUnformatted("self contacts");
+    ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
+    if (stats.show_timings) {
+      ImGui::Text("%d (detect %.2f ms, respond %.2f ms)", stats.self_contacts,
+                  stats.self_detection_ms, stats.self_response_ms);
+    } else {
+      ImGui::Text("%d", stats.self_contacts);
+    }
+  }
   for (const std::string& note : stats.notes)
     ImGui::TextWrapped("%s", note.c_str());
   ImGui::PopItemWidth();

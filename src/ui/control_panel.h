@@ -24,8 +24,11 @@ struct PanelSettings {
   // Real time: the window takes as many steps before a frame as keep the simulated clock with
   // the wall clock (up to what fits in a frame); off, one step a frame.
   bool real_time = true;
+  // Self-collision on, and its thickness in mm (the simulation's is in m).
+  bool self_collision = false;
+  float self_collision_mm = 10.0f;
   bool surface = true, wireframe = false, springs = false, points = false, ground = true;
-  int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed (the V key cycles them)
+  int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed, 3 contacts (V cycles them)
   int scene = 0;     // index into the scene names
   bool show_help = false;
   char open_path[512] = "";       // the "open" field's text
@@ -46,6 +49,8 @@ struct PanelSettings {
   static constexpr float max_gravity = 30.0f;
   static constexpr float min_ui_scale = 0.75f, max_ui_scale = 3.0f;
   static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
+  // limits::self_collision_thickness, 1e-5 to 1 m, in mm.
+  static constexpr float min_self_collision_mm = 0.01f, max_self_collision_mm = 1000.0f;
 };
 
 // Numbers the panel shows.
@@ -68,10 +73,15 @@ struct PanelStats {
   bool aerodynamic_wind = true;    // the wind has a speed and heading (the course's has neither)
   int contacts = 0;                // vertices the last step moved out of a collider
   bool student_side = false;       // the right side is a student's step (--student)
-  bool course_scene = false;       // the course's format: Chebyshev is not offered
+  bool course_scene = false;       // the course's format: no Chebyshev, no self-collision offered
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
   std::string recording;           // while recording: "DIR/ (N frames)"
+  // Self-collision on (its row shows only then), the vertices the last step's self-collision
+  // moved, and that step's time detecting pairs and pushing them apart (ms).
+  bool self_collision = false;
+  int self_contacts = 0;
+  float self_detection_ms = 0.0f, self_response_ms = 0.0f;
 };
 
 // Where the panel lies, in ImGui's display units (the window's, from its top-left corner), so
@@ -97,7 +107,7 @@ struct PanelRequests {
 };
 
 // The "Wobble" panel: scene picker, play controls, simulation and environment (damping,
-// friction, wind, colliders) sliders, view toggles and stats. Call between
+// friction, wind, colliders, self-collision) sliders, view toggles and stats. Call between
 // ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
 PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
                                  const std::vector<std::string>& scene_names, float ui_scale);

@@ -633,7 +633,8 @@ std::vector<BadInput> value_and_output_catalogue() {
   };
 }
 
-// Issue 14's keys and options: colliders, friction, damping, the contact offset and wind.
+// Issue 14's keys and options: colliders, friction, damping, the contact offset and wind; and
+// self-collision's.
 std::vector<BadInput> contact_catalogue() {
   const auto scene = [](const std::string& keys) {
     return "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 4}, " + keys + "}";
@@ -730,6 +731,31 @@ std::vector<BadInput> contact_catalogue() {
       {"damping_nan", {}, "cloth --damping nan", {"--damping", "'nan'"}},
       {"friction_above_limit", {}, "cloth --friction 11", {"--friction", "0 to 10", "'11'"}},
       {"friction_negative", {}, "cloth --friction -0.5", {"--friction", "'-0.5'"}},
+      // Self-collision: its scene key and options, and course scenes, which never have it.
+      {"self_collision_not_an_object",
+       {{"s.json", scene("\"self_collision\": true")}},
+       "{dir}/s.json",
+       {"s.json", "self_collision", "expected an object", "got true"}},
+      {"self_collision_thickness_wrong_type",
+       {{"s.json", scene("\"self_collision\": {\"thickness\": \"1 cm\"}")}},
+       "{dir}/s.json",
+       {"s.json", "self_collision.thickness", "1e-5 to 1 m", "got \"1 cm\""}},
+      {"self_collision_thickness_above_limit",
+       {{"s.json", scene("\"self_collision\": {\"thickness\": 2}")}},
+       "{dir}/s.json",
+       {"s.json", "self_collision.thickness", "1e-5 to 1 m", "got 2"}},
+      {"self_collision_unknown_key",
+       {{"s.json", scene("\"self_collision\": {\"thicknes\": 0.02}")}},
+       "{dir}/s.json",
+       {"s.json", "self_collision.thicknes", "unknown key", "\"thickness\""}},
+      {"self_collision_thickness_option_zero",
+       {},
+       "cloth --self-collision-thickness 0",
+       {"--self-collision-thickness", "'0'"}},
+      {"self_collision_on_a_course_scene",
+       {{"tri.obj", triangle_obj}, {"c.json", course("")}},
+       "{dir}/c.json --self-collision",
+       {"--self-collision", "course scene", "reference's behaviour"}},
   };
 }
 

@@ -1,5 +1,5 @@
 // --color-by in headless images: the quantity's colours replace the material's, and the legend
-// shows at the bottom right, with or without --ui.
+// shows at the bottom right, with or without --ui; contacts paint what touches a collider.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -77,6 +77,36 @@ TEST(ColorByRender, SpeedAndStrainDifferAndThePanelKeepsTheLegend) {
   EXPECT_GT(legend, 8000);
   EXPECT_LT(differences(speed, speed_ui, width - 200, height - 60, width, height), legend / 2);
   EXPECT_GT(differences(speed, speed_ui, 0, 0, 300, 200), 20000);
+}
+
+// Strongly blue: the collider contact colour, not the drape's lit blue back (red over 0.6 of
+// blue in sRGB) nor the grey-blue background and grid.
+bool is_contact_blue(const unsigned char* rgb) {
+  return rgb[2] > 120 && rgb[0] < 0.45 * rgb[2];
+}
+
+TEST(ColorByRender, ContactsPaintTheClothWhereItLiesOnTheBall) {
+  TemporaryFolder folder;
+  const auto drape = [&](const std::string& name, const std::string& options) {
+    const auto run = run_wobble("'" + std::string(WOBBLE_ASSETS_DIR) +
+                                    "/drape.json' --headless --frames 120 --width 640 "
+                                    "--height 400 " +
+                                    options + " --screenshot '" + folder.file(name) + "'",
+                                "DISPLAY= WAYLAND_DISPLAY=");
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    wobble::RgbaImage image = wobble::read_png(folder.file(name));
+    // The legend's blue block is not the cloth: only the picture above it counts.
+    image.height = height - 100;
+    return image;
+  };
+  const wobble::RgbaImage material = drape("material.png", "");
+  const wobble::RgbaImage contacts = drape("contacts.png", "--color-by contacts");
+  const long blue = count_pixels(contacts, is_contact_blue);
+  EXPECT_GT(blue, 2000) << "the cloth on top of the ball";
+  EXPECT_LT(count_pixels(material, is_contact_blue), blue / 10);
+  // The orange front is gone: what is not in contact is grey.
+  EXPECT_LT(count_pixels(contacts, wobble::testing::is_cloth_front),
+            count_pixels(material, wobble::testing::is_cloth_front) / 10);
 }
 
 }  // namespace

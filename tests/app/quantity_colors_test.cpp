@@ -127,8 +127,10 @@ TEST(QuantityColors, RangeStartsAtTheFirstValueRisesFastFallsSlowlyAndKeepsItsFl
 TEST(QuantityColors, NamesCycleAndParse) {
   EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::material), ColorQuantity::strain);
   EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::strain), ColorQuantity::speed);
-  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::speed), ColorQuantity::material);
-  for (ColorQuantity q : {ColorQuantity::material, ColorQuantity::strain, ColorQuantity::speed})
+  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::speed), ColorQuantity::contacts);
+  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::contacts), ColorQuantity::material);
+  for (ColorQuantity q : {ColorQuantity::material, ColorQuantity::strain, ColorQuantity::speed,
+                          ColorQuantity::contacts})
     EXPECT_EQ(wobble::color_quantity_named(wobble::color_quantity_name(q)), q);
   EXPECT_FALSE(wobble::color_quantity_named("stress"));
   EXPECT_FALSE(wobble::color_quantity_named("Strain"));
@@ -222,6 +224,120 @@ TEST(QuantityColors, ColoursSpeedFromDarkAtRestToBrightAtTheRange) {
   // The second spring: the mean of 0 and 2 m/s, still above the range.
   const Eigen::Map<const Eigen::Vector3f> spring(colors.spring_colors().data() + 3);
   EXPECT_TRUE(spring.isApprox(wobble::sequential_color(1.0f), 1e-5f));
+}
+
+// Colouring by contacts.
+
+Eigen::Vector3f color_of(const std::vector<float>& colors, int i) {
+  return Eigen::Vector3f(colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]);
+}
+
+TEST(QuantityColors, ContactColoursFollowTheFlagsSelfFirst) {
+  const std::vector<char> self = {0, 1, 0, 1, 0}, collider = {0, 0, 1, 1, 0};
+  std::vector<float> colors;
+  wobble::contact_colors(self, collider, 5, colors);
+  ASSERT_EQ(colors.size(), 15u);
+  EXPECT_EQ(color_of(colors, 0), wobble::contact_free_color());
+  EXPECT_EQ(color_of(colors, 1), wobble::self_contact_color());
+  EXPECT_EQ(color_of(colors, 2), wobble::collider_contact_color());
+  EXPECT_EQ(color_of(colors, 3), wobble::self_contact_color());  // both: the self contact
+  EXPECT_EQ(color_of(colors, 4), wobble::contact_free_color());
+  // The three colours differ, or the picture would say nothing.
+  EXPECT_NE(wobble::self_contact_color(), wobble::collider_contact_color());
+  EXPECT_NE(wobble::self_contact_color(), wobble::contact_free_color());
+  EXPECT_NE(wobble::collider_contact_color(), wobble::contact_free_color());
+
+  // No flags yet (before the first step, or no collider), or flags of another shape: none set.
+  wobble::contact_colors({}, {0, 1}, 5, colors);
+  ASSERT_EQ(colors.size(), 15u);
+  for (int i = 0; i < 5; ++i)
+    EXPECT_EQ(color_of(colors, i), wobble::contact_free_color()) << i;
+}
+
+// Three triangles of one surface: two pinned side by side, and a smaller free one 5 cm above the
+// first, falling through it within a step unless self-collision holds it a thickness away. The
+// second pinned triangle's far vertex 6 is nowhere near it.
+wobble::Simulation falling_triangle() {
+  wobble::SpringNetwork network;
+  network.V.resize(7, 3);
+  network.V << 0, 0, 0, 1, 0, 0, 0, 0, 1,              //
+      0.2, 0.05, 0.2, 0.4, 0.05, 0.2, 0.2, 0.05, 0.4,  //
+      3, 0, 0;
+  network.E.resize(8, 2);
+  network.E << 0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 3, 1, 6, 6, 2;
+  network.F.resize(3, 3);
+  network.F << 0, 2, 1, 3, 5, 4, 1, 2, 6;
+  network.m = Eigen::VectorXd::Constant(7, 0.1);
+  wobble::SimulationParams params;
+  params.self_collision.on = true;
+  params.self_collision.thickness = 0.01;
+  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(7, 3);
+  velocity.block(3, 1, 3, 1).setConstant(-6.0);  // 0.1 m in a step of 1/60 s
+  return wobble::Simulation(network, {0, 1, 2, 6}, params, velocity);
+}
+
+TEST(QuantityColors, ContactsGiveTheSelfContactColourExactlyToFlaggedVertices) {
+  wobble::Simulation simulation = falling_triangle();
+  wobble::QuantityColors colors;
+  // Before the first step no vertex is in contact.
+  colors.update(ColorQuantity::contacts, simulation);
+  ASSERT_EQ(colors.vertex_colors().size(), 21u);
+  for (int i = 0; i < 7; ++i)
+    EXPECT_EQ(color_of(colors.vertex_colors(), i), wobble::contact_free_color()) << i;
+
+  ASSERT_EQ(simulation.step(), wobble::StepStatus::ok);
+  const std::vector<char>& flags = simulation.self_contact_vertices();
+  ASSERT_EQ(flags.size(), 7u);
+  ASSERT_TRUE(flags[3] && flags[4] && flags[5]) << "the upper triangle is held above the lower";
+  ASSERT_FALSE(flags[6]) << "far from the falling triangle";
+  colors.update(ColorQuantity::contacts, simulation);
+  EXPECT_EQ(colors.range(), 0.0f);
+  ASSERT_EQ(colors.vertex_colors().size(), 21u);
+  for (int i = 0; i < 7; ++i) {
+    EXPECT_EQ(color_of(colors.vertex_colors(), i),
+              flags[i] ? wobble::self_contact_color() : wobble::contact_free_color())
+        << i;
+  }
+  // A spring is coloured as its first end in contact.
+  ASSERT_EQ(colors.spring_colors().size(), 24u);
+  const Eigen::MatrixXi& E = simulation.rest().E;
+  for (int e = 0; e < 8; ++e) {
+    const bool touching = flags[E(e, 0)] || flags[E(e, 1)];
+    EXPECT_EQ(color_of(colors.spring_colors(), e),
+              touching ? wobble::self_contact_color() : wobble::contact_free_color())
+        << e;
+  }
+}
+
+TEST(QuantityColors, ContactsGiveTheColliderColourExactlyToVerticesOnACollider) {
+  // The chain hanging from a pin 1 m up down to the ground: its free vertices, lying on it, fall
+  // into it and are pushed back; the pin is far above it.
+  wobble::SpringNetwork network;
+  network.V.resize(3, 3);
+  network.V << 0, 1, 0, 1, 0, 0, 2, 0, 0;
+  network.E.resize(2, 2);
+  network.E << 0, 1, 1, 2;
+  network.m = Eigen::VectorXd::Constant(3, 0.1);
+  wobble::SimulationParams params;
+  wobble::Collider ground;
+  ground.type = wobble::ColliderType::ground;
+  ground.height = 0.0;
+  params.contact.colliders.push_back(ground);
+  wobble::Simulation simulation(network, {0}, params);
+  ASSERT_EQ(simulation.step(), wobble::StepStatus::ok);
+  const std::vector<char>& flags = simulation.collider_contact_vertices();
+  ASSERT_EQ(flags.size(), 3u);
+  ASSERT_GT(simulation.contact_count(), 0);
+  wobble::QuantityColors colors;
+  colors.update(ColorQuantity::contacts, simulation);
+  ASSERT_EQ(colors.vertex_colors().size(), 9u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(color_of(colors.vertex_colors(), i),
+              flags[i] ? wobble::collider_contact_color() : wobble::contact_free_color())
+        << i;
+  }
+  EXPECT_FALSE(flags[0]) << "1 m above the ground";
+  EXPECT_TRUE(flags[2]);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "app/picking.h"
 #include "app/viewer.h"
+#include "headless_imgui.h"
 #include "viewer_screen.h"
 
 namespace {
@@ -21,20 +22,8 @@ constexpr float ui_scale = 2.0f;
 constexpr float panel_right = 680.0f;
 
 // An ImGui context with no backend: enough for build_ui to lay the panel out.
-class HeadlessImGui {
- public:
-  HeadlessImGui() {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(window.x(), window.y());
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  }
-  ~HeadlessImGui() { ImGui::DestroyContext(); }
-  HeadlessImGui(const HeadlessImGui&) = delete;
-  HeadlessImGui& operator=(const HeadlessImGui&) = delete;
+struct HeadlessImGui : wobble::testing::HeadlessImGui {
+  HeadlessImGui() : wobble::testing::HeadlessImGui(window.x(), window.y()) {}
 };
 
 struct CameraFixture {

@@ -318,6 +318,13 @@ TEST(Viewer, VCyclesTheColouringAndMaterialComputesNoColours) {
       << "the cloth is falling";
 
   fixture.press_key(GLFW_KEY_V);
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::contacts);
+  fixture.frame();
+  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::contacts);
+  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
+  EXPECT_EQ(viewer.quantity_colors().range(), 0.0f);
+
+  fixture.press_key(GLFW_KEY_V);
   EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
   fixture.frame();
   EXPECT_TRUE(viewer.quantity_colors().vertex_colors().empty());

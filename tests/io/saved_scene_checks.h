@@ -68,6 +68,11 @@ inline void expect_same_params(const SimulationParams& a, const SimulationParams
   EXPECT_EQ(a.wind.air_density, b.wind.air_density);
   EXPECT_EQ(a.contact.friction, b.contact.friction);
   EXPECT_EQ(a.contact.offset, b.contact.offset);
+  EXPECT_EQ(a.self_collision.on, b.self_collision.on);
+  // Off, the format keeps no thickness: a scene read back has the default.
+  if (a.self_collision.on) {
+    EXPECT_EQ(a.self_collision.thickness, b.self_collision.thickness);
+  }
   ASSERT_EQ(a.contact.colliders.size(), b.contact.colliders.size());
   for (std::size_t c = 0; c < a.contact.colliders.size(); ++c) {
     SCOPED_TRACE("collider " + std::to_string(c));

@@ -140,5 +140,24 @@ TEST(WriteWobbleScene, KeepsPlaneNormalsBitForBit) {
   testing::expect_same_params(scene.params, saved.params);
 }
 
+// Self-collision on survives with its thickness; off, the file has no key (its presence would
+// turn it on).
+TEST(WriteWobbleScene, KeepsSelfCollisionOnlyWhenOn) {
+  TemporaryFolder folder;
+  Scene scene = load_scene("cloth");
+  ASSERT_FALSE(scene.params.self_collision.on);
+  EXPECT_FALSE(wobble_scene_json(scene, "off.obj", "").contains("self_collision"));
+  scene.params.self_collision.on = true;
+  scene.params.self_collision.thickness = 0.0037;
+  const nlohmann::json object = wobble_scene_json(scene, "on.obj", "");
+  ASSERT_TRUE(object.contains("self_collision"));
+  EXPECT_EQ(object["self_collision"]["thickness"], 0.0037);
+  write_wobble_scene(folder.file("on.json"), scene);
+  const Scene saved = load_scene(folder.file("on.json"));
+  EXPECT_TRUE(saved.params.self_collision.on);
+  EXPECT_EQ(saved.params.self_collision.thickness, 0.0037);
+  expect_same_scene(scene, saved);
+}
+
 }  // namespace
 }  // namespace wobble

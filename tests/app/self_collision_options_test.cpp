@@ -1,0 +1,155 @@
+// --self-collision and --self-collision-thickness: parsed, range-checked, applied to the scene
+// the command line opens and refused for a course scene; --stats reports self-collision.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/command_line.h"
+#include "app/scene_catalog.h"
+#include "run_wobble.h"
+#include "sim/input_error.h"
+#include "sim/value_limits.h"
+
+namespace {
+
+using wobble::testing::Result;
+using wobble::testing::run_wobble;
+using wobble::testing::TemporaryFolder;
+
+wobble::CommandLine parse(std::vector<std::string> words) {
+  words.insert(words.begin(), "wobble");
+  std::vector<const char*> argv;
+  for (const std::string& word : words)
+    argv.push_back(word.c_str());
+  std::ostringstream out;
+  const std::optional<wobble::CommandLine> command =
+      wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+  EXPECT_TRUE(command.has_value());
+  return command.value_or(wobble::CommandLine{});
+}
+
+std::string error_of(std::vector<std::string> words) {
+  try {
+    wobble::open_scene(parse(std::move(words)));
+  } catch (const wobble::InputError& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+const std::string course_scene = std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json";
+
+TEST(SelfCollisionOptions, HelpListsThem) {
+  const Result result = run_wobble("--help");
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.out.find("--self-collision "), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("--self-collision-thickness"), std::string::npos);
+  EXPECT_NE(result.out.find("contacts"), std::string::npos) << "--color-by's choices";
+}
+
+TEST(SelfCollisionOptions, OffUnlessAskedFor) {
+  EXPECT_FALSE(parse({"cloth"}).self_collision);
+  EXPECT_FALSE(wobble::open_scene(parse({"cloth"})).params.self_collision.on);
+}
+
+TEST(SelfCollisionOptions, TheFlagTurnsItOnWithTheScenesThickness) {
+  const wobble::CommandLine command = parse({"cloth", "--self-collision"});
+  EXPECT_TRUE(command.self_collision);
+  EXPECT_FALSE(command.self_collision_thickness);
+  const wobble::Scene scene = wobble::open_scene(command);
+  EXPECT_TRUE(scene.params.self_collision.on);
+  EXPECT_EQ(scene.params.self_collision.thickness, 0.01);
+
+  // A scene file's own thickness is kept.
+  TemporaryFolder folder;
+  std::ofstream(folder.file("thick.json"))
+      << R"({"mesh": {"generator": "cloth", "resolution": 4}, "self_collision": {"thickness": 0.03}})";
+  const wobble::Scene file =
+      wobble::open_scene(parse({folder.file("thick.json"), "--self-collision"}));
+  EXPECT_TRUE(file.params.self_collision.on);
+  EXPECT_EQ(file.params.self_collision.thickness, 0.03);
+}
+
+TEST(SelfCollisionOptions, TheThicknessImpliesTheFlagAndIsRangeChecked) {
+  const wobble::CommandLine command = parse({"cloth", "--self-collision-thickness", "0.002"});
+  EXPECT_TRUE(command.self_collision);
+  EXPECT_EQ(command.self_collision_thickness, 0.002);
+  const wobble::Scene scene = wobble::open_scene(command);
+  EXPECT_TRUE(scene.params.self_collision.on);
+  EXPECT_EQ(scene.params.self_collision.thickness, 0.002);
+
+  const std::string expected = "--self-collision-thickness: expected " +
+                               wobble::expected_in(wobble::limits::self_collision_thickness) +
+                               ", got '2'";
+  EXPECT_EQ(error_of({"cloth", "--self-collision-thickness", "2"}), expected);
+  EXPECT_EQ(error_of({"cloth", "--self-collision-thickness", "thin"}),
+            "--self-collision-thickness: expected a positive finite number, got 'thin'");
+}
+
+TEST(SelfCollisionOptions, ACourseSceneRefusesIt) {
+  ASSERT_EQ(wobble::open_scene(parse({course_scene})).params.gravity_model,
+            wobble::GravityModel::force_per_vertex);
+  EXPECT_FALSE(wobble::open_scene(parse({course_scene})).params.self_collision.on);
+  EXPECT_EQ(error_of({course_scene, "--self-collision"}),
+            "--self-collision: not for a course scene, which keeps the reference's behaviour (no "
+            "self-collision)");
+  EXPECT_EQ(error_of({course_scene, "--self-collision-thickness", "0.01"}),
+            "--self-collision-thickness: not for a course scene, which keeps the reference's "
+            "behaviour (no self-collision)");
+}
+
+// The real executable: exit code 2 and one line naming the option, headless, headless with an
+// image (through the viewer) and in a window (refused before any window opens).
+TEST(SelfCollisionOptions, ACourseSceneExitsWithCode2AndOneLine) {
+  TemporaryFolder folder;
+  const std::string image = folder.file("banner.png");
+  for (const std::string& mode :
+       std::vector<std::string>{"--headless", "--headless --screenshot '" + image + "'", ""}) {
+    const Result result =
+        run_wobble("'" + course_scene + "' --self-collision " + mode, "DISPLAY= ");
+    EXPECT_EQ(result.exit_code, 2) << mode;
+    EXPECT_NE(result.err.find("--self-collision: not for a course scene"), std::string::npos)
+        << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(image));
+}
+
+nlohmann::json stats_of(const std::string& arguments) {
+  const Result result = run_wobble(arguments + " --headless --stats");
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  std::string out = result.out;
+  while (!out.empty() && out.back() == '\n')
+    out.pop_back();
+  return nlohmann::json::parse(out.substr(out.rfind('\n') + 1));
+}
+
+TEST(SelfCollisionOptions, StatsReportIt) {
+  const nlohmann::json off = stats_of("cloth --frames 5");
+  EXPECT_EQ(off["self_collision"], false);
+  EXPECT_EQ(off["self_contacts"], 0);
+  EXPECT_EQ(off["self_detection_ms_median"], 0.0);
+  EXPECT_EQ(off["self_response_ms_median"], 0.0);
+
+  // The cloth falls onto the ground collider below it and folds over itself: self contacts.
+  TemporaryFolder folder;
+  std::ofstream(folder.file("fold.json")) << R"({
+    "mesh": {"generator": "cloth", "resolution": 16, "size": 1.0, "height": 0.5},
+    "pins": "none",
+    "colliders": [{"type": "capsule", "from": [0, 0.2, -1], "to": [0, 0.2, 1], "radius": 0.05}],
+    "self_collision": {"thickness": 0.02}})";
+  const nlohmann::json on = stats_of("'" + folder.file("fold.json") + "' --frames 90");
+  EXPECT_EQ(on["self_collision"], true);
+  EXPECT_EQ(on["self_collision_thickness"], 0.02);
+  EXPECT_GT(on["self_detection_ms_median"].get<double>(), 0.0);
+  EXPECT_GE(on["self_response_ms_median"].get<double>(), 0.0);
+  EXPECT_TRUE(on["self_contacts"].is_number_integer());
+}
+
+}  // namespace

@@ -1,0 +1,150 @@
+// The panel's self-collision controls clicked through real ImGui (fonts built on the CPU, nothing
+// drawn), as a user clicks them: the viewer hands them to the simulation; a course scene offers
+// none. And the contacts colouring of the viewer's own shape.
+#include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <optional>
+#include <string>
+
+#include "app/viewer.h"
+#include "headless_imgui.h"
+#include "io/load_scene.h"
+
+namespace {
+
+const Eigen::Vector2f window(1280.0f, 720.0f);
+
+struct PanelFixture {
+  explicit PanelFixture(wobble::Scene scene,
+                        const wobble::ViewerSettings& settings = wobble::ViewerSettings())
+      : imgui(window.x(), window.y()),
+        viewer(std::move(scene), settings, wobble::builtin_scene_names()) {
+    viewer.render(1280, 720, window, 1.0f);
+    // The panel sizes itself to its contents over its first frames.
+    for (int i = 0; i < 3; ++i)
+      ui_frame(ImVec2(-1.0f, -1.0f), false);
+  }
+  // The panel with the mouse at `mouse`, its left button down or up; no step.
+  void ui_frame(const ImVec2& mouse, bool down) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = mouse;
+    io.MouseDown[0] = down;
+    ImGui::NewFrame();
+    viewer.build_ui(wobble::PanelStats(), 1.0f);
+    ImGui::EndFrame();
+  }
+  // A point on the panel's widget `label`, found by moving the mouse down the panel's left edge
+  // until ImGui says the widget is hovered; nothing when the panel does not draw it.
+  std::optional<ImVec2> find(const char* label) {
+    ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+    if (panel == nullptr) return std::nullopt;
+    const ImGuiID id = panel->GetIDNoKeepAlive(label);
+    const ImVec2 top = panel->Pos, size = panel->Size;
+    for (float y = top.y + 1.0f; y < top.y + size.y; y += 2.0f) {
+      const ImVec2 at(top.x + 16.0f, y);
+      ui_frame(at, false);
+      if (ImGui::GetCurrentContext()->HoveredId == id) return at;
+    }
+    return std::nullopt;
+  }
+  void click(const ImVec2& at) {
+    ui_frame(at, true);
+    ui_frame(at, false);
+  }
+  wobble::testing::HeadlessImGui imgui;
+  wobble::Viewer viewer;
+};
+
+TEST(ViewerPanel, TheSelfCollisionCheckboxTurnsItOnAndOffInTheSimulation) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  ASSERT_FALSE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_FALSE(f.find("thickness (mm)")) << "the thickness shows only when on";
+  const std::optional<ImVec2> box = f.find("self-collision");
+  ASSERT_TRUE(box) << "the panel offers self-collision";
+
+  f.click(*box);
+  EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+  // The checkbox alone keeps the thickness exactly as it was.
+  EXPECT_EQ(f.viewer.simulation().params().self_collision.thickness, 0.01);
+  EXPECT_TRUE(f.viewer.stats().self_collision);
+  for (int i = 0; i < 3; ++i)
+    f.viewer.advance();
+  EXPECT_EQ(f.viewer.stats().self_contacts, f.viewer.simulation().self_contact_count());
+  EXPECT_TRUE(f.find("thickness (mm)"));
+
+  f.click(*f.find("self-collision"));
+  EXPECT_FALSE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_FALSE(f.viewer.stats().self_collision);
+}
+
+// While a batch of steps runs on the stepping thread, the checkbox waits in the panel; the
+// simulation takes it when the batch is handed over.
+TEST(ViewerPanel, TheCheckboxReachesASimulationSteppingOnItsThread) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  const std::optional<ImVec2> box = f.find("self-collision");
+  ASSERT_TRUE(box);
+  f.viewer.step_on_thread([] {});
+  ASSERT_TRUE(f.viewer.exchange(0.0, 1.0 / 60.0));  // starts a batch
+  f.click(*box);
+  f.viewer.finish_steps();
+  EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+}
+
+// The split view's right side follows the left's environment, self-collision included.
+TEST(ViewerPanel, TheSplitViewsRightSideFollowsTheCheckbox) {
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings("iterations=5");
+  PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
+  ASSERT_NE(f.viewer.right_side(), nullptr);
+  const std::optional<ImVec2> box = f.find("self-collision");
+  ASSERT_TRUE(box);
+  f.click(*box);
+  f.viewer.advance();
+  EXPECT_TRUE(f.viewer.right_side()->params().self_collision.on);
+  f.click(*f.find("self-collision"));
+  f.viewer.advance();
+  EXPECT_FALSE(f.viewer.right_side()->params().self_collision.on);
+}
+
+TEST(ViewerPanel, ACourseSceneOffersNoSelfCollision) {
+  PanelFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
+  ASSERT_EQ(f.viewer.simulation().params().gravity_model, wobble::GravityModel::force_per_vertex);
+  // The search finds what the panel does draw ...
+  EXPECT_TRUE(f.find("iterations"));
+  // ... but not self-collision.
+  EXPECT_FALSE(f.find("self-collision"));
+  EXPECT_FALSE(f.viewer.simulation().params().self_collision.on);
+}
+
+// The viewer's own copy of the colours, taken between batches as for strain and speed: the
+// collider's colour exactly on the vertices the last step held out of the sphere.
+TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Collider sphere;
+  sphere.type = wobble::ColliderType::sphere;
+  sphere.center = scene.network.V.colwise().mean().transpose() - Eigen::Vector3d(0.0, 0.3, 0.0);
+  sphere.radius = 0.25;
+  scene.params.contact.colliders.push_back(sphere);
+  wobble::ViewerSettings settings;
+  settings.color_by = wobble::ColorQuantity::contacts;
+  wobble::Viewer viewer(std::move(scene), settings, wobble::builtin_scene_names());
+  for (int i = 0; i < 40; ++i)
+    viewer.advance();
+  const std::vector<char>& flags = viewer.simulation().collider_contact_vertices();
+  const std::vector<float>& colors = viewer.quantity_colors().vertex_colors();
+  ASSERT_EQ(colors.size(), 3 * flags.size());
+  ASSERT_GT(viewer.simulation().contact_count(), 0) << "the cloth lies on the sphere";
+  int coloured = 0;
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    const Eigen::Vector3f color(colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]);
+    const Eigen::Vector3f expected =
+        flags[i] ? wobble::collider_contact_color() : wobble::contact_free_color();
+    coloured += color == wobble::collider_contact_color();
+    EXPECT_EQ(color, expected) << i;
+  }
+  EXPECT_EQ(coloured, viewer.simulation().contact_count());
+}
+
+}  // namespace
