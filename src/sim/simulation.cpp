@@ -338,7 +338,7 @@ void Simulation::collide_with_itself() {
     timing_.contact_ms += milliseconds_since(contact_start);
     self_collision_.project_again(inverse_mass_, next_);
   }
-  self_collision_.finish(current_, next_);
+  self_collision_.finish(current_, inverse_mass_, next_);
 }
 
 StepStatus Simulation::check_step() const {

@@ -37,6 +37,8 @@ FoldingScene cloth_pile_scene(const SelfCollisionParams& self_collision) {
   const int n = 32;
   ClothGridOptions options;
   options.resolution = n;
+  // A soft cloth (no bend springs): a pile keeps its folds instead of springing flat.
+  options.bend = false;
   scene.network = make_cloth_grid(options);
   Eigen::MatrixXd& V = scene.network.V;
   // Upright in the x–y plane: row 0 on top at y = 1.03, the last row 3 cm above the ground.
@@ -136,7 +138,10 @@ FoldingScene sphere_wrap_scene(const SelfCollisionParams& self_collision) {
   }
   scene.params = folding_params(self_collision);
   scene.params.contact.colliders = {sphere_collider(centre, sphere_radius)};
-  const int wind_steps = 240;
+  // Wobble's default iterations: at 30 the strip stretches and sags into the pin's path, and the
+  // pin (which goes where it is told) is dragged through it.
+  scene.params.iterations = 50;
+  const int wind_steps = 480;
   scene.steps = wind_steps + 60;
   const std::vector<int> pins = scene.pins;
   const Eigen::MatrixXd rest = strip.V;

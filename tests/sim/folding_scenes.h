@@ -38,9 +38,9 @@ FoldingScene cloth_pile_scene(const SelfCollisionParams& self_collision);
 FoldingScene dragged_across_scene(const SelfCollisionParams& self_collision);
 
 // A strip of 8 × 80 vertices (0.23 m by 2.6 m) hanging from its pinned end beside a sphere
-// (radius 0.2 m); the pinned end is carried twice around the sphere in a vertical circle in 4 s,
+// (radius 0.2 m); the pinned end is carried twice around the sphere in a vertical circle in 8 s,
 // so the strip's weight winds it around the sphere twice, layer over layer; then held 1 s. No
-// ground. 300 steps.
+// ground; 50 iterations. 540 steps.
 FoldingScene sphere_wrap_scene(const SelfCollisionParams& self_collision);
 
 }  // namespace wobble::testing

@@ -59,12 +59,13 @@ class SelfCollision {
   void project_again(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
   // The step's last word, after project() (and project_again()): undo_crossings, and the
   // contact count.
-  void finish(const Eigen::MatrixXd& current, Eigen::MatrixXd& next);
+  void finish(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
+              Eigen::MatrixXd& next);
 
   const SelfCollisionParams& params() const { return params_; }
   // A new thickness: the rest neighbourhoods are found again.
   void set_thickness(double thickness);
-  // Forgets the last projection's contacts.
+  // Forgets the last projection's contacts and kept pairs (a reset).
   void clear();
   // Vertices the last projection moved, and the same as #V flags.
   int contact_count() const { return contact_count_; }
@@ -84,10 +85,24 @@ class SelfCollision {
     int vertex[4];
     double beta[4];
     Eigen::Vector3d normal;
-    double target = 0.0;  // the gap it must keep this step (m): the thickness, or less
-    double depth = 0.0;   // how far the pair was pushed apart along the normal so far (m)
+    double target = 0.0;          // the gap it must keep this step (m): the thickness, or less
+    double depth = 0.0;           // how far the pair was pushed apart along the normal so far (m)
     bool vertex_triangle = true;  // or edge-edge
   };
+  // pairs_ = the pairs the motion current → end can bring within the thickness plus twice the
+  // allowance (m).
+  void detect(const Eigen::MatrixXd& current, const Eigen::MatrixXd& end, double allowance);
+  // Whether every surface vertex of `positions` is within `reach` (m) of its path current → end.
+  bool near_segments(const Eigen::MatrixXd& current, const Eigen::MatrixXd& end,
+                     const Eigen::MatrixXd& positions, double reach) const;
+  // Whether every surface vertex of `positions` is within `reach` (m) of reference_.
+  bool near_reference(const Eigen::MatrixXd& positions, double reach) const;
+  // pairs_ = the kept pairs, their closest points, normals and targets found again from
+  // `current`.
+  void refresh_pairs(const Eigen::MatrixXd& current);
+  // Sweeps, friction, sweeps; counts the pairs pushed and marks their vertices.
+  void respond(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass, double friction,
+               Eigen::MatrixXd& next);
   // The pairs closer than rest_skip_factor thicknesses in the rest shape, which never count.
   void find_rest_neighbours();
   // Each step's detection allows `margin` (m) more motion than current → next.
@@ -104,10 +119,18 @@ class SelfCollision {
   double separate(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next);
   // The last resort: an edge of `next` that passes through a triangle it did not pass through at
   // the start (the planes are a first-order guard: a pair turning fast in one step can slip
-  // past) has its two vertices and the triangle's three put back where they started the step;
-  // repeated until no such crossing is left. Putting every vertex back gives pᵗ, so the step
-  // ends with no crossing it did not start with.
-  void undo_crossings(const Eigen::MatrixXd& current, Eigen::MatrixXd& next);
+  // past) has its two vertices, the triangle's three and their neighbours put back where they
+  // started the step; repeated, looking only around what was put back, until nothing new
+  // crosses. Vertices put back keep the start's freedom from crossings, so the step ends with no
+  // crossing it did not start with, but one a pinned vertex (which follows its target) makes:
+  // that is left to the planes, which push the cloth out of the pin's way (putting the cloth
+  // back would hold it still in the pin's path).
+  void undo_crossings(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
+                      Eigen::MatrixXd& next);
+  // Whether edge `edge` passes through triangle `triangle` at `next` and did not at `current`
+  // (the boxes in edge_boxes_ and triangle_boxes_ must be those of `next`).
+  bool crosses(int edge, int triangle, const Eigen::MatrixXd& current,
+               const Eigen::MatrixXd& next) const;
   void apply_friction(const Eigen::MatrixXd& current, const Eigen::VectorXd& inverse_mass,
                       double friction, Eigen::MatrixXd& next);
 
@@ -118,13 +141,24 @@ class SelfCollision {
   std::vector<int> surface_vertices_;  // vertices on a triangle
   SpatialGrid triangle_grid_, edge_grid_;
   std::vector<Eigen::AlignedBox3d> triangle_boxes_, edge_boxes_;  // swept, grown by the thickness
-  std::vector<int> seen_triangle_;  // the last vertex that looked at each triangle
+  std::vector<int> seen_triangle_;  // the stamp of the last query that looked at each triangle
   // Rest neighbourhoods as compressed rows: the triangles near each vertex, and the
   // higher-numbered edges near each edge.
   std::vector<int> rest_triangles_start_, rest_triangles_, rest_edges_start_, rest_edges_;
   std::vector<Pair> pairs_;
-  Eigen::MatrixXd solved_;  // #V by 3: next as the response found it
-  std::vector<int> crossed_;
+  Eigen::MatrixXd solved_;          // #V by 3: next as the solve left it
+  Eigen::MatrixXd pushed_;          // #V by 3: next after a round's response
+  Eigen::MatrixXd reference_;       // #V by 3: where the kept pairs were found
+  std::vector<Pair> listed_pairs_;  // every pair near reference_, while listed_
+  bool listed_ = false;
+  std::vector<int> crossed_, changed_;
+  std::vector<char> frozen_;
+  // Incidence as compressed rows: each vertex's edges and triangles.
+  std::vector<int> vertex_edges_start_, vertex_edges_, vertex_triangles_start_, vertex_triangles_;
+  // Stamps: which query last looked at each triangle and edge, which round checked them.
+  std::vector<int> seen_edge_, triangle_checked_, edge_checked_;
+  int stamp_ = 0;
+  void next_stamp();
   int undone_ = 0;
   std::vector<char> in_contact_;
   int contact_count_ = 0;
