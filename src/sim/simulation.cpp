@@ -181,7 +181,10 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   rest_diagonal_ = diagonal > 0.0 ? diagonal : 1.0;
   contact_ = ColliderContact(params_.contact.colliders, params_.contact.friction,
                              resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_));
-  self_collision_ = SelfCollision(network_, params_.self_collision);
+  // Self-collision's grids and rest neighbourhoods are made only once it is turned on.
+  if (params_.self_collision.on) {
+    self_collision_ = std::make_unique<SelfCollision>(network_, params_.self_collision);
+  }
   rebuild_forces();
   chebyshev_ = ChebyshevAcceleration(n);
   solved_.resize(n, 3);
@@ -215,7 +218,7 @@ void Simulation::reset() {
   time_ = 0.0;
   last_status_ = StepStatus::ok;
   contact_ = ColliderContact(params_.contact.colliders, contact_.friction(), contact_.offset());
-  self_collision_.clear();
+  if (self_collision_) self_collision_->clear();
 
   std::vector<char> initial(pinned_.size(), 0);
   for (int i : initial_pins_)
@@ -296,8 +299,8 @@ StepStatus Simulation::step() {
   timing_.self_detection_ms = timing_.self_response_ms = 0.0;
   if (params_.self_collision.on) {
     collide_with_itself();
-    timing_.self_detection_ms = self_collision_.detection_ms();
-    timing_.self_response_ms = self_collision_.response_ms();
+    timing_.self_detection_ms = self_collision_->detection_ms();
+    timing_.self_response_ms = self_collision_->response_ms();
   }
 
   last_status_ = check_step();
@@ -329,16 +332,16 @@ void Simulation::collide_with_itself() {
     const double scale = pinned_[i] ? 0.0 : any_collider && on_collider[i] ? held_by_collider : 1.0;
     inverse_mass_(i) = scale / network_.m(i);
   }
-  self_collision_.project(current_, inverse_mass_, contact_.friction(), next_);
-  if (self_collision_.pair_count() > 0 && !contact_.empty()) {
+  self_collision_->project(current_, inverse_mass_, contact_.friction(), next_);
+  if (self_collision_->pair_count() > 0 && !contact_.empty()) {
     // A collider can push a vertex the layers squeeze against it back through a layer: the
     // layers get the last word, and what they push into a collider stays within its offset.
     const auto contact_start = Clock::now();
     contact_.project_again(step_context(), next_);
     timing_.contact_ms += milliseconds_since(contact_start);
-    self_collision_.project_again(inverse_mass_, next_);
+    self_collision_->project_again(inverse_mass_, next_);
   }
-  self_collision_.finish(current_, inverse_mass_, next_);
+  self_collision_->finish(current_, inverse_mass_, next_);
 }
 
 StepStatus Simulation::check_step() const {

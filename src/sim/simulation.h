@@ -275,7 +275,7 @@ class Simulation {
   Eigen::MatrixXd fext_, y_, rhs_;             // #V by 3 buffers kept to avoid allocation
   std::vector<std::unique_ptr<ForceTerm>> forces_;
   ColliderContact contact_;
-  SelfCollision self_collision_;
+  std::unique_ptr<SelfCollision> self_collision_;  // made when self-collision is first turned on
   Eigen::VectorXd inverse_mass_;  // #V: 1/m, or 0 for a pinned vertex or one on a collider
   double rest_diagonal_ = 0.0;    // of the rest shape's bounding box (m)
   double time_ = 0.0;

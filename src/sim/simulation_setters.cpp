@@ -107,16 +107,21 @@ void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
   changed.self_collision = self_collision;
   validate_simulation_params(changed);
   params_.self_collision = self_collision;
-  self_collision_.set_thickness(self_collision.thickness);
-  if (!self_collision.on) self_collision_.clear();
+  if (!self_collision_ && self_collision.on) {
+    self_collision_ = std::make_unique<SelfCollision>(network_, self_collision);
+  } else if (self_collision_) {
+    self_collision_->set_thickness(self_collision.thickness);
+    if (!self_collision.on) self_collision_->clear();
+  }
 }
 
 int Simulation::self_contact_count() const {
-  return params_.self_collision.on ? self_collision_.contact_count() : 0;
+  return params_.self_collision.on && self_collision_ ? self_collision_->contact_count() : 0;
 }
 
 const std::vector<char>& Simulation::self_contact_vertices() const {
-  return self_collision_.contact_vertices();
+  static const std::vector<char> none;
+  return self_collision_ ? self_collision_->contact_vertices() : none;
 }
 
 bool Simulation::is_pinned(int i) const {
