@@ -64,6 +64,11 @@ inline const std::vector<GoldenCase>& golden_cases() {
       // top, its folds compressed blue, and the legend, which needs 480 × 320 to leave room.
       {"drape_strain",
        "@ASSETS@/drape.json --frames 120 --color-by strain --width 480 --height 320"},
+      // Self-collision (issue 17): a pleated cloth thrown down folds over itself without passing
+      // through; coloured by contacts, the vertices a layer holds off another in magenta.
+      {"cloth_pile", "@ASSETS@/cloth_pile.json --frames 150 --width 320 --height 240"},
+      {"cloth_pile_contacts",
+       "@ASSETS@/cloth_pile.json --frames 150 --color-by contacts --width 480 --height 320"},
   };
   return cases;
 }
