@@ -13,6 +13,7 @@
 #include "benchmark_scenes.h"
 #include "chebyshev_curve.h"
 #include "contact_cost.h"
+#include "self_collision_cost.h"
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
 #include "sim/simulation.h"
@@ -203,6 +204,7 @@ int main(int argc, char** argv) {
   print_single_precision_error();
   wobble::benchmark::print_chebyshev_curve(wobble::benchmark::benchmark_scenes().front());
   wobble::benchmark::print_contact_cost();
+  wobble::benchmark::print_self_collision_cost();
   wobble::benchmark::print_instruments_cost();
   wobble::benchmark::print_quantity_colors_cost();
   benchmark::Shutdown();

@@ -55,12 +55,9 @@ bool segment_crosses_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& q
   return (u >= 0.0 && v >= 0.0 && w >= 0.0) || (u <= 0.0 && v <= 0.0 && w <= 0.0);
 }
 
-// Whether `id` is among list[start[owner]] to list[start[owner + 1] − 1] (a short list).
+// Whether `id` is among list[start[owner]] to list[start[owner + 1] − 1] (sorted).
 bool listed(const std::vector<int>& start, const std::vector<int>& list, int owner, int id) {
-  for (int s = start[owner]; s < start[owner + 1]; ++s) {
-    if (list[s] == id) return true;
-  }
-  return false;
+  return std::binary_search(list.begin() + start[owner], list.begin() + start[owner + 1], id);
 }
 
 // Lists of (owner, id) pairs as compressed rows: start (#owners + 1) and ids.

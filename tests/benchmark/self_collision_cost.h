@@ -1,0 +1,16 @@
+#ifndef WOBBLE_TESTS_BENCHMARK_SELF_COLLISION_COST_H
+#define WOBBLE_TESTS_BENCHMARK_SELF_COLLISION_COST_H
+
+namespace wobble::benchmark {
+
+// Self-collision's cost, printed as table rows:
+// - the 40×40 pile (a pleated cloth thrown down edge first, as the cloth_pile asset), with and
+//   without self-collision, while it folds (steps 1–150) and once it lies still (steps
+//   301–400): median step times and their ratio;
+// - a 128×128 cloth falling onto a ball on the ground, its skirt folding onto itself: the
+//   median step and its detection and response parts.
+void print_self_collision_cost();
+
+}  // namespace wobble::benchmark
+
+#endif
