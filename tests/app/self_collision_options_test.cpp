@@ -12,6 +12,7 @@
 
 #include "app/command_line.h"
 #include "app/scene_catalog.h"
+#include "parse_words.h"
 #include "run_wobble.h"
 #include "sim/input_error.h"
 #include "sim/value_limits.h"
@@ -23,15 +24,7 @@ using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
 wobble::CommandLine parse(std::vector<std::string> words) {
-  words.insert(words.begin(), "wobble");
-  std::vector<const char*> argv;
-  for (const std::string& word : words)
-    argv.push_back(word.c_str());
-  std::ostringstream out;
-  const std::optional<wobble::CommandLine> command =
-      wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
-  EXPECT_TRUE(command.has_value());
-  return command.value_or(wobble::CommandLine{});
+  return wobble::testing::parse_words(std::move(words));
 }
 
 std::string error_of(std::vector<std::string> words) {
