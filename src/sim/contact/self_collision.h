@@ -21,27 +21,31 @@ struct SelfCollisionParams {
 void validate_self_collision(const SelfCollisionParams& params);
 
 // Keeps a surface (the network's render triangles F) from passing through itself, after the
-// step's iterations, without touching Q.
+// step's iterations, without touching Q. The README's "Self-collision" says what was measured.
 //
 // Detection: every triangle's and every edge's box, swept over the step (from pᵗ to the solved
-// positions) and grown by the thickness, goes into a uniform grid rebuilt every step; each
-// surface vertex looks up the triangles near its own swept box, each edge the edges near its
-// box. A pair is kept only if it can come within the thickness during the step (its distance at
-// the start less the largest motion of one of its vertices relative to another); pairs sharing
-// a vertex, and pairs closer than the thickness in the rest shape (a fine mesh's neighbours),
-// are skipped.
+// positions) and grown by half the thickness plus a margin for the response's pushes, goes into
+// a uniform grid rebuilt every step; each surface vertex looks up the triangles near its own
+// swept box, edges meet the edges near theirs. A pair is kept only if it can come within the
+// thickness (plus the margins) during the step: its distance at the start less the largest
+// motion of one of its vertices relative to another. Pairs sharing a vertex, and pairs closer
+// than twice the thickness in the rest shape (a mesh's own neighbourhood), never count. When a
+// push takes a vertex farther from its path than the margin, the pairs are found again. While
+// the surface lies still, the pairs found around it serve the next steps, until a vertex strays
+// half a skin from where they were found.
 //
 // Response: for a vertex v and a triangle, the point q₀ = Σαᵢxᵢ of the triangle closest to v at
 // the start of the step gives a separating plane with normal n₀ = (v₀ − q₀)/‖v₀ − q₀‖ (the whole
 // triangle lies behind it, q₀ being the closest point); for two edges, their closest points at
 // the start do the same. The step's positions must keep the gap along n₀ between the same two
-// points (same barycentric weights) at least the thickness: a linear constraint on four
-// vertices, (Σ βₖxₖ)·n₀ ≥ thickness, enforced by Gauss-Seidel projection weighted by inverse
-// masses (a pinned vertex does not move). Because the planes come from the start of the step,
-// a vertex cannot pass through a triangle, nor an edge through an edge, however far it moves in
-// one step: no velocity clamp is needed. Coulomb friction then acts on each pair's tangential
-// relative motion, as for colliders (μ the material's). The positions are the next step's
-// velocity too: a pushed vertex keeps no velocity into the layer.
+// points (same barycentric weights) at least the thickness (a pair that starts closer opens by
+// a tenth of it a step): a linear constraint on four vertices, (Σ βₖxₖ)·n₀ ≥ target, enforced
+// by Gauss-Seidel projection weighted by inverse masses (a pinned vertex does not move). Because
+// the planes come from the start of the step, a vertex does not tunnel through a triangle
+// however far it moves: no velocity clamp is needed. Coulomb friction (μ the material's) then
+// acts on the sliding of a vertex over a triangle's face. The positions are the next step's
+// velocity too: a pushed vertex keeps no velocity into the layer. The planes are first order,
+// so finish() ends with a last resort (undo_crossings) that no step adds a crossing.
 class SelfCollision {
  public:
   SelfCollision() = default;
