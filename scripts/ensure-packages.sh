@@ -10,7 +10,7 @@ run_packages=(
   libcli11-dev nlohmann-json3-dev       # command line
   libglfw3-dev libimgui-dev             # window and panel
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL, and Mesa's renderer (llvmpipe)
-  libstb-dev                            # PNG input and output
+  libspng-dev                           # PNG input and output
   libtinyobjloader-dev                  # OBJ input
 )
 # What the test suite needs on top: the window smoke test runs under a virtual X server.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzz the four file loaders: build the libFuzzer harnesses of tests/fuzz/ with clang, ASan and
+# Fuzz the five file loaders: build the libFuzzer harnesses of tests/fuzz/ with clang, ASan and
 # UBSan into build-fuzz/, then run each for SECONDS_PER_HARNESS (default 60) seconds.
 #
 #   bash scripts/fuzz.sh [SECONDS_PER_HARNESS]
@@ -31,13 +31,14 @@ declare -A dictionary=(
   [fuzz_wobble_scene]=wobble_scene.dict
   [fuzz_obj]=obj.dict
   [fuzz_medit_mesh]=medit_mesh.dict
+  [fuzz_png]=png.dict
 )
 # A harness that crashes cannot remove its private folder, so the folders go here, cleared after
 # each harness, rather than into /tmp.
 export TMPDIR="$PWD/build-fuzz/fuzz/tmp"
 findings=()
 summary=()
-for harness in fuzz_course_scene fuzz_wobble_scene fuzz_obj fuzz_medit_mesh; do
+for harness in fuzz_course_scene fuzz_wobble_scene fuzz_obj fuzz_medit_mesh fuzz_png; do
   work="build-fuzz/fuzz/$harness"
   mkdir -p "$work/corpus" "$work/findings" "$TMPDIR"
   cp -n "tests/fuzz/corpus/$harness/"* "$work/corpus/"

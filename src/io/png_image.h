@@ -17,17 +17,22 @@ struct RgbaImage {
   const unsigned char* pixel(int x, int y) const { return pixels.data() + 4 * (y * width + x); }
 };
 
-// Encode as PNG (stb_image_write). The same image always gives the same bytes.
+// Encode as an 8-bit RGBA PNG (libspng, zlib's default compression). The same image always gives
+// the same bytes.
 std::string encode_png(const RgbaImage& image);
 
 // Write a PNG atomically (temporary file, then rename): an interrupted run never leaves a half
 // image. Throws OutputError when the file cannot be written.
 void write_png(const std::string& path, const RgbaImage& image);
 
-// Read a PNG (or any image stb_image reads) as RGBA, reading the file once. The header is read
-// first, and an image wider or taller than `max_side` pixels is refused before it is decoded.
-// Throws InputError naming the file and why it could not be read: not a regular file, larger
-// than png_file.max_bytes (io/input_file_limits.h), not an image, or too large.
+// Read a PNG as 8-bit RGBA with libspng, reading the file once: any bit depth (1, 2, 4, 8, 16;
+// 16-bit samples keep their high byte), grey, palette or colour, with alpha or a tRNS colour,
+// interlaced or not. No gamma or colour profile is applied. The header is read first, and an
+// image wider or taller than `max_side` pixels is refused before any pixel is decoded; the CRC
+// of every chunk read and the pixel data's zlib checksum are checked, and ancillary chunks are
+// bounded (1 MiB each, 4 MiB and 256 chunks in all). Throws InputError naming the file and why it
+// could not be read: not a regular file, larger than png_file.max_bytes (io/input_file_limits.h),
+// not a PNG, damaged or truncated, or too large.
 RgbaImage read_png(const std::string& path, int max_side = max_texture_side);
 
 // Why the image at `path` cannot be a texture, or "" when it can: the checks of read_png with

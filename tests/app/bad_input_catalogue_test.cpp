@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "../io/png_header.h"
+#include "../io/png_bytes.h"
 #include "io/input_file_limits.h"
 #include "run_wobble.h"
 #include "sim/input_limits.h"

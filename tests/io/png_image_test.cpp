@@ -7,7 +7,7 @@
 
 #include "io/atomic_file.h"
 #include "io/input_file_limits.h"
-#include "png_header.h"
+#include "png_bytes.h"
 #include "sim/input_error.h"
 #include "temporary_folder.h"
 

@@ -328,7 +328,6 @@ double push(const PairT& pair, double amount, const Eigen::Vector3d& direction,
 }  // namespace
 
 double SelfCollision::separate(const Eigen::VectorXd& inverse_mass, Eigen::MatrixXd& next) {
-  const double h = params_.thickness;
   double worst = 0.0;
   for (Pair& pair : pairs_) {
     double gap = 0.0;
