@@ -12,6 +12,7 @@
 #include "sim/input_limits.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
+#include "sim/solver/worker_pool.h"
 #include "sim/value_limits.h"
 
 #ifndef WOBBLE_VERSION
@@ -93,7 +94,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness;
+      record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness,
+      threads;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -130,6 +132,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                "0.01 m; not for course scenes)");
   app.add_option("--self-collision-thickness", self_collision_thickness,
                  "Self-collision thickness in m, 1e-5 to 1; implies --self-collision");
+  app.add_option("--threads", threads,
+                 "Threads the solver may use, 1 to " + std::to_string(max_setting_threads) +
+                     " (default: OMP_NUM_THREADS if set, else the processors, at most " +
+                     std::to_string(WorkerPool::max_shared_threads) + ")");
   std::vector<std::string> drags;
   app.add_option("--drag", drags,
                  "Drag a vertex: VERTEX:DX,DY,DZ@FRAME (over 30 frames) or @FRAME-LAST; "
@@ -191,6 +197,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     command.self_collision_thickness = number_in(
         "--self-collision-thickness", *self_collision_thickness, limits::self_collision_thickness);
     command.self_collision = true;
+  }
+  if (threads) {
+    command.threads = static_cast<int>(whole_number("--threads", *threads, max_setting_threads));
   }
   if (export_obj) command.export_obj = path_value("--export-obj", *export_obj, "file path");
   if (width)

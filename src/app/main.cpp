@@ -8,6 +8,7 @@
 #include "run_headless.h"
 #include "run_window.h"
 #include "sim/input_error.h"
+#include "thread_setting.h"
 
 int main(int argc, char** argv) {
   // A run ended by SIGTERM or Ctrl+C leaves no half-written *.tmp-XXXXXX file behind.
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
     const std::optional<wobble::CommandLine> command =
         wobble::parse_command_line(argc, argv, std::cout);
     if (!command) return 0;
+    wobble::obey_thread_setting(*command, std::cerr);
     if (command->headless) return wobble::run_headless(*command, std::cout, std::cerr);
     return wobble::run_window(*command, std::cout, std::cerr);
   } catch (const wobble::InputError& error) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sim/solver/worker_pool.h"
+
 namespace wobble {
 
 void StepTimes::reserve(long steps) {
@@ -56,6 +58,8 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"self_contacts", simulation.self_contact_count()},
       {"self_detection_ms_median", median(times.self_detection_ms)},
       {"self_response_ms_median", median(times.self_response_ms)},
+      {"threads", shared_thread_setting().threads},
+      {"threads_from", shared_thread_setting().source},
   };
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
+#include <cstdio>
 
 #include "sim/shapes/cloth_grid.h"
 
@@ -110,6 +111,41 @@ TEST(CholeskySolver, TheSameBitsOnOneThreadOrSeveral) {
     ASSERT_TRUE(shared.factorize(Q));
     shared.solve(b, x);
     ASSERT_EQ(x, expected) << "repeat " << repeat;
+  }
+}
+
+TEST(CholeskySolver, TheCurtainsFactorOnOneAndOnTwoThreadsSolvesLikeEigens) {
+  // The curtain's system: 81 × 81 vertices, k = 2000, the top edge pinned.
+  Eigen::SparseMatrix<double> Q = cloth_system(2000.0, 1e10, 81);
+  for (int column = 1; column < 81; ++column)
+    Q.coeffRef(column, column) += 1e10;
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(Q.rows(), 3);
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> eigen(Q);
+  ASSERT_EQ(eigen.info(), Eigen::Success);
+  const Eigen::SparseMatrix<double> L = eigen.matrixL();
+  const Eigen::MatrixXd expected = eigen.solve(b);
+  for (const int threads : {1, 2}) {
+    wobble::WorkerPool pool(threads);
+    wobble::CholeskySolver solver;
+    solver.set_pool(pool);
+    solver.analyze(Q);
+    EXPECT_EQ(solver.factor_nonzeros(), 417'470);
+    EXPECT_EQ(solver.factor_nonzeros(), L.nonZeros());
+    ASSERT_GT(solver.factor_nonzeros(), wobble::CholeskySolver::parallel_factorization_above)
+        << "the factorization in two parts";
+    // Factorized several times: with two threads, the helper wakes in time for some of them.
+    for (int repeat = 0; repeat < 5; ++repeat) {
+      ASSERT_TRUE(solver.factorize(Q));
+      Eigen::MatrixXd x;
+      solver.solve(b, x);
+      EXPECT_LE((x - expected).norm(), 1e-10 * expected.norm())
+          << threads << " threads, repeat " << repeat;
+      EXPECT_LE((Q * x - b).norm(), 1e-6 * b.norm());
+    }
+    if (threads == 1) {
+      EXPECT_EQ(pool.helper_tasks(), 0);
+    }
+    std::printf("%d threads: %ld of the parts ran on the helper\n", threads, pool.helper_tasks());
   }
 }
 

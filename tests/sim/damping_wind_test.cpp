@@ -36,7 +36,9 @@ TEST(Damping, VelocityDecaysAsTheFormulaSays) {
     // Implicit Euler: exactly (1 + cΔt)⁻ⁿ, up to the solve's rounding.
     EXPECT_NEAR(ratio, std::pow(1.0 + c * params.dt, -steps), 1e-6) << "c = " << c;
     // And, where cΔt is small, within 5% of the continuous exp(−ct).
-    if (c <= 1.0) EXPECT_NEAR(ratio / std::exp(-c * 1.0), 1.0, 0.05) << "c = " << c;
+    if (c <= 1.0) {
+      EXPECT_NEAR(ratio / std::exp(-c * 1.0), 1.0, 0.05) << "c = " << c;
+    }
   }
 }
 

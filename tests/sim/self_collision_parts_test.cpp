@@ -105,7 +105,9 @@ TEST(SpatialGrid, FindsEveryOverlappingPairOnceAndNoOther) {
   std::set<int> candidates;
   grid.for_each_candidate(boxes[3], [&](int id) { candidates.insert(id); });
   for (int j = 0; j < int(boxes.size()); ++j) {
-    if (boxes[3].intersects(boxes[j])) EXPECT_TRUE(candidates.count(j)) << j;
+    if (boxes[3].intersects(boxes[j])) {
+      EXPECT_TRUE(candidates.count(j)) << j;
+    }
   }
 }
 

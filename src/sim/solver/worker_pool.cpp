@@ -1,6 +1,8 @@
 #include "worker_pool.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
 
 #if defined(__linux__)
 #include <fcntl.h>
@@ -135,8 +137,83 @@ WorkerPool::~WorkerPool() {
     helper.join();
 }
 
+namespace {
+
+int requested_shared_threads = 0;  // 0: none requested
+std::atomic<bool> shared_pool_made{false};
+
+// The whole number `text` holds (spaces around it allowed), or 0 when it holds none in
+// 1..max_setting_threads. With `first_of_list`, only the text before a comma counts.
+int parse_threads(std::string text, bool first_of_list) {
+  if (first_of_list) text = text.substr(0, text.find(','));
+  const auto begin = text.find_first_not_of(" \t");
+  const auto end = text.find_last_not_of(" \t");
+  if (begin == std::string::npos) return 0;
+  text = text.substr(begin, end - begin + 1);
+  if (text.empty() || text.size() > 3 ||
+      text.find_first_not_of("0123456789") != std::string::npos) {
+    return 0;
+  }
+  const int value = std::stoi(text);
+  return value >= 1 && value <= max_setting_threads ? value : 0;
+}
+
+}  // namespace
+
+ThreadSetting decide_thread_setting(int requested, const char* omp_num_threads,
+                                    const char* omp_thread_limit, int processors) {
+  ThreadSetting setting;
+  std::string ignored;
+  const auto not_obeyed = [&](const char* name, const char* value) {
+    ignored += std::string(ignored.empty() ? "" : "; ") + name + "='" + value +
+               "' is not a whole number of threads from 1 to " +
+               std::to_string(max_setting_threads) + ", so it is not obeyed";
+  };
+  int limit = max_setting_threads;
+  if (omp_thread_limit != nullptr) {
+    const int value = parse_threads(omp_thread_limit, false);
+    if (value > 0) {
+      limit = value;
+    } else {
+      not_obeyed("OMP_THREAD_LIMIT", omp_thread_limit);
+    }
+  }
+  const int from_variable =
+      omp_num_threads == nullptr ? 0 : parse_threads(omp_num_threads, /*first_of_list=*/true);
+  if (omp_num_threads != nullptr && from_variable == 0 && requested == 0) {
+    not_obeyed("OMP_NUM_THREADS", omp_num_threads);
+  }
+  if (requested > 0) {
+    setting = {requested, "--threads", ""};
+  } else if (from_variable > 0) {
+    setting = {from_variable, "OMP_NUM_THREADS", ""};
+  } else {
+    setting = {std::max(1, std::min(processors, WorkerPool::max_shared_threads)), "processors", ""};
+  }
+  if (setting.threads > limit) {
+    setting.threads = limit;
+    setting.source = "OMP_THREAD_LIMIT";
+  }
+  setting.warning = ignored;
+  return setting;
+}
+
+void request_shared_threads(int threads) {
+  if (shared_pool_made.load()) {
+    throw std::logic_error("request_shared_threads: the shared pool is already made");
+  }
+  requested_shared_threads = threads;
+}
+
+const ThreadSetting& shared_thread_setting() {
+  static const ThreadSetting setting =
+      decide_thread_setting(requested_shared_threads, std::getenv("OMP_NUM_THREADS"),
+                            std::getenv("OMP_THREAD_LIMIT"), usable_processors());
+  return setting;
+}
+
 WorkerPool& WorkerPool::shared() {
-  static WorkerPool pool(std::min(usable_processors(), max_shared_threads));
+  static WorkerPool pool((shared_pool_made.store(true), shared_thread_setting().threads));
   return pool;
 }
 
@@ -264,6 +341,7 @@ void WorkerPool::helper_loop() {
     int index;
     while (claim(seen, job.count, index)) {
       job.call(job.context, index);
+      helper_tasks_.fetch_add(1, std::memory_order_relaxed);
       finish_task(job.count);
     }
   }

@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -62,12 +63,14 @@ class WorkerPool {
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  // The pool the simulation uses: as many threads as processors this process may run on, at
-  // most max_shared_threads. Made on first use (in a simulation's precomputation).
+  // The pool the simulation uses, with shared_thread_setting().threads threads. Made on first
+  // use (in a simulation's precomputation).
   static WorkerPool& shared();
   static constexpr int max_shared_threads = 4;
 
   int threads() const { return static_cast<int>(helpers_.size()) + 1; }
+  // Tasks the helpers have run since construction (not the caller's); for tests.
+  long helper_tasks() const { return helper_tasks_.load(std::memory_order_relaxed); }
 
   // With a payoff, the run is shared only while sharing this loop pays (see SharingPayoff).
   template <typename Task>
@@ -115,11 +118,39 @@ class WorkerPool {
   std::chrono::steady_clock::time_point last_contention_check_;  // guarded by caller_mutex_
   bool contended_ = false;                                       // guarded by caller_mutex_
   std::atomic<int> polling_helpers_{0};
+  std::atomic<long> helper_tasks_{0};
   const int usable_processors_;
 };
 
 // Processors this process may run on (its CPU affinity), at least 1.
 int usable_processors();
+
+// How many threads the shared pool runs, and what decided it.
+struct ThreadSetting {
+  int threads = 1;
+  std::string source;   // "--threads", "OMP_NUM_THREADS", "OMP_THREAD_LIMIT" or "processors"
+  std::string warning;  // a setting that was not obeyed as written, and why; "" when none
+};
+// The most threads a setting may ask for.
+constexpr int max_setting_threads = 64;
+
+// A user's or CI's setting wins over the default: `requested` (the command line's --threads;
+// 0 when not given), else OMP_NUM_THREADS (the variable CI systems and users set to cap every
+// parallel program; Wobble uses no OpenMP, but obeys it; of a list "4,2" the first number),
+// either capped by OMP_THREAD_LIMIT. With neither, the processors this process may run on
+// (`processors`), at most WorkerPool::max_shared_threads, and at most OMP_THREAD_LIMIT. A value
+// that is not a whole number from 1 to max_setting_threads is not obeyed, and `warning` says so
+// (the variables are null when unset).
+ThreadSetting decide_thread_setting(int requested, const char* omp_num_threads,
+                                    const char* omp_thread_limit, int processors);
+
+// Ask for `threads` threads in the shared pool (the command line's --threads), before the pool
+// is first used; throws std::logic_error once the pool exists.
+void request_shared_threads(int threads);
+
+// The setting the shared pool is (or will be) made with: decided once, from the request and the
+// environment at the first call.
+const ThreadSetting& shared_thread_setting();
 
 }  // namespace wobble
 
