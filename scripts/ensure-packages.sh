@@ -17,6 +17,7 @@ run_packages=(
 test_packages=(
   libgtest-dev libbenchmark-dev
   xvfb xauth
+  strace                                # a test watches the atomic write's system calls
 )
 
 # What scripts/fuzz.sh needs on top: clang and its libFuzzer and sanitizer runtimes.

@@ -78,6 +78,22 @@ void forget_temporary(const std::vector<char>& name, bool remove) {
   has_pending_temporary = 0;
 }
 
+// fsync the folder holding `path`. Throws OutputError when the disk reports an error; a
+// filesystem that cannot sync folders (EINVAL) or a folder that cannot be opened for reading
+// (write-only permissions) is left as it is: the file itself was synced before the rename.
+void sync_folder(const std::string& path) {
+  const std::string folder = parent_folder(path);
+  const int fd = open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return;
+  const int result = fsync(fd);
+  const int error = errno;
+  close(fd);
+  if (result != 0 && error != EINVAL && error != EROFS) {
+    throw OutputError(path +
+                      ": written, but its folder could not be synced: " + std::strerror(error));
+  }
+}
+
 }  // namespace
 
 void check_output_path(const std::string& option, const std::string& path) {
@@ -142,7 +158,8 @@ void make_output_folder(const std::string& folder) {
 void write_file_atomically(const std::string& path, const std::string& contents) {
   // Never rename over a device or a FIFO that appeared after the checks (a later frame's name).
   struct stat info {};
-  if (stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+  const bool replaces = stat(path.c_str(), &info) == 0;
+  if (replaces && !S_ISREG(info.st_mode)) {
     throw OutputError(path + ": exists and is not a regular file; not replaced");
   }
   std::vector<char> temporary;
@@ -167,10 +184,18 @@ void write_file_atomically(const std::string& path, const std::string& contents)
     data += written;
     left -= static_cast<std::size_t>(written);
   }
-  // mkstemp creates the file 0600; give it the permissions an ordinary new file would get.
-  const mode_t mask = umask(0);
-  umask(mask);
-  if (fchmod(fd, 0666 & ~mask) != 0) fail("chmod failed");
+  // mkstemp creates the file 0600. A replaced file keeps its permissions (a shared 0644 image
+  // stays readable by others, a private 0600 one stays private); a new file gets those an
+  // ordinary new file would get. Set-user and set-group bits are not carried over.
+  mode_t mode = 0;
+  if (replaces) {
+    mode = info.st_mode & 0777;
+  } else {
+    const mode_t mask = umask(0);
+    umask(mask);
+    mode = 0666 & ~mask;
+  }
+  if (fchmod(fd, mode) != 0) fail("chmod failed");
   if (fsync(fd) != 0) fail("fsync failed");
   if (close(fd) != 0) {
     const std::string reason = std::strerror(errno);
@@ -184,6 +209,9 @@ void write_file_atomically(const std::string& path, const std::string& contents)
     throw OutputError(path + ": rename failed: " + reason);
   }
   forget_temporary(temporary, false);
+  // The rename is only on disk once the folder is: without this, a power cut soon after could
+  // leave the old file, or none, in place of the new one.
+  sync_folder(path);
 }
 
 void remove_temporary_file_on_termination() {

@@ -34,8 +34,10 @@ void make_output_folder(const std::string& folder);
 
 // Write `contents` to `path` so that readers only ever see the old file or the complete new one:
 // the bytes go to a temporary file in the same folder (PATH.tmp-XXXXXX), are flushed to disk,
-// and the temporary file is renamed over `path`. On failure the temporary file is removed and
-// OutputError thrown; a `path` that exists and is not a regular file is left alone (OutputError).
+// the temporary file is renamed over `path`, and the folder is flushed to disk too, so that the
+// rename survives a power cut. A replaced file keeps its permission bits; a new one gets 0666
+// less the umask. On failure the temporary file is removed and OutputError thrown; a `path`
+// that exists and is not a regular file is left alone (OutputError).
 void write_file_atomically(const std::string& path, const std::string& contents);
 
 // From now on, SIGTERM and SIGINT first remove the temporary file being written (if any), then

@@ -36,6 +36,30 @@ TEST(AtomicFile, WritesAndReplacesLeavingNoTemporaryFiles) {
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
 }
 
+mode_t permissions(const std::string& path) {
+  struct stat info {};
+  EXPECT_EQ(stat(path.c_str(), &info), 0) << path;
+  return info.st_mode & 07777;
+}
+
+TEST(AtomicFile, AReplacedFileKeepsItsPermissionsAndANewOneFollowsTheUmask) {
+  TemporaryFolder folder;
+  const mode_t previous_mask = umask(022);
+  const std::string path = folder.file("image.png");
+  wobble::write_file_atomically(path, "new");
+  EXPECT_EQ(permissions(path), 0644u) << "0666 less the umask";
+  for (const mode_t mode : {0600u, 0640u, 0604u, 0755u}) {
+    ASSERT_EQ(chmod(path.c_str(), mode), 0);
+    wobble::write_file_atomically(path, "replaced");
+    EXPECT_EQ(permissions(path), mode);
+    EXPECT_EQ(read(path), "replaced");
+  }
+  ASSERT_EQ(chmod(path.c_str(), 04755), 0);  // set-user-ID is not carried over
+  wobble::write_file_atomically(path, "again");
+  EXPECT_EQ(permissions(path), 0755u);
+  umask(previous_mask);
+}
+
 TEST(AtomicFile, FailureThrowsAndLeavesNothingBehind) {
   TemporaryFolder folder;
   EXPECT_THROW(wobble::write_file_atomically(folder.file("missing/out.txt"), "x"),

@@ -1,0 +1,66 @@
+// The atomic write seen from the system calls, with strace: the image's bytes are synced before
+// the rename, and its folder after it, so that the rename survives a power cut.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "run_wobble.h"
+
+namespace {
+
+using wobble::testing::Result;
+using wobble::testing::run_wobble;
+using wobble::testing::TemporaryFolder;
+
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  return lines;
+}
+
+TEST(AtomicWriteTrace, TheFolderIsSyncedAfterTheRename) {
+  if (std::system("strace -o /dev/null true >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "strace cannot trace here (not installed, or ptrace is not allowed)";
+  }
+  TemporaryFolder folder;
+  const std::string image = folder.file("shot.png"), trace = folder.file("trace");
+  const Result result =
+      run_wobble("cloth --headless --frames 1 --width 64 --height 48 --screenshot '" + image + "'",
+                 "strace -f -o '" + trace + "' -e trace=openat,fsync,rename,renameat,renameat2");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::vector<std::string> lines = lines_of(trace);
+  const std::string quoted_image = "\"" + image + "\"";
+  const std::regex folder_opened("openat\\(AT_FDCWD, \"" + folder.path().string() +
+                                 "\", [^)]*O_DIRECTORY[^)]*\\) = ([0-9]+)");
+  std::size_t renamed = lines.size(), data_synced = lines.size();
+  std::string folder_fd;
+  bool folder_synced = false;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    if (line.find("rename") != std::string::npos &&
+        line.find(", " + quoted_image) != std::string::npos &&
+        line.find(" = 0") != std::string::npos) {
+      renamed = i;
+    } else if (renamed == lines.size() && line.find("fsync(") != std::string::npos) {
+      data_synced = i;
+    }
+    std::smatch match;
+    if (i > renamed && std::regex_search(line, match, folder_opened)) folder_fd = match[1];
+    // strace pads the result to a column: "fsync(3)     = 0".
+    if (!folder_fd.empty() &&
+        std::regex_search(line, std::regex("fsync\\(" + folder_fd + "\\) += 0"))) {
+      folder_synced = true;
+    }
+  }
+  ASSERT_LT(renamed, lines.size()) << "no rename onto the image in the trace";
+  EXPECT_LT(data_synced, renamed) << "the bytes are synced before the rename";
+  EXPECT_TRUE(folder_synced) << "the folder is opened and synced after the rename";
+}
+
+}  // namespace
