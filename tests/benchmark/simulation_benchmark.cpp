@@ -14,6 +14,7 @@
 #include "chebyshev_curve.h"
 #include "contact_cost.h"
 #include "self_collision_cost.h"
+#include "solve_cost.h"
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
 #include "sim/simulation.h"
@@ -202,6 +203,7 @@ int main(int argc, char** argv) {
   benchmark::RunSpecifiedBenchmarks(&reporter);
   print_table(reporter);
   print_single_precision_error();
+  wobble::benchmark::print_solve_cost();
   wobble::benchmark::print_chebyshev_curve(wobble::benchmark::benchmark_scenes().front());
   wobble::benchmark::print_contact_cost();
   wobble::benchmark::print_self_collision_cost();
