@@ -1,12 +1,9 @@
 #include "read_obj.h"
 
-#include <tiny_obj_loader.h>
-
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
-#include <stdexcept>
 
 #include "io/input_file_limits.h"
 #include "io/number_word.h"
@@ -51,21 +48,44 @@ bool is_corner(const std::string& word) {
   return true;
 }
 
-// What tinyobjloader is given, and where each element came from.
+// One corner of an `f` element or one vertex of an `l` polyline, as written: the vertex index
+// and the texture-coordinate index (0: none), each 1-based or negative.
+struct RawCorner {
+  int vertex = 0;
+  int texcoord = 0;
+};
+
+// One `f` or `l` line, with the number of `v` and `vt` lines before it, which negative indices
+// count back from (a positive index may name a vertex that comes later in the file).
+struct RawElement {
+  std::vector<RawCorner> corners;
+  int vertices_before = 0;
+  int texcoords_before = 0;
+  int line = 0;
+};
+
+// Every `v`, `vt`, `f` and `l` line, checked word by word so that the message can say which line
+// is wrong; other statements (groups, materials, normals, points) are skipped.
 struct Statements {
-  // The file with only its `v`, `vt`, `f` and `l` lines, the others left empty so that line
-  // numbers stay the same. tinyobjloader 2.0.0rc10 drops the `l` elements of a group that has
-  // no faces, and a file without groups is one group, so no line is lost.
-  std::string kept;
-  std::vector<int> face_lines, line_lines;  // line number of every `f`, every `l`
-  std::vector<double> positions;            // x y z of every `v`
-  std::vector<double> texcoords;            // u v of every `vt` (v = 0 when not given)
+  std::vector<double> positions;  // x y z of every `v`
+  std::vector<double> texcoords;  // u v of every `vt` (v = 0 when not given)
+  std::vector<RawElement> faces, lines;
   long springs = 0;  // springs the faces and lines give, before shared pairs are merged
 };
 
-// tinyobjloader turns "abc" into 0 and "3x" into 3 without a word, so each line it will read is
-// checked here first, and the message can say which line is wrong.
-Statements check_statements(const std::string& path, const std::string& text) {
+// The corner `word` (already checked by is_corner): `v`, `v/vt`, `v//vn` or `v/vt/vn`. Normal
+// indices are not used.
+RawCorner read_corner(const std::string& word) {
+  RawCorner corner;
+  corner.vertex = std::atoi(word.c_str());
+  const std::size_t slash = word.find('/');
+  if (slash != std::string::npos && slash + 1 < word.size() && word[slash + 1] != '/') {
+    corner.texcoord = std::atoi(word.c_str() + slash + 1);
+  }
+  return corner;
+}
+
+Statements read_statements(const std::string& path, const std::string& text) {
   Statements statements;
   std::istringstream lines(text);
   std::string line;
@@ -79,11 +99,9 @@ Statements check_statements(const std::string& path, const std::string& text) {
         throw InputError(at + "`" + keyword + "` has " + std::to_string(words.size() - 1) +
                          " coordinates, expected " + (keyword == "v" ? "x y z" : "u [v]"));
       }
+      // strtod rounds correctly, so a mesh reads back bit for bit what write_obj wrote, and what
+      // the course's reader reads.
       double values[3] = {0.0, 0.0, 0.0};
-      // strtod rounds correctly; tinyobjloader 2.0.0rc10's own number reader is off by up to an
-      // ulp (0.75 reads as 0.75000000000000011), which would keep a mesh from reading back bit
-      // for bit what write_obj wrote, or what the course's reader reads. So coordinates are
-      // taken from here.
       for (std::size_t w = 1; w < words.size() && w <= 3; ++w) {
         const NumberWord reading = read_number_word(words[w], values[w - 1]);
         if (reading == NumberWord::underflow) {
@@ -115,59 +133,22 @@ Statements check_statements(const std::string& path, const std::string& text) {
                          with_thousands_separators(max_face_springs) +
                          " (a face of n corners gives n(n-1)/2 springs)");
       }
+      RawElement element;
+      element.vertices_before = static_cast<int>(statements.positions.size() / 3);
+      element.texcoords_before = static_cast<int>(statements.texcoords.size() / 2);
+      element.line = number;
       for (std::size_t w = 1; w < words.size(); ++w) {
         if (!is_corner(words[w])) {
           throw InputError(at + "'" + words[w] +
                            "' is not a vertex reference, expected v, v/vt, v//vn or v/vt/vn "
                            "with non-zero integer indices");
         }
+        element.corners.push_back(read_corner(words[w]));
       }
-      (keyword == "f" ? statements.face_lines : statements.line_lines).push_back(number);
-    } else {
-      statements.kept += '\n';
-      continue;
+      (keyword == "f" ? statements.faces : statements.lines).push_back(std::move(element));
     }
-    // Single spaces: tinyobjloader misreads an `l` line with two spaces after the keyword.
-    for (std::size_t w = 0; w < words.size(); ++w)
-      statements.kept += (w == 0 ? "" : " ") + words[w];
-    statements.kept += '\n';
   }
   return statements;
-}
-
-// Every `f` element as tinyobjloader's callback reader passes it (the ObjReader drops faces of
-// two vertices), with the number of `v` and `vt` before it, which negative indices count from.
-struct RawFace {
-  std::vector<tinyobj::index_t> corners;
-  int vertices_before = 0;
-  int texcoords_before = 0;
-};
-
-struct FaceCollector {
-  int vertices = 0;
-  int texcoords = 0;
-  std::vector<RawFace> faces;
-};
-
-std::vector<RawFace> collect_faces(const std::string& path, const std::string& kept) {
-  tinyobj::callback_t callback;
-  callback.vertex_cb = [](void* user, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t,
-                          tinyobj::real_t) { ++static_cast<FaceCollector*>(user)->vertices; };
-  callback.texcoord_cb = [](void* user, tinyobj::real_t, tinyobj::real_t, tinyobj::real_t) {
-    ++static_cast<FaceCollector*>(user)->texcoords;
-  };
-  callback.index_cb = [](void* user, tinyobj::index_t* indices, int count) {
-    auto& collector = *static_cast<FaceCollector*>(user);
-    collector.faces.push_back({std::vector<tinyobj::index_t>(indices, indices + count),
-                               collector.vertices, collector.texcoords});
-  };
-  FaceCollector collector;
-  std::istringstream stream(kept);
-  std::string warning, error;
-  if (!tinyobj::LoadObjWithCallback(stream, callback, &collector, nullptr, &warning, &error)) {
-    throw InputError(path + ": not a readable OBJ file (" + error + ")");
-  }
-  return std::move(collector.faces);
 }
 
 // The 0-based index of a raw OBJ index (1-based, or negative counting back from `before`),
@@ -185,25 +166,16 @@ int resolve(int raw, int before, int count, const std::string& what, const std::
   return index;
 }
 
+std::string line_at(const std::string& path, const RawElement& element) {
+  return path + ": line " + std::to_string(element.line) + ": ";
+}
+
 }  // namespace
 
 ObjMesh read_obj(const std::string& path) {
-  const Statements statements = check_statements(path, read_text_file(path, obj_file));
-
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = false;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  if (!reader.ParseFromString(statements.kept, "", config)) {
-    throw InputError(path + ": " + one_line(reader.Error()));
-  }
-  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const Statements statements = read_statements(path, read_text_file(path, obj_file));
   const int vertex_count = static_cast<int>(statements.positions.size() / 3);
   const int texcoord_count = static_cast<int>(statements.texcoords.size() / 2);
-  if (attrib.vertices.size() != statements.positions.size() ||
-      attrib.texcoords.size() != statements.texcoords.size()) {
-    throw std::logic_error(path + ": tinyobjloader and the line check disagree on the count");
-  }
   if (vertex_count == 0) throw InputError(path + ": no vertices, expected `v x y z` lines");
 
   ObjMesh mesh;
@@ -216,13 +188,11 @@ ObjMesh read_obj(const std::string& path) {
   Eigen::MatrixXd uv = Eigen::MatrixXd::Zero(vertex_count, 2);
   bool any_uv = false;
 
-  const std::vector<RawFace> raw_faces = collect_faces(path, statements.kept);
-  for (std::size_t f = 0; f < raw_faces.size(); ++f) {
-    const RawFace& raw = raw_faces[f];
-    const std::string at = path + ": line " + std::to_string(statements.face_lines.at(f)) + ": ";
+  for (const RawElement& raw : statements.faces) {
+    const std::string at = line_at(path, raw);
     std::vector<int> face;
-    for (const tinyobj::index_t& corner : raw.corners) {
-      const int v = resolve(corner.vertex_index, raw.vertices_before, vertex_count, "vertices", at);
+    for (const RawCorner& corner : raw.corners) {
+      const int v = resolve(corner.vertex, raw.vertices_before, vertex_count, "vertices", at);
       for (int earlier : face) {
         if (earlier == v) {
           throw InputError(at + "the face uses vertex " + std::to_string(v + 1) +
@@ -230,9 +200,8 @@ ObjMesh read_obj(const std::string& path) {
         }
       }
       face.push_back(v);
-      // The callback reader leaves a missing texture index at 0, which no valid index is.
-      if (corner.texcoord_index == 0) continue;
-      const int t = resolve(corner.texcoord_index, raw.texcoords_before, texcoord_count,
+      if (corner.texcoord == 0) continue;
+      const int t = resolve(corner.texcoord, raw.texcoords_before, texcoord_count,
                             "texture coordinates", at);
       any_uv = true;
       if (has_uv[v]) continue;  // the first face to give a vertex its uv wins
@@ -242,29 +211,23 @@ ObjMesh read_obj(const std::string& path) {
     mesh.faces.push_back(std::move(face));
   }
 
-  std::size_t polyline = 0;
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    std::size_t offset = 0;
-    for (const int count : shape.lines.num_line_vertices) {
-      const std::string at =
-          path + ": line " + std::to_string(statements.line_lines.at(polyline++)) + ": ";
-      for (int c = 0; c < count; ++c) {
-        // tinyobjloader has already made this index 0-based; it checks no range for lines.
-        const int v = shape.lines.indices[offset + c].vertex_index;
-        if (v < 0 || v >= vertex_count) {
-          throw InputError(at + "a vertex index refers to none of the " +
-                           std::to_string(vertex_count) + " vertices, expected 1 to " +
-                           std::to_string(vertex_count) + " or a negative index counting back");
-        }
-        if (c == 0) continue;
-        const int previous = shape.lines.indices[offset + c - 1].vertex_index;
-        if (previous == v) {
-          throw InputError(at + "a segment joins vertex " + std::to_string(v + 1) +
-                           " to itself, expected two distinct vertices");
-        }
-        mesh.faces.push_back({previous, v});
+  // Every segment of every polyline, after the faces; a polyline's texture indices are unused.
+  for (const RawElement& raw : statements.lines) {
+    const std::string at = line_at(path, raw);
+    int previous = -1;
+    for (const RawCorner& corner : raw.corners) {
+      const int v = corner.vertex > 0 ? corner.vertex - 1 : raw.vertices_before + corner.vertex;
+      if (v < 0 || v >= vertex_count) {
+        throw InputError(at + "a vertex index refers to none of the " +
+                         std::to_string(vertex_count) + " vertices, expected 1 to " +
+                         std::to_string(vertex_count) + " or a negative index counting back");
       }
-      offset += static_cast<std::size_t>(count);
+      if (previous == v) {
+        throw InputError(at + "a segment joins vertex " + std::to_string(v + 1) +
+                         " to itself, expected two distinct vertices");
+      }
+      if (previous >= 0) mesh.faces.push_back({previous, v});
+      previous = v;
     }
   }
   if (mesh.faces.empty()) {

@@ -19,11 +19,12 @@ struct ObjMesh {
   Eigen::MatrixXd uv;
 };
 
-// Read an OBJ file with tinyobjloader (double precision, no triangulation). Only `v`, `vt`,
-// `f` and `l` matter; other statements (groups, materials, normals, points) are ignored.
-// Indices may be 1-based or negative (counting back from the latest vertex, as OBJ allows).
-// Coordinates are the correctly rounded doubles of their decimals (strtod), so a file written by
-// write_obj reads back bit for bit; tinyobjloader's own number reader can be an ulp off.
+// Read an OBJ file in one pass of Wobble's own (double precision, no triangulation). Only `v`,
+// `vt`, `f` and `l` matter; other statements (groups, materials, normals, points) are ignored.
+// Indices may be 1-based (a vertex may come after the face that names it) or negative (counting
+// back from the latest vertex or texture coordinate before the line, as OBJ allows); normal
+// indices (`v//vn`, `v/vt/vn`) are checked for form only. Coordinates are the correctly rounded
+// doubles of their decimals (strtod), so a file written by write_obj reads back bit for bit.
 //
 // A UTF-8 byte-order mark before the first line is skipped.
 //

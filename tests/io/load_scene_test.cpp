@@ -71,9 +71,8 @@ TEST(LoadScene, ExportedObjLoadsAgain) {
   const wobble::Scene cloth = wobble::make_builtin_scene("cloth");
   wobble::write_obj(folder.file("out.obj"), cloth.network.V, cloth.network.F, cloth.network.E);
   const wobble::Scene again = wobble::load_scene(folder.file("out.obj"));
-  // The OBJ holds shortest round-trip decimals; tinyobjloader's own number parser may round the
-  // last bit differently from strtod, hence a relative 1e-15 rather than equality.
-  EXPECT_LE((again.network.V - cloth.network.V).cwiseAbs().maxCoeff(), 1e-15 * 1.2);
+  // The OBJ holds shortest round-trip decimals, which strtod reads back exactly.
+  EXPECT_EQ(again.network.V, cloth.network.V);
   EXPECT_EQ(again.network.F, cloth.network.F);
 }
 

@@ -69,7 +69,8 @@ TEST_F(ReadObj, AllCornerFormsGiveTheSameFacesAndTheFirstUvWins) {
 }
 
 TEST_F(ReadObj, CoordinatesAreTheCorrectlyRoundedDoubles) {
-  // tinyobjloader 2.0.0rc10 alone reads 0.75 as 0.75000000000000011 and 0.3 one ulp high.
+  // A parser of its own would be easy to get an ulp wrong (tinyobjloader 2.0.0rc10, once used
+  // here, read 0.75 as 0.75000000000000011 and 0.3 one ulp high).
   const wobble::ObjMesh mesh = read(
       "v 0.75 0.3 0.7\nv 0.15000000000000002 1e-300 -2.5e17\n"
       "v 0 1 0\nvt 0.3 0.7\nf 1/1 2/1 3/1\n");
@@ -93,9 +94,28 @@ TEST_F(ReadObj, NegativeIndicesCountBackFromTheLatestVertex) {
   EXPECT_EQ(mesh.uv.row(1), Eigen::RowVector2d(1, 0));
 }
 
+TEST_F(ReadObj, EveryCornerFormAndNegativeTextureIndices) {
+  // v/vt/vn, v//vn (no texture coordinate) and v/-1 (the latest vt before the line).
+  const wobble::ObjMesh mesh = read(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.25 0.5\nvt 0.75 1\nvn 0 0 1\n"
+      "f 1/1/1 2//1 3/-1\nvt 0.5 0.5\nf 2/-1 1 3\n");
+  EXPECT_EQ(mesh.faces, (Faces{{0, 1, 2}, {1, 0, 2}}));
+  EXPECT_EQ(mesh.uv.row(0), Eigen::RowVector2d(0.25, 0.5));
+  EXPECT_EQ(mesh.uv.row(2), Eigen::RowVector2d(0.75, 1));
+  EXPECT_EQ(mesh.uv.row(1), Eigen::RowVector2d(0.5, 0.5)) << "-1 counts from the second face";
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 1\n";
+  expect_error(v + "f 1/-3 2 3\n", "line 6: ",
+               "index -3 refers to none of the 2 texture coordinates, expected 1 to 2 or -1 to -2 "
+               "counting back");
+  expect_error(v + "f 1/x 2 3\n", "line 6: ", "'1/x' is not a vertex reference");
+  expect_error(v + "f 1// 2 3\n", "line 6: ", "'1//' is not a vertex reference");
+  expect_error(v + "f /1 2 3\n", "line 6: ", "'/1' is not a vertex reference");
+  expect_error(v + "l 1 -4\n", "line 6: ", "refers to none of the 3 vertices");
+}
+
 TEST_F(ReadObj, LinesAndTwoVertexFacesAreSpringsAfterTheFaces) {
   // A polyline `l a b c` is its segments a–b and b–c. The `l` elements of a group without faces
-  // are kept (tinyobjloader alone loses them).
+  // are kept (tinyobjloader, once used here, lost them).
   const wobble::ObjMesh mesh =
       read(std::string(square) + "g first\nl 1 2 3\ng second\no thing\nf 4 1\nf 1 2 3\nl 4 2\n");
   EXPECT_EQ(mesh.faces, (Faces{{3, 0}, {0, 1, 2}, {0, 1}, {1, 2}, {3, 1}}));
@@ -123,7 +143,7 @@ TEST_F(ReadObj, MissingFileIsNamed) {
 TEST_F(ReadObj, BadIndicesNameTheirLine) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   expect_error(v + "f 1 2 0\n", "line 4: ", "'0' is not a vertex reference");
-  // A vertex may come after the face that uses it, as in tinyobjloader.
+  // A vertex may come after the face that uses it, as other OBJ readers allow.
   EXPECT_EQ(read(v + "f 1 2 4\nv 1 1 1\n").faces, (Faces{{0, 1, 3}}));
   expect_error(v + "f 1 2 5\nv 1 1 1\n", "line 4: ", "index 5 refers to none of the 4 vertices");
   expect_error(v + "f 1 2 3\nf 1 2 7\n", "line 5: ", "expected 1 to 3");
