@@ -82,7 +82,7 @@ const std::vector<Binding>& viewer_bindings() {
       {"C", "colliders shown / hidden"},
       {"P", "vertices as points on / off"},
       {"L", "springs as lines on / off"},
-      {"V", "colour by material / strain / speed"},
+      {"V", "colour by material / strain / speed / contacts"},
       {"F", "frame the mesh and the room it moves in"},
       {"O", "the scene's opening view"},
       {"G", "convergence and energy plots on / off"},

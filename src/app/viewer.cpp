@@ -12,6 +12,7 @@
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
 #include "scene_catalog.h"
+#include "sim/solver/worker_pool.h"
 #include "step_advice.h"
 #include "student_server.h"
 
@@ -325,6 +326,7 @@ PanelStats Viewer::simulation_stats() const {
   stats.springs = static_cast<int>(scene_.network.E.rows());
   // A free vertex held by the mouse is pinned only for the drag: it is not one of the pins.
   stats.pins = simulation_->pin_count() - (drag_.holds_free_vertex() ? 1 : 0);
+  stats.threads = shared_thread_setting().threads;
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
   stats.notes = scene_.notes;

@@ -241,6 +241,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
     if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
     if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
+    // With the timings: the count depends on the machine, and headless images must not.
+    stat_row("threads", "%.0f", stats.threads);
   } else {
     ImGui::TextDisabled("timings hidden (headless)");
   }

@@ -67,6 +67,7 @@ struct PanelStats {
   float real_time_factor = 0.0f, steps_per_second = 0.0f;
   float instruments_ms = 0.0f;  // recording the convergence plot's numbers
   int vertices = 0, springs = 0, pins = 0;
+  int threads = 1;  // the solver's threads (--threads, OMP_NUM_THREADS or the processors)
   long steps = 0;
   double simulated_seconds = 0.0;
   bool has_colliders = false;      // friction, the colliders' checkbox and contacts show only then
