@@ -29,10 +29,11 @@ void write_png(const std::string& path, const RgbaImage& image);
 // 16-bit samples keep their high byte), grey, palette or colour, with alpha or a tRNS colour,
 // interlaced or not. No gamma or colour profile is applied. The header is read first, and an
 // image wider or taller than `max_side` pixels is refused before any pixel is decoded; the CRC
-// of every chunk read and the pixel data's zlib checksum are checked, and ancillary chunks are
-// bounded (1 MiB each, 4 MiB and 256 chunks in all). Throws InputError naming the file and why it
-// could not be read: not a regular file, larger than png_file.max_bytes (io/input_file_limits.h),
-// not a PNG, damaged or truncated, or too large.
+// of every chunk read and the pixel data's zlib checksum are checked, and the ancillary chunks
+// Wobble never uses (text, profiles) are held to libspng's chunk limits, set to 1 MiB a chunk
+// and 4 MiB in all, so that compressed text is never inflated past them. Throws InputError naming
+// the file and why it could not be read: not a regular file, larger than png_file.max_bytes
+// (io/input_file_limits.h), not a PNG, damaged or truncated, or too large.
 RgbaImage read_png(const std::string& path, int max_side = max_texture_side);
 
 // Why the image at `path` cannot be a texture, or "" when it can: the checks of read_png with

@@ -13,7 +13,9 @@ void put32(std::string& bytes, std::uint32_t value) {
     bytes.push_back(static_cast<char>((value >> shift) & 0xff));
 }
 
-// zlib stream of stored (uncompressed) blocks: header, blocks of at most 65,535 bytes, Adler-32.
+}  // namespace
+
+// Header, blocks of at most 65,535 bytes, Adler-32.
 std::string zlib_stored(const std::string& data) {
   std::string out("\x78\x01", 2);
   std::size_t at = 0;
@@ -36,6 +38,8 @@ std::string zlib_stored(const std::string& data) {
   put32(out, (b << 16) | a);
   return out;
 }
+
+namespace {
 
 // The rows of the sub-image of pixels (x0 + i dx, y0 + j dy), each a filter byte (0, none) and
 // the samples packed most significant bit first (16-bit: big-endian).

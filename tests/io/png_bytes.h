@@ -14,6 +14,9 @@ namespace wobble::testing {
 // The CRC-32 of PNG chunks (and zlib's Adler-32 is in png_bytes.cpp's encoder).
 std::uint32_t png_crc32(const std::string& bytes);
 
+// A zlib stream of `data` in stored (uncompressed) deflate blocks.
+std::string zlib_stored(const std::string& data);
+
 // One chunk: length, type, data and its CRC.
 std::string png_chunk(const std::string& type, const std::string& data);
 

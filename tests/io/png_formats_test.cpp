@@ -172,6 +172,33 @@ TEST(PngFormats, DamagedFilesAreRefusedWithTheFileNamed) {
   refused("GIF89a" + good.substr(6), "another format's signature");
 }
 
+TEST(PngFormats, TextChunksAreBoundedAndOtherwiseIgnored) {
+  PngSpec spec = patterned(6, 5, 8, rgba, false);
+  const std::string good = encode_test_png(spec);
+  const std::size_t after_header = 8 + 25;  // the signature and IHDR
+  TemporaryFolder folder;
+  const std::string path = folder.file("text.png");
+  // Some text before the pixels, as editors write: read past.
+  std::string with_text = good;
+  with_text.insert(after_header, png_chunk("tEXt", std::string("Comment\0", 8) + "made by hand"));
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << with_text;
+  EXPECT_EQ(wobble::read_png(path).width, 6);
+  // Compressed text that would take 5 MB once inflated, in chunks under 1 MiB each: refused
+  // at the 4 MiB the decoder may keep, not inflated.
+  std::string bomb = good;
+  for (int i = 0; i < 5; ++i) {
+    bomb.insert(after_header, png_chunk("zTXt", "C" + std::to_string(i) + std::string("\0\0", 2) +
+                                                    zlib_stored(std::string(1'000'000, 'a'))));
+  }
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bomb;
+  try {
+    wobble::read_png(path);
+    ADD_FAILURE() << "decoded a PNG with 5 MB of compressed text";
+  } catch (const wobble::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("limits"), std::string::npos) << error.what();
+  }
+}
+
 TEST(PngFormats, ReadsEveryImageWobbleWrites) {
   wobble::RgbaImage image;
   image.width = 300;  // 1,200 bytes a row: libspng chooses filters, unlike the test encoder
