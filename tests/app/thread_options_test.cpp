@@ -16,6 +16,12 @@ using wobble::testing::run_wobble;
 
 const char* const short_run = "cloth --headless --frames 2 --stats";
 
+// The variables this test sets, and none from the environment it runs in (a CI's
+// OMP_THREAD_LIMIT would cap every count).
+std::string only(const std::string& assignments = "") {
+  return "env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT " + assignments;
+}
+
 // The --stats line (the last line of stdout).
 nlohmann::json stats_of(const Result& result) {
   const std::string out = result.out.substr(0, result.out.find_last_not_of('\n') + 1);
@@ -24,8 +30,9 @@ nlohmann::json stats_of(const Result& result) {
 
 TEST(ThreadOptions, TheFlagSetsTheSolversThreads) {
   for (const int threads : {1, 3}) {
-    const Result result = run_wobble(
-        std::string(short_run) + " --threads " + std::to_string(threads), "OMP_NUM_THREADS=2");
+    const Result result =
+        run_wobble(std::string(short_run) + " --threads " + std::to_string(threads),
+                   only("OMP_NUM_THREADS=2"));
     ASSERT_EQ(result.exit_code, 0) << result.err;
     const nlohmann::json stats = stats_of(result);
     EXPECT_EQ(stats["threads"], threads);
@@ -34,22 +41,22 @@ TEST(ThreadOptions, TheFlagSetsTheSolversThreads) {
 }
 
 TEST(ThreadOptions, OmpNumThreadsIsObeyedAndCappedByTheLimit) {
-  Result result = run_wobble(short_run, "OMP_NUM_THREADS=1");
+  Result result = run_wobble(short_run, only("OMP_NUM_THREADS=1"));
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(stats_of(result)["threads"], 1);
   EXPECT_EQ(stats_of(result)["threads_from"], "OMP_NUM_THREADS");
   EXPECT_EQ(result.err, "");
 
-  result = run_wobble(short_run, "OMP_NUM_THREADS=3,1");  // a nested list: the first level
+  result = run_wobble(short_run, only("OMP_NUM_THREADS=3,1"));  // a nested list: the first level
   EXPECT_EQ(stats_of(result)["threads"], 3);
 
-  result = run_wobble(short_run, "OMP_NUM_THREADS=3 OMP_THREAD_LIMIT=2");
+  result = run_wobble(short_run, only("OMP_NUM_THREADS=3 OMP_THREAD_LIMIT=2"));
   EXPECT_EQ(stats_of(result)["threads"], 2);
   EXPECT_EQ(stats_of(result)["threads_from"], "OMP_THREAD_LIMIT");
 }
 
 TEST(ThreadOptions, WithoutASettingTheProcessorsDecide) {
-  const Result result = run_wobble(short_run, "env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT");
+  const Result result = run_wobble(short_run, only());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(stats_of(result)["threads_from"], "processors");
   EXPECT_EQ(stats_of(result)["threads"],
@@ -57,7 +64,7 @@ TEST(ThreadOptions, WithoutASettingTheProcessorsDecide) {
 }
 
 TEST(ThreadOptions, AVariableThatCannotBeObeyedIsReportedOnOneLine) {
-  const Result result = run_wobble(short_run, "OMP_NUM_THREADS=lots");
+  const Result result = run_wobble(short_run, only("OMP_NUM_THREADS=lots"));
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err,
             "wobble: warning: OMP_NUM_THREADS='lots' is not a whole number of threads from 1 to " +
