@@ -69,8 +69,8 @@ TEST_F(ReadObj, AllCornerFormsGiveTheSameFacesAndTheFirstUvWins) {
 }
 
 TEST_F(ReadObj, CoordinatesAreTheCorrectlyRoundedDoubles) {
-  // A parser of its own would be easy to get an ulp wrong (tinyobjloader 2.0.0rc10, once used
-  // here, read 0.75 as 0.75000000000000011 and 0.3 one ulp high).
+  // Hand-written number parsers are easy to get an ulp wrong: OBJ readers have read 0.75 as
+  // 0.75000000000000011 and 0.3 one ulp high.
   const wobble::ObjMesh mesh = read(
       "v 0.75 0.3 0.7\nv 0.15000000000000002 1e-300 -2.5e17\n"
       "v 0 1 0\nvt 0.3 0.7\nf 1/1 2/1 3/1\n");
@@ -115,7 +115,7 @@ TEST_F(ReadObj, EveryCornerFormAndNegativeTextureIndices) {
 
 TEST_F(ReadObj, LinesAndTwoVertexFacesAreSpringsAfterTheFaces) {
   // A polyline `l a b c` is its segments a–b and b–c. The `l` elements of a group without faces
-  // are kept (tinyobjloader, once used here, lost them).
+  // are kept (an OBJ library once used here lost them).
   const wobble::ObjMesh mesh =
       read(std::string(square) + "g first\nl 1 2 3\ng second\no thing\nf 4 1\nf 1 2 3\nl 4 2\n");
   EXPECT_EQ(mesh.faces, (Faces{{3, 0}, {0, 1, 2}, {0, 1}, {1, 2}, {3, 1}}));
