@@ -111,6 +111,32 @@ TEST_F(ReadObj, EveryCornerFormAndNegativeTextureIndices) {
   expect_error(v + "f 1// 2 3\n", "line 6: ", "'1//' is not a vertex reference");
   expect_error(v + "f /1 2 3\n", "line 6: ", "'/1' is not a vertex reference");
   expect_error(v + "l 1 -4\n", "line 6: ", "refers to none of the 3 vertices");
+  expect_error(v + "f 1/ 2 3\n", "line 6: ", "'1/' is not a vertex reference");
+  expect_error(v + "f 1/1/ 2 3\n", "line 6: ", "'1/1/' is not a vertex reference");
+  expect_error(v + "f 1/1 2/0 3\n", "line 6: ", "'2/0' is not a vertex reference");
+}
+
+TEST_F(ReadObj, TextureCoordinatesMayComeAfterTheFaceAndNormalIndicesAreFormOnly) {
+  // A positive vt index, like a vertex index, is checked against every vt in the file.
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const wobble::ObjMesh mesh = read(v + "f 1/2 2/1 3\nvt 0.25 0\nvt 0.5 1\n");
+  ASSERT_EQ(mesh.uv.rows(), 3);
+  EXPECT_EQ(mesh.uv.row(0), Eigen::RowVector2d(0.5, 1));
+  EXPECT_EQ(mesh.uv.row(1), Eigen::RowVector2d(0.25, 0));
+  expect_error(v + "f 1/3 2 3\nvt 0 0\nvt 1 1\n",
+               "line 4: ", "index 3 refers to none of the 2 texture coordinates, expected 1 to 2");
+  // There are no normals here, and none is needed: a normal index is neither used nor resolved.
+  const wobble::ObjMesh normals = read(v + "f 1//7 2//7 3//7\n");
+  EXPECT_EQ(normals.faces, (Faces{{0, 1, 2}}));
+  EXPECT_EQ(normals.uv.size(), 0) << "v//vn gives no texture coordinate";
+  EXPECT_EQ(read(v + "vt 0.5 0.25\nf 1/1/9 2 3\n").uv.row(0), Eigen::RowVector2d(0.5, 0.25));
+}
+
+TEST_F(ReadObj, IndicesBeyondAnIntAreRefusedNotWrapped) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_error(v + "f 1 2 999999999\n", "line 4: ", "index 999999999 refers to none of the 3");
+  expect_error(v + "f 1 2 -999999999\n", "line 4: ", "index -999999999 refers to none of the 3");
+  expect_error(v + "f 1 2 4294967299\n", "line 4: ", "'4294967299' is not a vertex reference");
 }
 
 TEST_F(ReadObj, LinesAndTwoVertexFacesAreSpringsAfterTheFaces) {
