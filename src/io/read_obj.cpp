@@ -1,7 +1,5 @@
 #include "read_obj.h"
 
-#include <cerrno>
-#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -151,10 +149,16 @@ Statements read_statements(const std::string& path, const std::string& text) {
   return statements;
 }
 
-// The 0-based index of a raw OBJ index (1-based, or negative counting back from `before`),
-// checked against the `count` elements there are of the kind `what` (a plural noun).
+// The 0-based index of a raw OBJ index: 1-based, or negative counting back from the `before`
+// elements of its kind that come before its line. Not range-checked.
+int zero_based(int raw, int before) {
+  return raw > 0 ? raw - 1 : before + raw;
+}
+
+// zero_based(raw, before), checked against the `count` elements there are of the kind `what`
+// (a plural noun).
 int resolve(int raw, int before, int count, const std::string& what, const std::string& at) {
-  const int index = raw > 0 ? raw - 1 : before + raw;
+  const int index = zero_based(raw, before);
   const std::string given = at + "index " + std::to_string(raw) + " ";
   if (count == 0) throw InputError(given + "given, but the file has no " + what);
   if (index < 0 || index >= count) {
@@ -201,8 +205,8 @@ ObjMesh read_obj(const std::string& path) {
       }
       face.push_back(v);
       if (corner.texcoord == 0) continue;
-      const int t = resolve(corner.texcoord, raw.texcoords_before, texcoord_count,
-                            "texture coordinates", at);
+      const int t =
+          resolve(corner.texcoord, raw.texcoords_before, texcoord_count, "texture coordinates", at);
       any_uv = true;
       if (has_uv[v]) continue;  // the first face to give a vertex its uv wins
       has_uv[v] = 1;
@@ -216,7 +220,7 @@ ObjMesh read_obj(const std::string& path) {
     const std::string at = line_at(path, raw);
     int previous = -1;
     for (const RawCorner& corner : raw.corners) {
-      const int v = corner.vertex > 0 ? corner.vertex - 1 : raw.vertices_before + corner.vertex;
+      const int v = zero_based(corner.vertex, raw.vertices_before);
       if (v < 0 || v >= vertex_count) {
         throw InputError(at + "a vertex index refers to none of the " +
                          std::to_string(vertex_count) + " vertices, expected 1 to " +
