@@ -1,27 +1,63 @@
 #ifndef WOBBLE_CHECK_CHECK_CASES_H
 #define WOBBLE_CHECK_CHECK_CASES_H
 
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "check_scene.h"
+#include "pin_weight.h"
 
-// One check per assignment function: call the student's function (linked under the seed's name)
-// and the reference (reference_functions.h) on one scene, each with the reference's inputs, and
-// compare. Each returns "" when they agree, else what differs (see compare.h). They run inside
-// a child process (child_process.h), so a crash, a hang or a huge allocation in the student's
-// code is caught there.
-std::string check_signed_incidence_matrix_dense(const CheckScene& scene);
-std::string check_signed_incidence_matrix_sparse(const CheckScene& scene);
-std::string check_fast_mass_springs_precomputation_dense(const CheckScene& scene);
-std::string check_fast_mass_springs_precomputation_sparse(const CheckScene& scene);
-std::string check_fast_mass_springs_step_dense(const CheckScene& scene);
-std::string check_fast_mass_springs_step_sparse(const CheckScene& scene);
+// One check per assignment function: call the student's function as the course calls it
+// (course_call.h) and the reference (reference_functions.h) on one scene, each with the
+// reference's inputs, and compare. They run inside a child process (child_process.h), so a
+// crash, a hang or a huge allocation in the student's code is caught there.
+
+// What one check found.
+struct CheckResult {
+  std::string difference;          // "" when the function agrees, else what differs (compare.h)
+  std::string hint;                // why it may differ, where that can be told (step_hints.h)
+  std::vector<std::string> notes;  // said beside the verdict, pass or fail
+  // The pin weight the function was found to use (pin_weight.h), NaN where it has none to find.
+  double pin_weight = std::numeric_limits<double>::quiet_NaN();
+};
+
+// What a check knows beyond its scene.
+struct CheckContext {
+  // The pin weight the step was found to use (its probe), or the handout's when it could not be
+  // found or is not acceptable.
+  double step_pin_weight = kHandoutPinWeight;
+};
+
+CheckResult check_signed_incidence_matrix_dense(const CheckScene& scene, const CheckContext&);
+CheckResult check_signed_incidence_matrix_sparse(const CheckScene& scene, const CheckContext&);
+CheckResult check_fast_mass_springs_precomputation_dense(const CheckScene& scene,
+                                                         const CheckContext&);
+CheckResult check_fast_mass_springs_precomputation_sparse(const CheckScene& scene,
+                                                          const CheckContext&);
+CheckResult check_fast_mass_springs_step_dense(const CheckScene& scene, const CheckContext&);
+CheckResult check_fast_mass_springs_step_sparse(const CheckScene& scene, const CheckContext&);
+
+// The probes of a step, each run once in a child of its own before the scenes:
+// the pin weight it uses (step_pin_weight in pin_weight.h; NaN when it cannot be found), and
+// and whether it reads Unext before writing it: the seed's example stepped with Unext equal to
+// Ucur, as the course passes it, then again with Unext empty (`empty`) or full of NaN; "" when
+// both give the same, else the note to print. A crash of the empty run is an answer too, when
+// the NaN run went through.
+inline constexpr char kReadsUnextNote[] =
+    "reads Unext before writing it: the course's main.cpp passes Unext equal to Ucur, so this "
+    "works there, but Unext is an output; start from Ucur";
+double probe_step_dense_pin_weight();
+double probe_step_sparse_pin_weight();
+std::string probe_step_dense_reads_unext(bool empty);
+std::string probe_step_sparse_reads_unext(bool empty);
 
 struct CheckedFunction {
-  const char* name;                         // the seed's name of the function
-  std::string (*check)(const CheckScene&);  // its check
-  bool sparse;                              // gets the scale check too
+  const char* name;                                              // the seed's name
+  CheckResult (*check)(const CheckScene&, const CheckContext&);  // its check
+  bool sparse;                                                   // gets the scale check too
+  double (*probe_pin_weight)();                                  // steps only, else null
+  std::string (*probe_reads_unext)(bool empty);                  // steps only, else null
 };
 
 // The six functions, in the assignment's order.
@@ -43,8 +79,5 @@ constexpr double kMassTolerance = 1e-12;
 // they do not add up. Measured: Wobble's dense and sparse forms agree to 5e-14 of the scene
 // size on every scene, while one iteration more or fewer moves the stiff chain by 1.3e-5 of it.
 constexpr double kPositionTolerance = 1e-8;
-
-// The pin weight of the assignment, to rebuild Q for the solve check.
-constexpr double kPinWeight = 1e10;
 
 #endif

@@ -32,8 +32,8 @@ void write_all(int fd, const std::string& text) {
   }
 }
 
-[[noreturn]] void run_child(const std::function<std::string()>& check, const ChildLimits& limits,
-                            int result_fd, int output_fd) {
+[[noreturn]] void run_child(const ChildCheck& check, const ChildLimits& limits, int result_fd,
+                            int output_fd) {
   setpgid(0, 0);  // its own process group, so a time-out kills whatever it started too
   dup2(output_fd, STDOUT_FILENO);
   dup2(output_fd, STDERR_FILENO);
@@ -50,8 +50,7 @@ void write_all(int fd, const std::string& text) {
   int code = 0;
   std::string text;
   try {
-    text = check();
-    code = text.empty() ? 0 : kCodeDiffered;
+    code = check(text) ? 0 : kCodeDiffered;
   } catch (const std::bad_alloc&) {
     code = kCodeOutOfMemory;
   } catch (const std::exception& error) {
@@ -120,7 +119,7 @@ std::string signal_name(int signal_number) {
   }
 }
 
-ChildOutcome run_in_child(const std::function<std::string()>& check, const ChildLimits& limits) {
+ChildOutcome run_in_child(const ChildCheck& check, const ChildLimits& limits) {
   ChildOutcome outcome;
   int result_pipe[2];
   std::FILE* output = std::tmpfile();

@@ -14,8 +14,8 @@ struct ChildLimits {
 
 struct ChildOutcome {
   enum Kind {
-    kAgreed,       // the check returned ""
-    kDiffered,     // the check returned what differs (in `text`)
+    kAgreed,       // the check returned true (its payload in `text`)
+    kDiffered,     // the check returned false (its payload, what differs, in `text`)
     kCrashed,      // killed by a signal (`signal_name`, e.g. "SIGSEGV")
     kTimedOut,     // still running after ChildLimits::seconds
     kOutOfMemory,  // an allocation failed under ChildLimits::memory_bytes
@@ -29,10 +29,12 @@ struct ChildOutcome {
   std::string output_tail;  // the last line the child wrote to stdout or stderr, if any
 };
 
-// Runs `check` in a child with those limits. `check` returns "" when the student's function
-// agrees with the reference, else what differs. The child's stdout and stderr go to a temporary
-// file (at most 16 MiB), not to the checker's terminal.
-ChildOutcome run_in_child(const std::function<std::string()>& check, const ChildLimits& limits);
+// Runs `check` in a child with those limits. `check` returns true when the student's function
+// agrees with the reference and sets `payload` to what the parent should know (what differs,
+// notes), which comes back in ChildOutcome::text. The child's stdout and stderr go to a
+// temporary file (at most 16 MiB), not to the checker's terminal.
+using ChildCheck = std::function<bool(std::string& payload)>;
+ChildOutcome run_in_child(const ChildCheck& check, const ChildLimits& limits);
 
 // "SIGSEGV" for SIGSEGV, and so on; "signal N" for one without a name.
 std::string signal_name(int signal_number);

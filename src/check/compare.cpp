@@ -25,6 +25,19 @@ int digits_to_show(double magnitude, double difference) {
   return std::clamp(digits, 6, 17);
 }
 
+template <typename Matrix>
+std::string explain_incidence(const std::string& difference, const Matrix& A,
+                              const Matrix& expected) {
+  if (difference.empty()) return difference;
+  if (A.rows() != expected.rows() || A.cols() != expected.cols()) return difference;
+  if (is_exact_negative(A, expected))
+    return difference +
+           ": A is exactly the negative of the handout's, a consistent opposite orientation; the "
+           "handout's row e holds +1 at column E(e,0) and -1 at column E(e,1), the orientation of "
+           "the step's d_e = r_e (p_i − p_j)/‖p_i − p_j‖ for E(e,:) = [i j]";
+  return difference + " (row e holds +1 at column E(e,0) and -1 at column E(e,1))";
+}
+
 std::string off_by(double worst, Eigen::Index others, double tolerance) {
   std::string text = ": off by " + number(worst, 3) + ", tolerance " + number(tolerance, 3);
   if (others > 0)
@@ -148,4 +161,29 @@ std::string check_sparse_storage(const std::string& name, const Eigen::SparseMat
     return name + " stores " + std::to_string(got.nonZeros()) + " entries, expected " +
            std::to_string(nonzeros) + " (" + count_words + ")";
   return "";
+}
+
+bool is_exact_negative(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected) {
+  return got.rows() == expected.rows() && got.cols() == expected.cols() && expected.size() > 0 &&
+         !expected.isZero(0.0) && got == -expected;
+}
+
+bool is_exact_negative(const Eigen::SparseMatrix<double>& got,
+                       const Eigen::SparseMatrix<double>& expected) {
+  if (got.rows() != expected.rows() || got.cols() != expected.cols()) return false;
+  if (expected.nonZeros() == 0) return false;
+  Eigen::SparseMatrix<double> sum = got + expected;
+  sum.prune(0.0, 0.0);
+  return sum.nonZeros() == 0;
+}
+
+std::string incidence_difference(const std::string& difference, const Eigen::MatrixXd& A,
+                                 const Eigen::MatrixXd& expected) {
+  return explain_incidence(difference, A, expected);
+}
+
+std::string incidence_difference(const std::string& difference,
+                                 const Eigen::SparseMatrix<double>& A,
+                                 const Eigen::SparseMatrix<double>& expected) {
+  return explain_incidence(difference, A, expected);
 }

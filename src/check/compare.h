@@ -33,6 +33,21 @@ std::string compare_sparse(const std::string& name, const std::string& shape,
 std::string check_sparse_storage(const std::string& name, const Eigen::SparseMatrix<double>& got,
                                  Eigen::Index nonzeros, const std::string& count_words);
 
+// Whether `got` is exactly −`expected` (same shape, not all zero): an incidence matrix of the
+// opposite orientation.
+bool is_exact_negative(const Eigen::MatrixXd& got, const Eigen::MatrixXd& expected);
+bool is_exact_negative(const Eigen::SparseMatrix<double>& got,
+                       const Eigen::SparseMatrix<double>& expected);
+
+// The FAIL text of an incidence matrix A (#E by #V) that differs, `difference` from
+// compare_dense or compare_sparse, with the rule it breaks, or that it is exactly the negative of
+// the handout's. "" stays "".
+std::string incidence_difference(const std::string& difference, const Eigen::MatrixXd& A,
+                                 const Eigen::MatrixXd& expected);
+std::string incidence_difference(const std::string& difference,
+                                 const Eigen::SparseMatrix<double>& A,
+                                 const Eigen::SparseMatrix<double>& expected);
+
 // A number as a FAIL line prints it: 6 significant digits unless told more.
 std::string number(double value, int digits = 6);
 

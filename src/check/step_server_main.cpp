@@ -1,7 +1,12 @@
-// The step server: a student's fast_mass_springs_step_sparse, with Wobble's reference for every
-// other function (the precomputation included, so only the step is the student's), serving
-// steps over stdin and stdout in the messages of step_protocol.h. Built by
+// The step server: a student's fast_mass_springs_step_sparse, called as the course calls it
+// (course_call.h: Unext comes in equal to Ucur), with Wobble's reference for every other
+// function (the precomputation included, so only the step is the student's), serving steps
+// over stdin and stdout in the messages of step_protocol.h. Built by
 // scripts/check-assignment.sh --build-step-server DIR; driven by wobble::StudentStep.
+//
+// The prefactorization holds the pins with the weight the student's step uses, found once on
+// the checker's probe (pin_weight.h) when it is an acceptable one, so a step written with
+// another large w holds its pins in the viewer as in the course's program.
 //
 // Whatever the student's step prints goes to stderr: stdout carries only the protocol. The
 // server limits its own address space (2 GiB, or WOBBLE_STEP_SERVER_MEMORY_MIB), so a dense
@@ -16,8 +21,9 @@
 #include <new>
 #include <string>
 
+#include "course_call.h"
 #include "fast_mass_springs_precomputation_sparse.h"
-#include "fast_mass_springs_step_sparse.h"
+#include "pin_weight.h"
 #include "step_protocol.h"
 
 namespace {
@@ -67,6 +73,33 @@ bool reply(const char (&magic)[4], std::int32_t status, std::int32_t rows, std::
 bool read_rows(RowMatrix& matrix, Eigen::Index rows, Eigen::Index cols) {
   matrix.resize(rows, cols);
   return read_all(matrix.data(), sizeof(double) * matrix.size());
+}
+
+// The pin weight the student's step uses, on the checker's probe: a vertex in no spring pinned
+// away from the origin, at rest with no force; the handout's weight when it is not acceptable.
+double student_pin_weight() {
+  Eigen::MatrixXd V(3, 3);
+  V << 0.25, 1.5, -0.5, 0.75, 2.0, -0.5, 1.25, 1.5, -0.5;
+  Eigen::MatrixXi E(1, 2);
+  E << 0, 1;
+  const Eigen::Vector3d m(1.0, 0.5, 2.0);
+  const Eigen::VectorXi b = Eigen::VectorXi::Constant(1, 2);
+  const double k = 80, delta_t = 0.01;
+  Eigen::VectorXd r;
+  Eigen::SparseMatrix<double> M, A, C;
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor;
+  if (!fast_mass_springs_precomputation_sparse(V, E, k, m, b, delta_t, r, M, A, C, factor))
+    return kHandoutPinWeight;
+  Eigen::MatrixXd Unext = V;
+  try {
+    course_call_fast_mass_springs_step_sparse(V, E, k, b, delta_t, Eigen::MatrixXd::Zero(3, 3), r,
+                                              M, A, C, factor, V, V, Unext);
+  } catch (const std::exception&) {
+    return kHandoutPinWeight;  // the first real step says what is wrong
+  }
+  if (Unext.rows() != 3 || Unext.cols() != 3) return kHandoutPinWeight;
+  const double w = step_pin_weight(V.row(2), Unext.row(2), m(2), delta_t, kHandoutPinWeight);
+  return acceptable_pin_weight(w) ? w : kHandoutPinWeight;
 }
 
 bool valid_indices(const RowIndices& indices, int vertex_count) {
@@ -121,6 +154,7 @@ int main() {
   if (!reply(step_protocol::kReady, step_protocol::kOk, 0, 0)) return 1;
 
   RowMatrix fext_rows, Uprev_rows, Ucur_rows;
+  bool weighed = false;
   while (read_all(&header, sizeof header) &&
          std::memcmp(header.magic, step_protocol::kStep, 4) == 0) {
     if (header.a != n) {
@@ -129,11 +163,25 @@ int main() {
     }
     if (!read_rows(fext_rows, n, 3) || !read_rows(Uprev_rows, n, 3) || !read_rows(Ucur_rows, n, 3))
       return 1;
-    Eigen::MatrixXd Unext;
+    // Before the first step: the reference's precomputation holds the pins with the handout's
+    // weight; refactor with the student's step's when that is another. Done here rather than
+    // in the precomputation, so a step that crashes or hangs does so in step 1, as the viewer
+    // says.
+    if (!weighed) {
+      weighed = true;
+      const double weight = student_pin_weight();
+      if (weight != kHandoutPinWeight) {
+        // Q0 + w CᵀC is positive definite for any acceptable w, as the handout's Q is.
+        const Eigen::SparseMatrix<double> CtC = C.transpose() * C;
+        factor.compute(quadratic_without_pins(k, delta_t, M, A) + weight * CtC);
+      }
+    }
+    const Eigen::MatrixXd Ucur = Ucur_rows;
+    Eigen::MatrixXd Unext = Ucur;
     std::string error;
     try {
-      fast_mass_springs_step_sparse(V, E, k, b, delta_t, fext_rows, r, M, A, C, factor, Uprev_rows,
-                                    Ucur_rows, Unext);
+      course_call_fast_mass_springs_step_sparse(V, E, k, b, delta_t, fext_rows, r, M, A, C, factor,
+                                                Uprev_rows, Ucur, Unext);
     } catch (const std::bad_alloc&) {
       error = "ran out of memory (more than " + std::to_string(memory_mib) + " MiB)";
     } catch (const std::exception& exception) {

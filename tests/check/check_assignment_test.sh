@@ -48,6 +48,24 @@ submission() {
   [ "${1:-}" = no-headers ] || cp "$seed"/*.h "$dir/submission/"
 }
 
+# A submission laid out as the course's template (tests/check/course_template): its include/
+# headers, and in src/ each file's includes from the template followed by the seed's function.
+# With "template" instead, the template's stubs as they are.
+template="$root/tests/check/course_template"
+course_submission() {
+  mkdir -p "$dir/submission"
+  cp -r "$template/include" "$template/src" "$dir/submission/"
+  [ "${1:-}" = template ] && return 0
+  python3 - "$template/src" "$seed" "$dir/submission/src" <<'PYTHON'
+import os, sys
+template, seed, out = sys.argv[1:]
+for name in sorted(os.listdir(template)):
+    includes = [l for l in open(os.path.join(template, name)) if l.startswith("#include")]
+    body = [l for l in open(os.path.join(seed, name)) if not l.startswith("#include")]
+    open(os.path.join(out, name), "w").write("".join(includes) + "".join(body))
+PYTHON
+}
+
 # plant FILE OLD NEW: replace the one occurrence of OLD in the submission's FILE by NEW.
 plant() {
   python3 - "$dir/submission/$1" "$2" "$3" <<'PYTHON'
@@ -66,12 +84,15 @@ functions=(signed_incidence_matrix_dense signed_incidence_matrix_sparse
 
 # expect_failures NAME=PHRASE|PHRASE... : exactly the named functions fail, each line holding
 # every |-separated phrase; every other function passes, in the assignment's order; exit 1.
+# Note lines (indented) are not verdicts and are left out.
 expect_failures() {
   local -A wanted=()
   local entry
   for entry in "$@"; do wanted[${entry%%=*}]=${entry#*=}; done
   expect_status 1
-  [ "$(echo "$out" | wc -l)" = 6 ] || fail "expected 6 lines, got $(echo "$out" | wc -l)"
+  local verdicts
+  verdicts=$(echo "$out" | grep -v '^      note: ')
+  [ "$(echo "$verdicts" | wc -l)" = 6 ] || fail "expected 6 lines, got $(echo "$verdicts" | wc -l)"
   local index=0 line function phrase
   while IFS= read -r line; do
     function=${functions[$index]}
@@ -85,7 +106,7 @@ expect_failures() {
     else
       [ "$line" = "PASS  $function" ] || fail "expected $function to pass: $line"
     fi
-  done <<<"$out"
+  done <<<"$verdicts"
 }
 
 case "$scenario" in
@@ -125,7 +146,7 @@ case "$scenario" in
     submission
     plant fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration < 51'
     run_check "$dir/submission"
-    expect_failures "fast_mass_springs_step_sparse=Unext (step 1 of 4) vertex|on a stiff 10-vertex chain"
+    expect_failures "fast_mass_springs_step_sparse=Unext (step 1 of 4) vertex|on a stiff 10-vertex chain|; hint: it matches 51 local-global iterations from Ucur; the assignment's step runs a fixed 50"
     ;;
   PlantedDenseConversion)
     # Right values and no stored zeros (sparseView drops them): only the scale check sees it.
@@ -157,42 +178,194 @@ case "$scenario" in
     run_check "$dir/submission"
     expect_failures "fast_mass_springs_precomputation_sparse=M stores an explicit zero at (0,1)|on a 2-vertex spring E = [0 1], no pins"
     ;;
+  CourseTemplate)
+    # The course's template as handed out: it compiles with its libigl include and is graded,
+    # six FAIL lines, not refused.
+    course_submission template
+    run_check "$dir/submission"
+    expect_status 1
+    [ "$(echo "$out" | wc -l)" = 6 ] || fail "expected 6 lines"
+    [ "$(echo "$out" | grep -c '^FAIL  ')" = 6 ] || fail "expected six FAIL lines"
+    [ -z "$err" ] || fail "expected nothing on stderr"
+    ;;
+  CourseLayoutPasses)
+    # Wobble's functions in the template's layout, with its includes, debug prints through every
+    # form of igl::matlab_format a student uses, and Windows line endings in one file.
+    course_submission
+    plant src/fast_mass_springs_step_dense.cpp '  Unext = Ucur;' '  Unext = Ucur;
+  std::ostringstream debug;
+  debug << Ucur.format(igl::matlab_format()) << igl::matlab_format(Ucur, "Ucur")
+        << igl::matlab_format_index(E, "E") << igl::matlab_format(k, "k");
+  igl::matlab_format();'
+    plant src/fast_mass_springs_step_sparse.cpp '  Unext = Ucur;' '  Unext = Ucur;
+  const std::string debug = igl::matlab_format(A, "A") + igl::matlab_format(M);
+  igl::matlab_format();'
+    sed -i 's/$/\r/' "$dir/submission/src/signed_incidence_matrix_dense.cpp"
+    run_check "$dir/submission"
+    expect_status 0
+    [ "$out" = "$(printf 'PASS  %s\n' "${functions[@]}")" ] || fail "expected six PASS lines only"
+    ;;
+  OtherPinWeights)
+    # Any large weight used consistently passes: 1e7 in the dense pair, w/2 of 1e10 in the sparse
+    # pair, each with a note saying which weight was found.
+    course_submission
+    plant src/fast_mass_springs_precomputation_dense.cpp 'const double w = 1e10;' 'const double w = 1e7;'
+    plant src/fast_mass_springs_step_dense.cpp 'const double w = 1e10;' 'const double w = 1e7;'
+    plant src/fast_mass_springs_precomputation_sparse.cpp 'const double w = 1e10;' 'const double w = 1e10 / 2;'
+    plant src/fast_mass_springs_step_sparse.cpp 'const double w = 1e10;' 'const double w = 1e10 / 2;'
+    run_check "$dir/submission"
+    expect_status 0
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 6 ] || fail "expected six PASS lines"
+    for function in fast_mass_springs_precomputation_dense fast_mass_springs_step_dense; do
+      echo "$out" | grep -A1 "^PASS  $function\$" | grep -q "note: .*w = 1e7 " ||
+        fail "expected the weight 1e7 noted for $function"
+    done
+    for function in fast_mass_springs_precomputation_sparse fast_mass_springs_step_sparse; do
+      echo "$out" | grep -A1 "^PASS  $function\$" | grep -q "note: .*w = 5e9 " ||
+        fail "expected the weight 5e9 noted for $function"
+    done
+    ;;
+  InconsistentPinWeights)
+    # Weights that differ within a pair fail, on the function whose weight is not the handout's:
+    # the dense step (1e7 beside 1e10), the sparse precomputation (1e8 beside 1e10).
+    submission
+    plant fast_mass_springs_step_dense.cpp 'const double w = 1e10;' 'const double w = 1e7;'
+    plant fast_mass_springs_precomputation_sparse.cpp 'const double w = 1e10;' 'const double w = 1e8;'
+    run_check "$dir/submission"
+    expect_failures \
+      "fast_mass_springs_step_dense=its pins are held with w = 1e7, but fast_mass_springs_precomputation_dense holds them with w = 1e10|must use the same w" \
+      "fast_mass_springs_precomputation_sparse=its pins are held with w = 1e8, but fast_mass_springs_step_sparse holds them with w = 1e10"
+    ;;
+  UnextReadFirst)
+    # The course passes Unext equal to Ucur: a step that iterates from Unext without assigning it
+    # works in the course's program, so it passes, with a note.
+    course_submission
+    plant src/fast_mass_springs_step_dense.cpp '  Unext = Ucur;' ''
+    plant src/fast_mass_springs_step_sparse.cpp '  Unext = Ucur;' ''
+    run_check "$dir/submission"
+    expect_status 0
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 6 ] || fail "expected six PASS lines"
+    [ "$(echo "$out" | grep -c 'note: reads Unext before writing it')" = 2 ] ||
+      fail "expected the note on both steps"
+    ;;
+  CourseCallVariants)
+    # Signatures that compile at the course's call site: an extra defaulted argument (declared
+    # in the header, as the course's main.cpp sees it), a matrix taken by value, and a
+    # non-const reference to an input.
+    course_submission
+    plant include/fast_mass_springs_step_sparse.h '  Eigen::MatrixXd & Unext);' '  Eigen::MatrixXd & Unext,
+  const int iterations = 50);'
+    plant src/fast_mass_springs_step_sparse.cpp 'Eigen::MatrixXd& Unext) {' 'Eigen::MatrixXd& Unext,
+    const int iterations) {'
+    plant src/fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration < iterations'
+    plant include/fast_mass_springs_step_dense.h '  const Eigen::MatrixXd & V,' '  Eigen::MatrixXd V,'
+    plant src/fast_mass_springs_step_dense.cpp 'fast_mass_springs_step_dense(const Eigen::MatrixXd& V,' \
+      'fast_mass_springs_step_dense(Eigen::MatrixXd V,'
+    plant include/fast_mass_springs_precomputation_sparse.h '  const Eigen::VectorXi & b,' '  Eigen::VectorXi & b,'
+    plant src/fast_mass_springs_precomputation_sparse.cpp '    const Eigen::VectorXi& b,' '    Eigen::VectorXi& b,'
+    run_check "$dir/submission"
+    expect_status 0
+    [ "$out" = "$(printf 'PASS  %s\n' "${functions[@]}")" ] || fail "expected six PASS lines only"
+    ;;
+  UnsuppliedHeader)
+    # A libigl header the checker has no stand-in for is named on its function's line; the other
+    # functions are graded as usual.
+    course_submission
+    plant src/signed_incidence_matrix_sparse.cpp '#include <vector>' '#include <vector>
+#include <igl/cotmatrix.h>'
+    run_check "$dir/submission"
+    expect_status 1
+    echo "$out" | grep -q '^ERROR  signed_incidence_matrix_sparse: includes <igl/cotmatrix.h>, which the checker cannot supply (it supplies .*<igl/matlab_format.h>' ||
+      fail "expected the header named"
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 5 ] || fail "expected the other five to pass"
+    ;;
+  NegatedIncidence)
+    submission
+    plant signed_incidence_matrix_dense.cpp 'A(e, E(e, 0)) += 1.0;' 'A(e, E(e, 0)) -= 1.0;'
+    plant signed_incidence_matrix_dense.cpp 'A(e, E(e, 1)) -= 1.0;' 'A(e, E(e, 1)) += 1.0;'
+    run_check "$dir/submission"
+    expect_failures "signed_incidence_matrix_dense=A is exactly the negative of the handout's, a consistent opposite orientation"
+    ;;
+  ClassAtOnce)
+    # --class: a folder of three submissions (course layout and correct; flat with a planted
+    # bug; empty), graded in parallel into a CSV, a summary and one report each.
+    mkdir -p "$dir/class/carol"
+    course_submission
+    mv "$dir/submission" "$dir/class/alice"
+    submission
+    plant fast_mass_springs_step_dense.cpp 'iteration < 50' 'iteration < 51'
+    mv "$dir/submission" "$dir/class/bob"
+    run_check --jobs 2 --class "$dir/class" --output "$dir/grades"
+    expect_status 0
+    [[ "$err" == *"[3/3]"* ]] || fail "expected a progress line for each submission"
+    csv="$dir/grades/grades.csv"
+    [ "$(head -n 1 "$csv")" = "student,$(IFS=,; echo "${functions[*]}"),passed,notes,report" ] ||
+      fail "expected the CSV's header"
+    [ "$(wc -l <"$csv")" = 4 ] || fail "expected one row a student"
+    grep -qx '"alice",PASS,PASS,PASS,PASS,PASS,PASS,6,"","reports/alice.txt"' "$csv" ||
+      fail "expected alice to pass all six"
+    grep -q '^"bob",PASS,PASS,PASS,PASS,FAIL,PASS,5,' "$csv" || fail "expected bob's dense step to fail"
+    grep -q '^"carol",MISSING,MISSING,MISSING,MISSING,MISSING,MISSING,0,' "$csv" ||
+      fail "expected carol's six functions missing"
+    grep -q '^FAIL  fast_mass_springs_step_dense: .*hint: it matches 51 local-global iterations' \
+      "$dir/grades/reports/bob.txt" || fail "expected bob's report to say why"
+    summary="$dir/grades/summary.txt"
+    grep -q '^Graded 3 submissions in [0-9]* s, 2 at a time' "$summary" || fail "expected the count"
+    grep -q '^[0-9]* s compiling and linking, [0-9]* s checking' "$summary" ||
+      fail "expected the time split"
+    grep -Eq '^fast_mass_springs_step_dense +1 +1 +0 +1$' "$summary" || fail "expected the counts"
+    grep -Eq '^bob +P P P P F P +5/6$' "$summary" || fail "expected bob's row"
+    # A second run replaces the first's reports.
+    rm -rf "$dir/class/carol"
+    run_check --class "$dir/class" --output "$dir/grades"
+    expect_status 0
+    [ ! -e "$dir/grades/reports/carol.txt" ] || fail "expected the earlier run's report gone"
+    [ "$(wc -l <"$dir/grades/grades.csv")" = 3 ] || fail "expected two rows"
+    ;;
   MissingFolder)
     run_check "$dir/no-such-folder"
     expect_status 2
     [[ "$err" == *"no-such-folder: no such folder"* ]] || fail "expected the folder named"
     [ -z "$out" ] || fail "expected no PASS/FAIL lines"
     ;;
-  MissingFile)
+  NotAFolder)
+    touch "$dir/a-file"
+    run_check "$dir/a-file"
+    expect_status 2
+    [[ "$err" == *"a-file: not a folder"* ]] || fail "expected the path named"
+    [ -z "$out" ] || fail "expected no verdict lines"
+    ;;
+  EveryFunctionHasALine)
+    # A missing file, a compile error and a signature that is not the assignment's (with the
+    # header unchanged, so the course's call cannot reach it): each gets its own line, and the
+    # other three functions are still checked.
     submission
     rm "$dir/submission/fast_mass_springs_step_dense.cpp"
+    plant signed_incidence_matrix_dense.cpp 'A = Eigen::MatrixXd::Zero(E.rows(), n);' \
+      'A = Eigen::MatrixXd::Zero(E.rows(), n) + no_such_thing;'
+    # Would link against the reference's function from the archive and pass, if not refused.
+    plant fast_mass_springs_precomputation_sparse.cpp 'const double k,' 'const float k,'
     run_check "$dir/submission"
-    expect_status 2
-    [[ "$err" == *"missing fast_mass_springs_step_dense.cpp"* ]] || fail "expected the file named"
+    expect_status 1
+    [ "$(echo "$out" | wc -l)" = 6 ] || fail "expected 6 lines"
+    line_of() { echo "$out" | grep -F " $1" | head -n 1; }
+    [[ "$(line_of signed_incidence_matrix_dense)" == "ERROR  signed_incidence_matrix_dense: signed_incidence_matrix_dense.cpp:"*"error: "*"no_such_thing"*"not declared"* ]] ||
+      fail "expected the compiler's first error line, its path from the submission"
+    [ "$(line_of signed_incidence_matrix_sparse)" = "PASS  signed_incidence_matrix_sparse" ] ||
+      fail "expected the sparse incidence to pass"
+    [ "$(line_of fast_mass_springs_precomputation_dense)" = "PASS  fast_mass_springs_precomputation_dense" ] ||
+      fail "expected the dense precomputation to pass"
+    [[ "$(line_of fast_mass_springs_precomputation_sparse)" == "ERROR  fast_mass_springs_precomputation_sparse: the course calls fast_mass_springs_precomputation_sparse("*"double"*"but fast_mass_springs_precomputation_sparse.cpp defines fast_mass_springs_precomputation_sparse("*"float"* ]] ||
+      fail "expected the signature named"
+    [[ "$(line_of fast_mass_springs_step_dense)" == "MISSING  fast_mass_springs_step_dense: no fast_mass_springs_step_dense.cpp in "* ]] ||
+      fail "expected the file missing"
+    [ "$(line_of fast_mass_springs_step_sparse)" = "PASS  fast_mass_springs_step_sparse" ] ||
+      fail "expected the sparse step to pass"
+    [ -z "$err" ] || fail "expected nothing on stderr"
     rm "$dir/submission/fast_mass_springs_step_sparse.cpp"
     run_check --build-step-server "$dir/submission"
     expect_status 2
     [[ "$err" == *"missing fast_mass_springs_step_sparse.cpp"* ]] || fail "expected the file named"
-    ;;
-  CompileError)
-    submission
-    plant signed_incidence_matrix_dense.cpp 'A = Eigen::MatrixXd::Zero(E.rows(), n);' \
-      'A = Eigen::MatrixXd::Zero(E.rows(), n) + no_such_thing;'
-    run_check "$dir/submission"
-    expect_status 2
-    [[ "$err" == "check-assignment: cannot compile $dir/submission/signed_incidence_matrix_dense.cpp: "*"error: "*"no_such_thing"*"not declared"* ]] ||
-      fail "expected the compiler's first error line"
-    [ "$(echo "$err" | wc -l)" = 1 ] || fail "expected one line"
-    ;;
-  WrongSignature)
-    # Would link against the reference's function from the archive and pass, if not refused.
-    submission
-    plant fast_mass_springs_step_dense.cpp 'const double k, const Eigen::VectorXi& /*b*/' \
-      'const float k, const Eigen::VectorXi& /*b*/'
-    run_check "$dir/submission"
-    expect_status 2
-    [[ "$err" == *"fast_mass_springs_step_dense.cpp: fast_mass_springs_step_dense has another signature"*"float"* ]] ||
-      fail "expected the signature refused"
     ;;
   CrashAndHang)
     submission

@@ -1,0 +1,475 @@
+# Sourced by scripts/check-assignment.sh after its options are read (it sets root, cache,
+# time_limit, memory_mib, compile_limit, jobs, timing_file): compiles a submission and Wobble's
+# side, links one checker per function and runs them (check_submission), or builds the step
+# server of the viewer's --student view (build_step_server).
+
+seed="$root/src/sim/seed"
+check_sources="$root/src/check"
+course_headers="$check_sources/course_headers"
+course="$root/assets/course"
+# The checker's own sources; step_server_main.cpp is the other program's main and course_call.cpp
+# is compiled with each student file.
+checker_sources=(check_main check_scene check_incidence check_precomputation check_step compare
+                 course_problem child_process pin_weight step_hints course_call_unlinked)
+cxx=g++
+eigen=/usr/include/eigen3
+# Student files compile within these, so a file that includes /dev/zero or instantiates
+# templates without end stops with an ERROR instead of taking the machine.
+compile_memory_mib=4096
+
+check_toolchain() {
+  command -v "$cxx" >/dev/null || die "g++ not found (apt-get install g++)"
+  [ -f "$eigen/Eigen/Core" ] || die "Eigen not found in $eigen (apt-get install libeigen3-dev)"
+  [ -f /usr/include/nlohmann/json.hpp ] ||
+    die "nlohmann-json not found (apt-get install nlohmann-json3-dev)"
+  mkdir -p "$cache/obj" "$cache/lib" "$cache/bin" 2>/dev/null ||
+    die "$cache: cannot create the cache folder"
+  work=$(mktemp -d) || die "cannot create a temporary folder"
+  trap 'rm -rf "$work"' EXIT
+  # What a compiled object depends on besides its source and headers: the compiler, the
+  # versions of Eigen and nlohmann-json, and the checker's stand-ins for libigl's headers.
+  toolchain_id=$({
+    "$cxx" --version | head -n 1
+    cat "$eigen/Eigen/src/Core/util/Macros.h" /usr/include/nlohmann/json.hpp
+    find "$course_headers" -type f | LC_ALL=C sort | xargs cat
+  } | sha256sum | cut -c1-16)
+}
+
+# -O2: the checks and the scale check run in a second; Eigen's assertions stay on (no NDEBUG),
+# so an index out of range in a student's code stops with a message instead of corrupting
+# memory. -w: a student's warnings are not this script's business.
+flags=(-std=c++17 -O2 -w)
+renames=()
+for function in "${functions[@]}"; do renames+=("-D$function=reference_$function"); done
+
+# key_of SOURCE TAG INCLUDE_DIR...: the cache key of compiling SOURCE with the flags named by
+# TAG: a hash of the source, and of every header the include folders offer, each name taken
+# from the first folder that has it. Include paths are left out, so the same files compiled
+# from two folders (the seed as a student's submission) share one object.
+key_of() {
+  local source=$1 tag=$2
+  shift 2
+  local -A chosen=()
+  local dir header name
+  for dir in "$@"; do
+    for header in "$dir"/*.h "$dir"/*.hpp; do
+      [ -f "$header" ] || continue
+      name=${header##*/}
+      [ -n "${chosen[$name]:-}" ] || chosen[$name]=$header
+    done
+  done
+  {
+    printf '%s\n%s\n' "$toolchain_id" "$tag"
+    cat "$source"
+    while IFS= read -r name; do
+      printf '\n--- %s\n' "$name"
+      cat "${chosen[$name]}"
+    done < <(printf '%s\n' "${!chosen[@]}" | LC_ALL=C sort)
+  } | sha256sum | cut -c1-32
+}
+
+# start_job OUTPUT LOG COMMAND...: run COMMAND -o OUTPUT in the background, at most $jobs at
+# once, unless OUTPUT is already cached. The result is renamed into place only when complete,
+# so runs sharing a cache (tests in parallel, a class) never see half a file.
+running=0
+start_job() {
+  local target=$1 log=$2
+  shift 2
+  [ -f "$target" ] && return 0
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n
+    running=$((running - 1))
+  fi
+  (
+    temporary="$target.tmp.$BASHPID"
+    if "$@" -o "$temporary" >"$log" 2>&1; then mv -f "$temporary" "$target"; else rm -f "$temporary"; fi
+  ) &
+  running=$((running + 1))
+}
+finish_jobs() {
+  wait
+  running=0
+}
+
+# bounded COMMAND...: COMMAND within the compile limits (a student's file is untrusted input).
+bounded() {
+  ulimit -v $((compile_memory_mib * 1024)) 2>/dev/null
+  timeout --kill-after=5 "$compile_limit" "$@"
+  local status=$?
+  [ "$status" != 124 ] || echo "wobble-check: the compiler ran past $compile_limit s" >&2
+  return "$status"
+}
+
+# compile NAME SOURCE TAG INCLUDE_DIR... -- EXTRA_FLAG...: compile what is not cached yet.
+declare -A object
+compile() {
+  local name=$1 source=$2 tag=$3
+  shift 3
+  local dirs=()
+  while [ "$1" != "--" ]; do dirs+=("$1"); shift; done
+  shift
+  local key
+  key=$(key_of "$source" "$tag ${flags[*]} $*" "${dirs[@]}")
+  object[$name]="$cache/obj/$key.o"
+  local includes=()
+  for dir in "${dirs[@]}"; do includes+=(-I "$dir"); done
+  local runner=()
+  [[ "$name" == student.* ]] && runner=(bounded)
+  start_job "${object[$name]}" "$work/$name.log" \
+    "${runner[@]}" "$cxx" "${flags[@]}" "$@" "${includes[@]}" -I "$eigen" -c "$source"
+}
+
+first_error() {
+  grep -m 1 -E 'undefined reference|multiple definition|(fatal )?error|wobble-check:' "$1" ||
+    head -n 1 "$1"
+}
+
+# The headers the checker supplies in place of the course's libigl, as a student would write
+# them: <igl/matlab_format.h>, ...
+supplied_headers() {
+  (cd "$course_headers" && find . -type f -name '*.h' | sed 's|^\./||' | LC_ALL=C sort |
+    sed 's/.*/<&>/' | paste -sd ' ')
+}
+
+# compile_error FUNCTION LOG FOLDER: the ERROR text of a file that did not compile: a header
+# the checker cannot supply, by name; else the compiler's first error line, its paths written
+# from the submission's folder.
+compile_error() {
+  local function=$1 log=$2 folder=$3
+  local line
+  line=$(first_error "$log")
+  local header
+  header=$(printf '%s\n' "$line" | sed -n 's/.*fatal error: \(.*\): No such file or directory.*/\1/p')
+  if [ -n "$header" ]; then
+    echo "includes <$header>, which the checker cannot supply (it supplies $(supplied_headers) and the standard library and Eigen)"
+    return
+  fi
+  line=${line//"$folder/"/}
+  printable "$line"
+  echo
+}
+
+# The precompiled prelude (check_prelude.h) every student file starts with, in the cache by
+# content: its folder in $prelude_folder. A student file compiled before it is ready reads the
+# plain header instead, which gives the same object, only slower.
+start_prelude() {
+  local key
+  key=$(cat "$check_sources/check_prelude.h" | { cat; printf '%s\n' "$toolchain_id" "${flags[*]}"; } |
+        sha256sum | cut -c1-32)
+  prelude_folder="$cache/prelude/$key"
+  mkdir -p "$prelude_folder" || die "$prelude_folder: cannot create the folder"
+  if [ ! -f "$prelude_folder/check_prelude.h" ]; then
+    cp "$check_sources/check_prelude.h" "$prelude_folder/check_prelude.h.tmp.$$" &&
+      mv -f "$prelude_folder/check_prelude.h.tmp.$$" "$prelude_folder/check_prelude.h" ||
+      die "cannot write $prelude_folder"
+  fi
+  start_job "$prelude_folder/check_prelude.h.gch" "$work/prelude.log" \
+    "$cxx" "${flags[@]}" -I "$eigen" -x c++-header "$prelude_folder/check_prelude.h"
+}
+
+# Wobble's side: its six functions plain (into an archive the linker takes what it lacks from)
+# and renamed (the oracle), and the checker's own objects. Compiled once, then cached.
+compile_wobble_side() {
+  local function source
+  start_prelude
+  for function in "${functions[@]}"; do
+    compile "plain.$function" "$seed/$function.cpp" plain "$seed" --
+    compile "renamed.$function" "$seed/$function.cpp" renamed "$seed" -- "${renames[@]}"
+  done
+  for source in "${checker_sources[@]}"; do
+    compile "checker.$source" "$check_sources/$source.cpp" checker "$check_sources" "$seed" --
+  done
+  compile server "$check_sources/step_server_main.cpp" checker "$check_sources" "$seed" --
+}
+
+# compile_student FUNCTION SOURCE FOLDER: the student's file for FUNCTION with the course's call
+# site of it (course_call.cpp) appended, one translation unit, so Eigen is parsed once; the
+# submission's include folders first. Eigen comes in before the student's file (the precompiled
+# check_prelude.h, then course_call.h), so a macro of theirs cannot break it. The file is included through a link in a folder of its
+# own, and its name put back in the compiler's messages.
+compile_student() {
+  local function=$1 source=$2 folder=$3
+  local dirs=()
+  mapfile -t dirs < <(include_folders "$source" "$folder")
+  local unity="$work/unity.$function"
+  mkdir -p "$unity"
+  ln -sf "$(cd "$(dirname "$source")" && pwd)/$(basename "$source")" "$unity/submitted.cpp"
+  ln -sf "$check_sources/course_call.cpp" "$check_sources/course_call.h" "$unity/"
+  ln -sf "$prelude_folder/check_prelude.h" "$prelude_folder/check_prelude.h.gch" "$unity/"
+  printf '#include "%s"\n' check_prelude.h course_call.h submitted.cpp >"$unity/$function.cpp"
+  printf '#define WOBBLE_COURSE_CALL_%s\n#include "course_call.cpp"\n' "$function" >>"$unity/$function.cpp"
+  local contents
+  contents=$(cat "$source" "$check_sources/course_call.cpp" "$check_sources/course_call.h" \
+               "$check_sources/check_prelude.h" | sha256sum | cut -c1-32)
+  compile "student.$function" "$unity/$function.cpp" "unity $function $contents" \
+    "${dirs[@]}" "$course_headers" "$seed" --
+  header_used[$function]=$(
+    for dir in "${dirs[@]}" "$seed"; do
+      [ -f "$dir/$function.h" ] && { printf '%s\n' "$dir/$function.h"; break; }
+    done
+  )
+}
+
+# student_compile_error FUNCTION FOLDER: the ERROR text of a student's file that did not compile
+# with its course call: the call's own error says which header's signature it could not use.
+student_compile_error() {
+  local function=$1 folder=$2
+  local log="$work/student.$function.log"
+  local relative=${source_of[$function]#"$folder/"}
+  local text
+  text=$(compile_error "$function" "$log" "$folder")
+  text=${text//"$work/unity.$function/submitted.cpp"/"$relative"}
+  if [[ "$(first_error "$log")" == *course_call.cpp:* ]]; then
+    local header=${header_used[$function]#"$folder/"}
+    header=${header/#"$seed/"/"Wobble's src/sim/seed/"}
+    text="the course's call of $function does not compile with the signature in $header: ${text#*error: }"
+  fi
+  printable "$text"
+}
+
+# call_error FUNCTION FOLDER: "" when the student's object defines every FUNCTION(...) its
+# course call site needs, else the ERROR text. Without this the linker would quietly take the
+# reference's function from the archive, and the check would pass.
+call_error() {
+  local function=$1 folder=$2
+  local prefix="_Z${#function}${function}"
+  local missing
+  # The call and the file are one object: whatever it needs of FUNCTION and does not define
+  # itself, the file did not define.
+  missing=$(nm -u "${object[student.$function]}" | awk '{ print $2 }' | grep -m 1 "^$prefix")
+  [ -n "$missing" ] || return 0
+  local header=${header_used[$function]#"$folder/"}
+  header=${header/#"$seed/"/"Wobble's src/sim/seed/"}
+  local has
+  has=$(nm -C --defined-only "${object[student.$function]}" | grep -F " $function(" |
+        cut -d' ' -f3- | head -n 1)
+  local text="the course calls $(printf '%s' "$missing" | c++filt) as declared in $header"
+  if [ -n "$has" ]; then
+    text+=", but ${source_of[$function]//"$folder/"/} defines $has: give the header and the file the same signature"
+  else
+    text+=", but ${source_of[$function]//"$folder/"/} does not define $function"
+  fi
+  printable "$text"
+}
+
+link_key() {
+  printf '%s\n' "$@" | sha256sum | cut -c1-32
+}
+
+# archive NAME OBJECT...: an archive of the objects, by content, and its path in $archive_path.
+make_archive() {
+  local objects=("$@")
+  archive_path="$cache/lib/$(printf '%s\n' "${objects[@]}" | sha256sum | cut -c1-32).a"
+  [ -f "$archive_path" ] && return 0
+  ar rcs "$archive_path.tmp.$$" "${objects[@]}" && mv -f "$archive_path.tmp.$$" "$archive_path" ||
+    die "cannot write $archive_path"
+}
+
+now() {
+  date +%s.%N
+}
+
+# check_submission FOLDER: every function's verdict, in the assignment's order.
+check_submission() {
+  local folder=$1
+  local started compiled checked
+  started=$(now)
+  declare -gA verdict=() detail=() source_of=() header_used=()
+  local function source
+  for function in "${functions[@]}"; do
+    source=$(function_source "$folder" "$function")
+    if [ -z "$source" ]; then
+      verdict[$function]=MISSING
+      detail[$function]="no $function.cpp in $(printable "$folder") (looked in it, in src/ and below)"
+      continue
+    fi
+    source_of[$function]=$source
+  done
+
+  compile_wobble_side
+  for function in "${!source_of[@]}"; do
+    compile_student "$function" "${source_of[$function]}" "$folder"
+  done
+  finish_jobs
+
+  local name
+  for name in "${!object[@]}"; do
+    case "$name" in
+      student.*) ;;
+      *)
+        [ -f "${object[$name]}" ] ||
+          die "cannot compile Wobble's own ${name#*.}.cpp: $(first_error "$work/$name.log")"
+        ;;
+    esac
+  done
+  local student_objects=()
+  for function in "${!source_of[@]}"; do
+    if [ ! -f "${object[student.$function]}" ]; then
+      verdict[$function]=ERROR
+      detail[$function]=$(student_compile_error "$function" "$folder")
+    else
+      student_objects+=("${object[student.$function]}")
+      local problem
+      problem=$(call_error "$function" "$folder")
+      if [ -n "$problem" ]; then
+        verdict[$function]=ERROR
+        detail[$function]=$problem
+      fi
+    fi
+  done
+
+  # Wobble's plain functions in an archive: the linker takes from it only what a program still
+  # lacks, so the student's function wins and everything it calls is the reference's. The
+  # student's other objects come last, for a call to another of their functions whose own
+  # header changed its signature (the reference's cannot answer it).
+  local plain_objects=()
+  for function in "${functions[@]}"; do plain_objects+=("${object[plain.$function]}"); done
+  make_archive "${plain_objects[@]}"
+  local plain_archive=$archive_path student_archive=()
+  if [ ${#student_objects[@]} -gt 0 ]; then
+    student_archive=("$work/student.a")
+    ar rcs "${student_archive[0]}" "${student_objects[@]}" || die "cannot write ${student_archive[0]}"
+  fi
+  local checker_objects=() renamed_objects=()
+  for source in "${checker_sources[@]}"; do checker_objects+=("${object[checker.$source]}"); done
+  for function in "${functions[@]}"; do renamed_objects+=("${object[renamed.$function]}"); done
+  declare -A checker=()
+  local inputs
+  for function in "${!source_of[@]}"; do
+    [ -z "${verdict[$function]:-}" ] || continue
+    inputs=("${checker_objects[@]}" "${object[student.$function]}" "${renamed_objects[@]}"
+            "$plain_archive" "${student_archive[@]}")
+    # Linked for this run only: a link takes a fraction of a second, and a class's checkers
+    # would fill the cache.
+    checker[$function]="$work/check-$function"
+    start_job "${checker[$function]}" "$work/link.$function.log" "$cxx" "${inputs[@]}"
+  done
+  finish_jobs
+  for function in "${!checker[@]}"; do
+    if [ ! -f "${checker[$function]}" ]; then
+      verdict[$function]=ERROR
+      detail[$function]="cannot link its checker: $(compile_error "$function" "$work/link.$function.log" "$folder")"
+      unset "checker[$function]"
+    fi
+  done
+  compiled=$(now)
+
+  # Run the checkers, $jobs at once.
+  for function in "${functions[@]}"; do
+    [ -n "${checker[$function]:-}" ] || continue
+    if [ "$running" -ge "$jobs" ]; then
+      wait -n
+      running=$((running - 1))
+    fi
+    (
+      "${checker[$function]}" --function "$function" --course-dir "$course" \
+        --time-limit "$time_limit" --memory-limit "$memory_mib" --facts "$work/$function.facts" \
+        >"$work/$function.out" 2>"$work/$function.err"
+      echo $? >"$work/$function.status"
+    ) &
+    running=$((running + 1))
+  done
+  finish_jobs
+  checked=$(now)
+
+  local code
+  for function in "${!checker[@]}"; do
+    code=$(cat "$work/$function.status" 2>/dev/null || echo missing)
+    case "$code" in
+      0 | 1) verdict[$function]=checked ;;
+      *) die "the checker of $function could not run (status $code): $(head -n 1 "$work/$function.err")" ;;
+    esac
+  done
+  weigh_pairs fast_mass_springs_precomputation_dense fast_mass_springs_step_dense
+  weigh_pairs fast_mass_springs_precomputation_sparse fast_mass_springs_step_sparse
+
+  local status=0
+  for function in "${functions[@]}"; do
+    if [ "${verdict[$function]}" = checked ]; then
+      cat "$work/$function.out"
+      grep -q '^PASS ' "$work/$function.out" || status=1
+    else
+      printf '%s  %s: %s\n' "${verdict[$function]}" "$function" "${detail[$function]}"
+      status=1
+    fi
+  done
+  if [ -n "$timing_file" ]; then
+    awk -v a="$started" -v b="$compiled" -v c="$checked" \
+      'BEGIN { printf "compile %.2f\ncheck %.2f\n", b - a, c - b }' >"$timing_file"
+  fi
+  return "$status"
+}
+
+# pin_weight FUNCTION: the weight its checker found (facts), or nothing.
+pin_weight() {
+  awk '$1 == "pin_weight" && $2 != "nan" { print $2 }' "$work/$1.facts" 2>/dev/null
+}
+
+# weigh_pairs PRECOMPUTATION STEP: both pass but hold the pins with different weights: the
+# pinned vertices move in the course's program, so one of them fails: the one whose weight is
+# not the handout's, else the step.
+weigh_pairs() {
+  local precomputation=$1 step=$2
+  [ "${verdict[$precomputation]}" = checked ] && [ "${verdict[$step]}" = checked ] || return 0
+  grep -q '^PASS ' "$work/$precomputation.out" && grep -q '^PASS ' "$work/$step.out" || return 0
+  local w_precomputation w_step
+  w_precomputation=$(pin_weight "$precomputation")
+  w_step=$(pin_weight "$step")
+  [ -n "$w_precomputation" ] && [ -n "$w_step" ] || return 0
+  awk -v a="$w_precomputation" -v b="$w_step" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d > 1e-6 * a) }' ||
+    return 0
+  local blamed=$step other=$precomputation
+  if awk -v w="$w_step" 'BEGIN { d = w - 1e10; if (d < 0) d = -d; exit !(d <= 1e-6 * 1e10) }'; then
+    blamed=$precomputation other=$step
+  fi
+  local text
+  text="FAIL  $blamed: its pins are held with w = $(weight_text "$(pin_weight "$blamed")"), but $other holds them with w = $(weight_text "$(pin_weight "$other")"): a precomputation and its step must use the same w (Q's w CᵀC and y's w CᵀC V), or every pinned vertex drifts"
+  { echo "$text"; grep -v '^PASS ' "$work/$blamed.out"; } >"$work/$blamed.out.new"
+  mv -f "$work/$blamed.out.new" "$work/$blamed.out"
+}
+
+# weight_text W: 1e10, 5e9, 2.5e7 (as the checker writes them).
+weight_text() {
+  printf '%.4g' "$1" | sed -E 's/e\+?(-?)0*([0-9])/e\1\2/'
+}
+
+# build_step_server FOLDER OUTPUT: the step server of the submission's sparse step; its path on
+# stdout, or exit 2 with the reason.
+build_step_server() {
+  local folder=$1 output=$2
+  local function=fast_mass_springs_step_sparse
+  declare -gA source_of=() header_used=()
+  source_of[$function]=$(function_source "$folder" "$function")
+  [ -n "${source_of[$function]}" ] ||
+    die "$folder: missing $function.cpp (looked in it, in src/ and below)"
+  compile_wobble_side
+  compile_student "$function" "${source_of[$function]}" "$folder"
+  finish_jobs
+  local name
+  for name in "${!object[@]}"; do
+    [[ "$name" == student.* ]] && continue
+    [ -f "${object[$name]}" ] ||
+      die "cannot compile Wobble's own ${name#*.}.cpp: $(first_error "$work/$name.log")"
+  done
+  [ -f "${object[student.$function]}" ] ||
+    die "cannot compile ${source_of[$function]}: $(student_compile_error "$function" "$folder")"
+  local problem
+  problem=$(call_error "$function" "$folder")
+  [ -z "$problem" ] || die "$folder: $problem"
+
+  local plain_objects=()
+  for name in "${functions[@]}"; do plain_objects+=("${object[plain.$name]}"); done
+  make_archive "${plain_objects[@]}"
+  local inputs=("${object[server]}" "${object[checker.pin_weight]}" "${object[student.$function]}"
+                "$archive_path")
+  local server
+  server="$cache/bin/step-server-$(link_key "${inputs[@]}")"
+  start_job "$server" "$work/link.log" "$cxx" "${inputs[@]}"
+  finish_jobs
+  [ -f "$server" ] || die "cannot link the step server: $(first_error "$work/link.log")"
+  if [ -n "$output" ]; then
+    cp "$server" "$output.tmp.$$" && mv -f "$output.tmp.$$" "$output" || die "cannot write $output"
+    server=$output
+  fi
+  echo "$server"
+}
