@@ -25,7 +25,12 @@ check_toolchain() {
   mkdir -p "$cache/obj" "$cache/lib" "$cache/bin" 2>/dev/null ||
     die "$cache: cannot create the cache folder"
   work=$(mktemp -d) || die "cannot create a temporary folder"
-  trap 'rm -rf "$work"' EXIT
+  # WOBBLE_CHECK_KEEP=1 keeps it (the linked checkers, the compilers' logs) and says where.
+  if [ "${WOBBLE_CHECK_KEEP:-0}" = 1 ]; then
+    echo "check-assignment: keeping $work" >&2
+  else
+    trap 'rm -rf "$work"' EXIT
+  fi
   # What a compiled object depends on besides its source and headers: the compiler, the
   # versions of Eigen and nlohmann-json, and the checker's stand-ins for libigl's headers.
   toolchain_id=$({
@@ -245,9 +250,9 @@ call_error() {
         cut -d' ' -f3- | head -n 1)
   local text="the course calls $(printf '%s' "$missing" | c++filt) as declared in $header"
   if [ -n "$has" ]; then
-    text+=", but ${source_of[$function]//"$folder/"/} defines $has: give the header and the file the same signature"
+    text+=", but ${source_of[$function]#"$folder/"} defines $has: give the header and the file the same signature"
   else
-    text+=", but ${source_of[$function]//"$folder/"/} does not define $function"
+    text+=", but ${source_of[$function]#"$folder/"} does not define $function"
   fi
   printable "$text"
 }
@@ -256,7 +261,8 @@ link_key() {
   printf '%s\n' "$@" | sha256sum | cut -c1-32
 }
 
-# archive NAME OBJECT...: an archive of the objects, by content, and its path in $archive_path.
+# make_archive OBJECT...: an archive of the objects in the cache, named by their paths (which
+# name their contents); its path in $archive_path.
 make_archive() {
   local objects=("$@")
   archive_path="$cache/lib/$(printf '%s\n' "${objects[@]}" | sha256sum | cut -c1-32).a"

@@ -32,18 +32,17 @@
 
 const std::vector<CheckedFunction>& checked_functions() {
   static const std::vector<CheckedFunction> functions = {
-      {"signed_incidence_matrix_dense", check_signed_incidence_matrix_dense, false, nullptr,
-       nullptr},
-      {"signed_incidence_matrix_sparse", check_signed_incidence_matrix_sparse, true, nullptr,
-       nullptr},
-      {"fast_mass_springs_precomputation_dense", check_fast_mass_springs_precomputation_dense,
-       false, nullptr, nullptr},
+      {"signed_incidence_matrix_dense", check_signed_incidence_matrix_dense, 0, nullptr, nullptr},
+      {"signed_incidence_matrix_sparse", check_signed_incidence_matrix_sparse, kLargeChainVertices,
+       nullptr, nullptr},
+      {"fast_mass_springs_precomputation_dense", check_fast_mass_springs_precomputation_dense, 0,
+       nullptr, nullptr},
       {"fast_mass_springs_precomputation_sparse", check_fast_mass_springs_precomputation_sparse,
-       true, nullptr, nullptr},
-      {"fast_mass_springs_step_dense", check_fast_mass_springs_step_dense, false,
+       kLargeChainVertices, nullptr, nullptr},
+      {"fast_mass_springs_step_dense", check_fast_mass_springs_step_dense, 0,
        probe_step_dense_pin_weight, probe_step_dense_reads_unext},
-      {"fast_mass_springs_step_sparse", check_fast_mass_springs_step_sparse, true,
-       probe_step_sparse_pin_weight, probe_step_sparse_reads_unext},
+      {"fast_mass_springs_step_sparse", check_fast_mass_springs_step_sparse,
+       kLargeStepChainVertices, probe_step_sparse_pin_weight, probe_step_sparse_reads_unext},
   };
   return functions;
 }
@@ -55,7 +54,7 @@ struct Options {
   std::string course_folder;
   std::string facts_file;
   ChildLimits limits;
-  int large_vertices = 100000;
+  int large_vertices = 0;  // 0: the function's own (CheckedFunction::large_vertices)
 };
 
 [[noreturn]] void bad_usage(const std::string& message) {
@@ -274,7 +273,9 @@ int main(int argc, char** argv) {
   std::stable_sort(scenes.begin(), scenes.end(), [](const CheckScene& a, const CheckScene& b) {
     return a.V.rows() != b.V.rows() ? a.V.rows() < b.V.rows() : a.E.rows() < b.E.rows();
   });
-  if (found->sparse) scenes.push_back(large_chain(options.large_vertices));
+  if (found->large_vertices > 0)
+    scenes.push_back(
+        large_chain(options.large_vertices > 0 ? options.large_vertices : found->large_vertices));
 
   CheckContext context;
   std::vector<std::string> notes;

@@ -27,7 +27,8 @@ FactoredPinWeight fit_pin_weight(const Factor& factor, const Matrix& Q0, const M
 }  // namespace
 
 bool acceptable_pin_weight(double w) {
-  return w >= kLightestPinWeight && w <= kHeaviestPinWeight;
+  // Inclusive, to the rounding of a weight found from solves: 1e12 is found as 1e12 (1 ± 1e-12).
+  return w >= kLightestPinWeight * (1 - 1e-9) && w <= kHeaviestPinWeight * (1 + 1e-9);
 }
 
 std::string pin_weight_text(double w) {
