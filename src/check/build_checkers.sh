@@ -125,8 +125,8 @@ compile() {
 }
 
 first_error() {
-  grep -m 1 -E 'undefined reference|multiple definition|(fatal )?error|wobble-check:' "$1" ||
-    head -n 1 "$1"
+  grep -m 1 -E 'undefined reference|multiple definition|(fatal )?error|out of memory|memory exhausted|wobble-check:' "$1" ||
+    grep -m 1 . "$1"
 }
 
 # The headers the checker supplies in place of the course's libigl, as a student would write
@@ -149,6 +149,16 @@ compile_error() {
     echo "includes <$header>, which the checker cannot supply (it supplies $(supplied_headers) and the standard library and Eigen)"
     return
   fi
+  case "$line" in
+    *"out of memory"* | *"memory exhausted"*)
+      echo "the compiler ran out of memory (it may use $compile_memory_mib MiB): does the file include something without end, such as /dev/zero?"
+      return
+      ;;
+    *"wobble-check: "*)
+      echo "${line#*wobble-check: }: does the file include something without end, such as a pipe?"
+      return
+      ;;
+  esac
   line=${line//"$folder/"/}
   printable "$line"
   echo
