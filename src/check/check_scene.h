@@ -35,7 +35,8 @@ double scene_size(const CheckScene& scene);
 std::vector<CheckScene> generated_scenes();
 
 // A chain of `vertex_count` vertices along x, pinned at its first vertex, hanging under gravity:
-// the scale check of the sparse functions (a dense #V by #V matrix of it does not fit in memory).
+// the scale check of the sparse functions (a dense #V by #V matrix of it does not fit in a
+// check's memory).
 CheckScene large_chain(int vertex_count);
 
 // Gravity: (0, -9.8 m/s² · m_i, 0) on every vertex.

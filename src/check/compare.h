@@ -23,7 +23,7 @@ std::string compare_vector(const std::string& name, const std::string& shape,
 std::string compare_vertices(const std::string& name, const Eigen::MatrixXd& got,
                              const Eigen::MatrixXd& expected, double tolerance);
 
-// Sparse matrices, never made dense (the scale check's are 100,000 by 100,000).
+// Sparse matrices, never made dense (the scale check's are 30,000 by 30,000).
 std::string compare_sparse(const std::string& name, const std::string& shape,
                            const Eigen::SparseMatrix<double>& got,
                            const Eigen::SparseMatrix<double>& expected, double tolerance);

@@ -156,7 +156,7 @@ case "$scenario" in
   for (const auto& t : ijv) dense(t.row(), t.col()) += t.value();
   A = dense.sparseView();'
     run_check "$dir/submission"
-    expect_failures "signed_incidence_matrix_sparse=uses more than 2 GiB on a 300000-vertex chain: is a dense matrix built and converted"
+    expect_failures "signed_incidence_matrix_sparse=uses more than 2 GiB on a 30000-vertex chain: is a dense matrix built and converted"
     ;;
   PlantedMassNotDivided)
     submission
