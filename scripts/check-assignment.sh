@@ -16,7 +16,7 @@
 #
 # Prints a verdict line for every function, whatever happens to the others, then any notes:
 #   PASS     name
-#   FAIL     name: what differs, where, by how much, on which input[: a hint]
+#   FAIL     name: what differs, where, by how much, on which input[; hint: why]
 #   MISSING  name: no name.cpp in the submission
 #   ERROR    name: the compiler's first error line, a header the checker cannot supply, or a
 #            course call that does not compile or link with the submission's signature
@@ -34,7 +34,8 @@
 #   --memory-limit MIB   address space of each check (default 2048)
 #   --compile-limit S    seconds each compile of a student's file may take (default 120; its
 #                        address space is held to 4096 MiB)
-#   --jobs N             compilers and checks at once (default: the number of cores)
+#   --jobs N             compilers and checks at once, or with --class submissions at once
+#                        (default: the number of cores)
 #   --build-step-server DIR
 #                        build the step server of DIR's fast_mass_springs_step_sparse.cpp (the
 #                        reference for every other function) and print its path; it serves
