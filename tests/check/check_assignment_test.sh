@@ -249,9 +249,9 @@ case "$scenario" in
       fail "expected the note on both steps"
     ;;
   CourseCallVariants)
-    # Signatures that compile at the course's call site: an extra defaulted argument (declared
-    # in the header, as the course's main.cpp sees it), a matrix taken by value, and a
-    # non-const reference to an input.
+    # Signatures that compile at the course's call site: extra defaulted arguments (declared in
+    # the header, as the course's main.cpp sees it), a matrix taken by value, and a non-const
+    # reference to an input.
     course_submission
     plant include/fast_mass_springs_step_sparse.h '  Eigen::MatrixXd & Unext);' '  Eigen::MatrixXd & Unext,
   const int iterations = 50);'
@@ -263,6 +263,15 @@ case "$scenario" in
       'fast_mass_springs_step_dense(Eigen::MatrixXd V,'
     plant include/fast_mass_springs_precomputation_sparse.h '  const Eigen::VectorXi & b,' '  Eigen::VectorXi & b,'
     plant src/fast_mass_springs_precomputation_sparse.cpp '    const Eigen::VectorXi& b,' '    Eigen::VectorXi& b,'
+    # The sparse incidence matrix with a defaulted argument of its own: the sparse
+    # precomputation's call of it reaches the student's (Wobble's has no such signature).
+    plant include/signed_incidence_matrix_sparse.h '  Eigen::SparseMatrix<double> & A);' \
+      '  Eigen::SparseMatrix<double> & A,
+  const double sign = 1.0);'
+    plant src/signed_incidence_matrix_sparse.cpp 'Eigen::SparseMatrix<double>& A) {' \
+      'Eigen::SparseMatrix<double>& A, const double sign) {'
+    plant src/signed_incidence_matrix_sparse.cpp 'E(e, 0), 1.0)' 'E(e, 0), sign)'
+    plant src/signed_incidence_matrix_sparse.cpp 'E(e, 1), -1.0)' 'E(e, 1), -sign)'
     run_check "$dir/submission"
     expect_status 0
     [ "$out" = "$(printf 'PASS  %s\n' "${functions[@]}")" ] || fail "expected six PASS lines only"
