@@ -108,6 +108,7 @@ if [ "$class_mode" = 1 ]; then
 fi
 
 source "$root/src/check/build_checkers.sh"
+source "$root/src/check/check_submission.sh"
 check_toolchain
 if [ "$build_server" = 1 ]; then
   build_step_server "$folder" "$output"
