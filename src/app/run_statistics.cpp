@@ -55,6 +55,7 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"global_ms_median", median(times.global_ms)},
       {"self_collision", params.self_collision.on},
       {"self_collision_thickness", params.self_collision.thickness},
+      {"self_collision_thickness_kept", simulation.self_collision_thickness_kept()},
       {"self_contacts", simulation.self_contact_count()},
       {"self_detection_ms_median", median(times.self_detection_ms)},
       {"self_response_ms_median", median(times.self_response_ms)},

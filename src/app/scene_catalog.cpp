@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 
 #include "io/load_scene.h"
+#include "sim/contact/self_collision.h"
 #include "sim/input_error.h"
 #include "sim/shapes/builtin_scenes.h"
 
@@ -41,6 +43,19 @@ std::string scene_label(const std::string& source) {
 Scene open_scene(const CommandLine& command) {
   Scene scene = load_scene(command.scene, command.fill);
   apply_scene_overrides(command, scene.params);
+  const SelfCollisionParams& self = scene.params.self_collision;
+  if (self.on) {
+    // A gap wider than the surface's own mesh cannot be kept (see SelfCollision): clamped, said.
+    const double largest = largest_self_collision_thickness(scene.network);
+    if (self.thickness > largest) {
+      std::ostringstream note;
+      note << (command.self_collision_thickness ? "--self-collision-thickness"
+                                                : "self_collision.thickness")
+           << " " << self.thickness << " m is more than this mesh can keep between its layers"
+           << " (1.5 times its mean edge); keeping " << largest << " m";
+      scene.notes.push_back(note.str());
+    }
+  }
   return scene;
 }
 

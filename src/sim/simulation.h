@@ -180,6 +180,9 @@ class Simulation {
   // or held back by the swept check), and the same as #V flags.
   int self_contact_count() const;
   const std::vector<char>& self_contact_vertices() const;
+  // The gap self-collision keeps (m): params().self_collision.thickness, clamped to what the
+  // mesh can keep (largest_self_collision_thickness).
+  double self_collision_thickness_kept() const;
   // Simulated time (s): the sum of the accepted steps' Δt since the start or the last reset.
   double time() const { return time_; }
 

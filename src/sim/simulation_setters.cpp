@@ -115,6 +115,10 @@ void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
   }
 }
 
+double Simulation::self_collision_thickness_kept() const {
+  return self_collision_ ? self_collision_->thickness() : params_.self_collision.thickness;
+}
+
 int Simulation::self_contact_count() const {
   return params_.self_collision.on && self_collision_ ? self_collision_->contact_count() : 0;
 }

@@ -3,6 +3,8 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <random>
 #include <set>
 #include <utility>
@@ -74,7 +76,10 @@ TEST(ClosestPoints, OfTwoSegments) {
   EXPECT_NEAR(su(1), 0.5, 1e-12);
 }
 
-TEST(SpatialGrid, FindsEveryOverlappingPairOnceAndNoOther) {
+// Every query visits each box it overlaps exactly once, and no other: boxes in many cells, boxes
+// too large for a cell (the few every query visits), empty boxes, and a query covering the
+// whole grid.
+TEST(SpatialGrid, VisitsEveryOverlappingBoxOnceAndNoOther) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> where(-1.0, 1.0), size(0.0, 0.2);
   std::vector<Eigen::AlignedBox3d> boxes;
@@ -82,33 +87,46 @@ TEST(SpatialGrid, FindsEveryOverlappingPairOnceAndNoOther) {
     const Eigen::Vector3d low(where(random), where(random), where(random));
     boxes.emplace_back(low, low + Eigen::Vector3d(size(random), size(random), size(random)));
   }
-  // Two large boxes, on the list every query visits.
   boxes.emplace_back(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
   boxes.emplace_back(Eigen::Vector3d(-0.5, -2, -0.5), Eigen::Vector3d(0.5, 2, 0.5));
-  wobble::SpatialGrid grid(0.05);
-  grid.build(boxes);
-  std::set<std::pair<int, int>> expected, found;
-  for (int i = 0; i < int(boxes.size()); ++i) {
-    for (int j = i + 1; j < int(boxes.size()); ++j) {
-      if (boxes[i].intersects(boxes[j])) expected.emplace(i, j);
+  boxes.emplace_back();  // empty: never visited
+  wobble::SpatialGrid grid;
+  grid.build(boxes, 0.05);
+  std::vector<Eigen::AlignedBox3d> queries(boxes.begin(), boxes.begin() + 40);
+  queries.emplace_back(Eigen::Vector3d(-3, -3, -3), Eigen::Vector3d(3, 3, 3));
+  for (const Eigen::AlignedBox3d& query : queries) {
+    std::map<int, int> visits;
+    grid.for_each_overlapping(query, [&](int id) {
+      ++visits[id];
+      return true;
+    });
+    for (int id = 0; id < int(boxes.size()); ++id) {
+      const bool overlaps = !boxes[id].isEmpty() && query.intersects(boxes[id]);
+      EXPECT_EQ(visits.count(id) ? visits[id] : 0, overlaps ? 1 : 0) << "box " << id;
     }
   }
-  int visits = 0;
-  grid.for_each_overlapping_pair([&](int i, int j) {
-    ++visits;
-    EXPECT_LT(i, j);
-    found.emplace(i, j);
+}
+
+// Boxes far larger than the cell asked for, and boxes of every size at once: each is filed once
+// (on the level its size needs), so the memory stays O(boxes), and queries still find them.
+TEST(SpatialGrid, FilesBoxesOfAnySizeOnce) {
+  std::vector<Eigen::AlignedBox3d> boxes;
+  for (int i = 0; i < 1000; ++i)
+    boxes.emplace_back(Eigen::Vector3d(i * 1e-3, 0, 0), Eigen::Vector3d(1 + i * 1e-3, 1, 1));
+  for (int i = 0; i < 1000; ++i) {
+    const double size = std::pow(10.0, -4 + i % 8);
+    boxes.emplace_back(Eigen::Vector3d(i, 0, 0), Eigen::Vector3d(i + size, size, size));
+  }
+  wobble::SpatialGrid grid;
+  grid.build(boxes, 1e-3);
+  // One entry a box (about 64 bytes), and hash slots of a few ints each.
+  EXPECT_LT(grid.memory_bytes(), boxes.size() * 200);
+  int visited = 0;
+  grid.for_each_overlapping(boxes[0], [&](int id) {
+    visited += id < 1000;
+    return true;
   });
-  EXPECT_EQ(found, expected);
-  EXPECT_EQ(visits, int(found.size()));  // each once
-  // Candidates of one box include every box it overlaps.
-  std::set<int> candidates;
-  grid.for_each_candidate(boxes[3], [&](int id) { candidates.insert(id); });
-  for (int j = 0; j < int(boxes.size()); ++j) {
-    if (boxes[3].intersects(boxes[j])) {
-      EXPECT_TRUE(candidates.count(j)) << j;
-    }
-  }
+  EXPECT_EQ(visited, 1000);
 }
 
 }  // namespace

@@ -2,99 +2,96 @@
 #define WOBBLE_SIM_CONTACT_SPATIAL_GRID_H
 
 #include <Eigen/Geometry>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 namespace wobble {
 
-// A uniform grid of boxes for finding which boxes a query box may overlap, rebuilt from scratch
-// whenever the boxes move (a counting sort: two passes over the boxes, no allocation once the
-// buffers have grown). Cells are cubes of side `cell`; a cell's coordinates are hashed into a
-// table of about twice as many slots as boxes, so the grid has no bounds. A box covering more
-// than max_cells_per_box cells (one that moved far in a step) goes on a list every query visits.
+// Boxes filed for finding which of them a query box overlaps, rebuilt from scratch whenever the
+// boxes move. A hierarchy of uniform grids: level k has cells of side cell·4ᵏ, and each box is
+// filed once, at the cell of its centre, on the first level whose cell is at least as large as
+// the box. So a box that overlaps a query has its centre within half a cell of the query box on
+// its level, and a query looks at the few cells around it on each level in use. Each level is a
+// counting sort of its boxes into a hash table of about twice as many slots (no bounds, no
+// allocation once the buffers have grown).
+//
+// Bounded by design: memory is O(boxes) whatever their sizes and places (one entry a box); a
+// build costs O(boxes); a query costs O(the boxes whose cells it looks at), and never more cells
+// than a level has boxes (a query box large for a level looks at that level's boxes one by one
+// instead). Boxes that are empty or not finite are not filed.
 class SpatialGrid {
  public:
-  static constexpr std::int64_t max_cells_per_box = 512;
+  static constexpr int max_levels = 16;
 
-  explicit SpatialGrid(double cell = 1.0) : cell_(cell) {}
+  // Files each of `boxes` (ids 0..#boxes−1); level 0's cell is `cell` (m).
+  void build(const std::vector<Eigen::AlignedBox3d>& boxes, double cell);
   double cell() const { return cell_; }
 
-  // Files each of `boxes` (#boxes, ids 0..#boxes−1) under the cells it covers. `boxes` must
-  // outlive the queries.
-  void build(const std::vector<Eigen::AlignedBox3d>& boxes);
-
-  // Calls visit(i, j), i < j, once for every two boxes that overlap, the large ones included:
-  // each slot's boxes against each other, a pair taken only in the first cell both cover.
+  // Calls visit(id) exactly once for every filed box that overlaps `box` (closed boxes:
+  // touching counts), until visit returns false. Safe to call from several threads at once
+  // between builds.
   template <typename Visit>
-  void for_each_overlapping_pair(Visit&& visit) const {
-    for (std::uint32_t slot = 0; slot < slots_; ++slot) {
-      for (int s = start_[slot]; s < start_[slot + 1]; ++s) {
-        for (int t = s + 1; t < start_[slot + 1]; ++t) {
-          const Entry& a = entries_[s];
-          const Entry& b = entries_[t];
-          if (a.id == b.id || !a.box.intersects(b.box)) continue;
-          // The first cell both cover; the pair is taken in its slot only.
-          const Eigen::Array3i first = a.low.max(b.low);
-          if (cell_slot(first.x(), first.y(), first.z()) != slot) continue;
-          visit(std::min(a.id, b.id), std::max(a.id, b.id));
+  void for_each_overlapping(const Eigen::AlignedBox3d& box, Visit&& visit) const {
+    if (box.isEmpty()) return;
+    for (const Level& level : levels_) {
+      if (level.entries.empty()) continue;
+      const double half = 0.5 * level.cell;
+      const Eigen::Array3d lo = ((box.min().array() - half) / level.cell).floor();
+      const Eigen::Array3d hi = ((box.max().array() + half) / level.cell).floor();
+      const double cells = (hi - lo + 1.0).prod();
+      if (!(cells <= static_cast<double>(level.entries.size())) ||
+          !(lo.abs().maxCoeff() < 1e9 && hi.abs().maxCoeff() < 1e9)) {
+        // Cheaper (or only possible) to look at every box of the level once.
+        for (const Entry& entry : level.entries) {
+          if (box.intersects(entry.box) && !visit(entry.id)) return;
         }
+        continue;
       }
-    }
-    for (std::size_t l = 0; l < large_.size(); ++l) {
-      const Eigen::AlignedBox3d& box = (*boxes_)[large_[l]];
-      for (int id = 0; id < static_cast<int>(box_count_); ++id) {
-        if (id == large_[l] || !box.intersects((*boxes_)[id])) continue;
-        // Two large boxes: once, from the lower id's turn.
-        if (is_large_[id] && id < large_[l]) continue;
-        visit(std::min(id, large_[l]), std::max(id, large_[l]));
+      const Eigen::Array3i low = lo.cast<int>(), high = hi.cast<int>();
+      for (int x = low.x(); x <= high.x(); ++x) {
+        for (int y = low.y(); y <= high.y(); ++y) {
+          for (int z = low.z(); z <= high.z(); ++z) {
+            const std::uint32_t slot = cell_slot(x, y, z, level.slots);
+            for (int s = level.start[slot]; s < level.start[slot + 1]; ++s) {
+              const Entry& entry = level.entries[s];
+              // The slot holds every cell that hashes to it: only this cell's boxes.
+              if (entry.x != x || entry.y != y || entry.z != z) continue;
+              if (box.intersects(entry.box) && !visit(entry.id)) return;
+            }
+          }
+        }
       }
     }
   }
 
-  // Calls visit(id) for every box filed under a cell that `box` covers, and every large box. An
-  // id can come more than once (a box in several of the cells); the caller tells them apart.
-  template <typename Visit>
-  void for_each_candidate(const Eigen::AlignedBox3d& box, Visit&& visit) const {
-    Eigen::Array3i low, high;
-    if (!cell_range(box, low, high)) {
-      for (int id = 0; id < static_cast<int>(box_count_); ++id)
-        visit(id);
-      return;
-    }
-    for (int x = low.x(); x <= high.x(); ++x) {
-      for (int y = low.y(); y <= high.y(); ++y) {
-        for (int z = low.z(); z <= high.z(); ++z) {
-          const std::uint32_t slot = cell_slot(x, y, z);
-          for (int s = start_[slot]; s < start_[slot + 1]; ++s)
-            visit(items_[s]);
-        }
-      }
-    }
-    for (const int id : large_)
-      visit(id);
-  }
+  // Memory held by the grid's buffers (bytes).
+  std::size_t memory_bytes() const;
 
  private:
-  // The cells a box covers; false when they are more than max_cells_per_box.
-  bool cell_range(const Eigen::AlignedBox3d& box, Eigen::Array3i& low, Eigen::Array3i& high) const;
-  std::uint32_t cell_slot(int x, int y, int z) const;
-
-  // A box as filed: its id, the box and its lowest cell.
   struct Entry {
     Eigen::AlignedBox3d box;
-    Eigen::Array3i low;
     int id;
+    int x, y, z;  // the cell of the box's centre
   };
+  struct Level {
+    double cell = 1.0;
+    std::uint32_t slots = 1;  // a power of two
+    std::vector<int> start;   // slots + 1: where each slot's entries begin
+    std::vector<Entry> entries;
+  };
+  static std::uint32_t cell_slot(int x, int y, int z, std::uint32_t slots) {
+    // Three large primes, multiplied and mixed: neighbouring cells land in unrelated slots.
+    const std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::int64_t>(x)) * 73856093u ^
+                            static_cast<std::uint64_t>(static_cast<std::int64_t>(y)) * 19349663u ^
+                            static_cast<std::uint64_t>(static_cast<std::int64_t>(z)) * 83492791u;
+    return static_cast<std::uint32_t>(h ^ (h >> 29)) & (slots - 1);
+  }
 
-  double cell_;
-  const std::vector<Eigen::AlignedBox3d>* boxes_ = nullptr;  // those of the last build
-  std::vector<Entry> entries_;                               // by slot, as items_
-  std::vector<char> is_large_;
-  std::size_t box_count_ = 0;
-  std::uint32_t slots_ = 1;  // a power of two
-  std::vector<int> start_;   // slots_ + 1: where each slot's ids begin in items_
-  std::vector<int> items_, large_;
-  std::vector<int> fill_;
+  double cell_ = 1.0;
+  std::array<Level, max_levels> levels_;
+  std::vector<std::int8_t> level_of_;  // #boxes: its level, −1 when not filed
 };
 
 }  // namespace wobble
