@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -143,6 +144,47 @@ TEST(SelfCollisionOptions, StatsReportIt) {
   EXPECT_GT(on["self_detection_ms_median"].get<double>(), 0.0);
   EXPECT_GE(on["self_response_ms_median"].get<double>(), 0.0);
   EXPECT_TRUE(on["self_contacts"].is_number_integer());
+}
+
+}  // namespace
+
+namespace {
+
+// A thickness wider than the mesh can keep between its layers (1.5 mean edges; the 16×16 cloth's
+// edges are 1/15 m and their diagonals) is clamped: one note naming the setting, the run goes on,
+// and the stats say what was kept. One it can keep gives no note.
+TEST(SelfCollisionOptions, AThicknessTheMeshCannotKeepIsClampedWithANote) {
+  TemporaryFolder folder;
+  const auto write = [&](const std::string& name, double thickness) {
+    std::ofstream(folder.file(name))
+        << R"({"mesh": {"generator": "cloth", "resolution": 16, "size": 1.0, "height": 0.5},
+               "pins": "none", "self_collision": {"thickness": )"
+        << thickness << "}}";
+    return "'" + folder.file(name) + "'";
+  };
+  const std::string wide = write("wide.json", 0.5), fine = write("fine.json", 0.02);
+  const Result from_file = run_wobble(wide + " --headless --frames 2 --stats");
+  EXPECT_EQ(from_file.exit_code, 0) << from_file.err;
+  const std::string note = "wobble: note: self_collision.thickness 0.5 m is more than this mesh";
+  EXPECT_NE(from_file.err.find(note), std::string::npos) << from_file.err;
+  EXPECT_EQ(from_file.err.find("note:"), from_file.err.rfind("note:")) << "one note";
+  const nlohmann::json stats = stats_of(wide + " --frames 2");
+  EXPECT_EQ(stats["self_collision_thickness"], 0.5);
+  // 1.5 times the mean edge, which lies between the grid's side (1/15 m) and its diagonal.
+  const double clamped = stats["self_collision_thickness_kept"].get<double>();
+  EXPECT_GT(clamped, 1.5 / 15.0);
+  EXPECT_LT(clamped, 1.5 * std::sqrt(2.0) / 15.0);
+
+  const Result from_flag = run_wobble(fine + " --headless --frames 2 --self-collision-thickness 1");
+  EXPECT_EQ(from_flag.exit_code, 0) << from_flag.err;
+  EXPECT_NE(from_flag.err.find("wobble: note: --self-collision-thickness 1 m is more"),
+            std::string::npos)
+      << from_flag.err;
+
+  const Result kept = run_wobble(fine + " --headless --frames 2");
+  EXPECT_EQ(kept.exit_code, 0);
+  EXPECT_EQ(kept.err.find("thickness"), std::string::npos) << kept.err;
+  EXPECT_EQ(stats_of(fine + " --frames 2")["self_collision_thickness_kept"], 0.02);
 }
 
 }  // namespace

@@ -7,6 +7,9 @@ namespace wobble::benchmark {
 // - the 40×40 pile (a pleated cloth thrown down edge first, as the cloth_pile asset), with and
 //   without self-collision, while it folds (steps 1–150) and once it lies still (steps
 //   301–400): median step times and their ratio;
+// - free 40×40, 128×128 and 256×256 cloths thrown down edge first onto the ground with a
+//   sideways push (up to 90 frames, or a minute of stepping each): the median step with and
+//   without self-collision, detection (and per vertex) and response, and peak memory;
 // - a 128×128 cloth falling onto a ball on the ground, its skirt folding onto itself: the
 //   median step and its detection and response parts.
 void print_self_collision_cost();

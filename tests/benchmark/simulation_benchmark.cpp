@@ -182,6 +182,10 @@ void print_single_precision_error() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "--self-collision") {
+    wobble::benchmark::print_self_collision_cost();  // its rows alone
+    return 0;
+  }
   for (const BenchmarkScene& scene : wobble::benchmark::benchmark_scenes()) {
     const int steps = steps_for(scene);
     const int precomputes = std::max(3, steps / 3);
