@@ -119,12 +119,13 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
       grid.for_each_overlapping(grown({v}), [&](int t) {
         const int a = surface.triangles(t, 0), b = surface.triangles(t, 1),
                   c = surface.triangles(t, 2);
+        if (++examined > max_examined) return false;  // every box met counts, kept or not
         if (v == a || v == b || v == c) return true;
         const Eigen::Vector3d alpha = closest_on_triangle(p, row(V, a), row(V, b), row(V, c));
         const double distance =
             (p - alpha(0) * row(V, a) - alpha(1) * row(V, b) - alpha(2) * row(V, c)).norm();
         if (distance < reach) near.emplace_back(distance, t);
-        return ++examined < max_examined;
+        return true;
       });
     }
     keep_nearest(near, max_per_owner, triangles_.ids);
@@ -143,6 +144,7 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
     const int p0 = surface.edges(e, 0), p1 = surface.edges(e, 1);
     int examined = 0;
     grid.for_each_overlapping(boxes[e], [&](int f) {
+      if (++examined > max_examined) return false;  // every box met counts, kept or not
       if (f <= e) return true;
       const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);
       if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return true;
@@ -152,7 +154,7 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
                                (1.0 - su(1)) * row(V, q0) - su(1) * row(V, q1))
                                   .norm();
       if (distance < reach) near.emplace_back(distance, f);
-      return ++examined < max_examined;
+      return true;
     });
     keep_nearest(near, max_per_owner, edges_.ids);
     edges_.start[e + 1] = static_cast<int>(edges_.ids.size());

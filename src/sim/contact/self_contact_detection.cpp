@@ -139,7 +139,13 @@ void SelfContactDetection::query_vertex(int v, Chunk& chunk) const {
   box.max().array() += grow;
   chunk.staged.clear();
   int examined = 0;
+  int met = 0;
   triangle_grid_.for_each_overlapping(box, [&](int t) {
+    // Boxes skipped below count too, at a looser bound: coincident features stay bounded.
+    if (++met > max_met) {
+      chunk.saturated = true;
+      return false;
+    }
     const int a = surface.triangles(t, 0), b = surface.triangles(t, 1), c = surface.triangles(t, 2);
     if (v == a || v == b || v == c || rest_->vertex_triangle(v, t)) return true;
     const Eigen::Vector3d alpha =
@@ -160,7 +166,12 @@ void SelfContactDetection::query_edge(int e, Chunk& chunk) const {
   const int p0 = surface.edges(e, 0), p1 = surface.edges(e, 1);
   chunk.staged.clear();
   int examined = 0;
+  int met = 0;
   edge_grid_.for_each_overlapping(edge_boxes_[e], [&](int f) {
+    if (++met > max_met) {
+      chunk.saturated = true;
+      return false;
+    }
     if (f <= e) return true;  // each pair once, from its lower edge
     const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);
     if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1 || rest_->edge_edge(e, f)) return true;

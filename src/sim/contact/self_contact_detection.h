@@ -50,6 +50,8 @@ class SelfContactDetection {
  public:
   static constexpr int max_pairs_per_feature = 32;
   static constexpr int max_examined = 256;
+  // The most boxes a query meets, those it skips (its own neighbourhood) included.
+  static constexpr int max_met = 4 * max_examined;
 
   //   surface, rest   the surface and its rest neighbourhood
   //   start, end      #V by 3 positions (m) where the step starts and where it is heading

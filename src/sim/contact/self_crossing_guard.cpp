@@ -12,6 +12,8 @@ Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
 }
 
 constexpr int chunks = 32;
+// The most triangles the first round looks at for one edge.
+constexpr int max_met = 1024;
 
 // Whether segment pq passes through triangle abc: p and q strictly on opposite sides of its
 // plane, and the line pq inside or on all three of its edges (signed volumes).
@@ -134,10 +136,12 @@ int SelfCrossingGuard::undo_crossings(const SelfCollisionSurface& surface,
         const int last =
             static_cast<int>(static_cast<long long>(edge_count) * (chunk + 1) / chunks);
         for (int e = first; e < last; ++e) {
-          // An edge that is not watched has an empty box: it overlaps nothing.
+          // An edge that is not watched has an empty box: it overlaps nothing. At most
+          // max_met triangles an edge (a pile of coincident triangles stays bounded).
+          int met = 0;
           triangle_grid_.for_each_overlapping(edge_boxes_[e], [&](int t) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, crossed);
-            return true;
+            return ++met < max_met;
           });
         }
       };
