@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sim/contact/closest_points.h"
+#include "sim/contact/vertex_row.h"
 #include "sim/input_error.h"
 #include "sim/value_limits.h"
 
@@ -18,10 +19,6 @@ double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
-  return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
-}
-
 // The motion detection allows beyond the solve's, as a fraction of the thickness, and how often
 // the pairs are found again when the response pushed a vertex farther.
 constexpr double margin_fraction = 0.25;
@@ -29,8 +26,6 @@ constexpr int max_rounds = 3;
 // The pairs of a slow step are kept while no vertex strays farther than half this fraction of
 // the thickness from where they were found.
 constexpr double skin_fraction = 0.5;
-// How much of the thickness a pair that starts too close may open up by in one step.
-constexpr double recovery_fraction = 0.1;
 // Pairs closer than this many thicknesses in the rest shape are the mesh's own neighbourhood.
 constexpr double rest_skip_factor = 2.0;
 // The largest thickness, in mean rest edges (see largest_self_collision_thickness).
@@ -95,11 +90,11 @@ bool SelfCollision::within_of_common_motion(const Eigen::MatrixXd& from, const E
   // apart from the mean counts.
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const int v : surface_.vertices)
-    mean += row(to, v) - row(from, v);
+    mean += vertex_row(to, v) - vertex_row(from, v);
   if (!surface_.vertices.empty()) mean /= static_cast<double>(surface_.vertices.size());
   const double reach2 = reach * reach;
   for (const int v : surface_.vertices) {
-    if (!((row(to, v) - row(from, v) - mean).squaredNorm() <= reach2)) return false;
+    if (!((vertex_row(to, v) - vertex_row(from, v) - mean).squaredNorm() <= reach2)) return false;
   }
   return true;
 }
@@ -107,8 +102,8 @@ bool SelfCollision::within_of_common_motion(const Eigen::MatrixXd& from, const E
 bool SelfCollision::near_segments(const Eigen::MatrixXd& current, const Eigen::MatrixXd& end,
                                   const Eigen::MatrixXd& positions, double reach) const {
   for (const int v : surface_.vertices) {
-    const Eigen::Vector3d from = row(current, v), along = row(end, v) - from;
-    const Eigen::Vector3d p = row(positions, v);
+    const Eigen::Vector3d from = vertex_row(current, v), along = vertex_row(end, v) - from;
+    const Eigen::Vector3d p = vertex_row(positions, v);
     const double length2 = along.squaredNorm();
     const double t = length2 > 0.0 ? std::clamp((p - from).dot(along) / length2, 0.0, 1.0) : 0.0;
     if (!((p - from - t * along).norm() <= reach)) return false;
@@ -121,8 +116,10 @@ void SelfCollision::refresh_pairs(const Eigen::MatrixXd& current) {
   pairs_.resize(listed_pairs_.size());
   std::size_t kept = 0;
   for (SelfContactPair pair : listed_pairs_) {
-    const Eigen::Vector3d p0 = row(current, pair.vertex[0]), p1 = row(current, pair.vertex[1]);
-    const Eigen::Vector3d p2 = row(current, pair.vertex[2]), p3 = row(current, pair.vertex[3]);
+    const Eigen::Vector3d p0 = vertex_row(current, pair.vertex[0]),
+                          p1 = vertex_row(current, pair.vertex[1]);
+    const Eigen::Vector3d p2 = vertex_row(current, pair.vertex[2]),
+                          p3 = vertex_row(current, pair.vertex[3]);
     // The closest points of the two features where the step starts.
     if (pair.vertex_triangle) {
       const Eigen::Vector3d alpha = closest_on_triangle(p0, p1, p2, p3);
@@ -140,7 +137,7 @@ void SelfCollision::refresh_pairs(const Eigen::MatrixXd& current) {
         pair.beta[0] * p0 + pair.beta[1] * p1 + pair.beta[2] * p2 + pair.beta[3] * p3;
     const double distance = start.norm();
     if (distance > 1e-9 * h) pair.normal = start / distance;  // else the last step's normal
-    pair.target = std::min(h, distance + recovery_fraction * h);
+    pair.target = std::min(h, distance + SelfContactDetection::recovery_fraction * h);
     pair.depth = 0.0;
     pairs_[kept++] = pair;
   }

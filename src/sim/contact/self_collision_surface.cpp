@@ -5,14 +5,11 @@
 #include <utility>
 
 #include "sim/contact/closest_points.h"
+#include "sim/contact/vertex_row.h"
 
 namespace wobble {
 
 namespace {
-
-Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
-  return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
-}
 
 // (owner, id) pairs into compressed rows, ids sorted within each owner.
 void compress(std::vector<std::pair<int, int>>& pairs, int owners, CompressedRows& rows) {
@@ -60,7 +57,7 @@ SelfCollisionSurface::SelfCollisionSurface(const SpringNetwork& network)
       const long long key = static_cast<long long>(low) * n + high;
       if (edge_ids.emplace(key, static_cast<int>(edge_list.size())).second) {
         edge_list.emplace_back(low, high);
-        edge_sum += (row(rest, i) - row(rest, j)).norm();
+        edge_sum += (vertex_row(rest, i) - vertex_row(rest, j)).norm();
       }
     }
   }
@@ -95,7 +92,7 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
   const auto grown = [&](std::initializer_list<int> vertices) {
     Eigen::AlignedBox3d box;
     for (const int i : vertices)
-      box.extend(row(V, i));
+      box.extend(vertex_row(V, i));
     box.min().array() -= 0.5 * reach;
     box.max().array() += 0.5 * reach;
     return box;
@@ -114,16 +111,18 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
   for (int v = 0; v < n; ++v) {
     near.clear();
     if (surface.vertex_triangles.begin(v) != surface.vertex_triangles.end(v)) {
-      const Eigen::Vector3d p = row(V, v);
+      const Eigen::Vector3d p = vertex_row(V, v);
       int examined = 0;
       grid.for_each_overlapping(grown({v}), [&](int t) {
         const int a = surface.triangles(t, 0), b = surface.triangles(t, 1),
                   c = surface.triangles(t, 2);
         if (++examined > max_examined) return false;  // every box met counts, kept or not
         if (v == a || v == b || v == c) return true;
-        const Eigen::Vector3d alpha = closest_on_triangle(p, row(V, a), row(V, b), row(V, c));
-        const double distance =
-            (p - alpha(0) * row(V, a) - alpha(1) * row(V, b) - alpha(2) * row(V, c)).norm();
+        const Eigen::Vector3d alpha =
+            closest_on_triangle(p, vertex_row(V, a), vertex_row(V, b), vertex_row(V, c));
+        const double distance = (p - alpha(0) * vertex_row(V, a) - alpha(1) * vertex_row(V, b) -
+                                 alpha(2) * vertex_row(V, c))
+                                    .norm();
         if (distance < reach) near.emplace_back(distance, t);
         return true;
       });
@@ -148,10 +147,10 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
       if (f <= e) return true;
       const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);
       if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return true;
-      const Eigen::Vector2d su =
-          closest_on_segments(row(V, p0), row(V, p1), row(V, q0), row(V, q1));
-      const double distance = ((1.0 - su(0)) * row(V, p0) + su(0) * row(V, p1) -
-                               (1.0 - su(1)) * row(V, q0) - su(1) * row(V, q1))
+      const Eigen::Vector2d su = closest_on_segments(vertex_row(V, p0), vertex_row(V, p1),
+                                                     vertex_row(V, q0), vertex_row(V, q1));
+      const double distance = ((1.0 - su(0)) * vertex_row(V, p0) + su(0) * vertex_row(V, p1) -
+                               (1.0 - su(1)) * vertex_row(V, q0) - su(1) * vertex_row(V, q1))
                                   .norm();
       if (distance < reach) near.emplace_back(distance, f);
       return true;

@@ -5,18 +5,12 @@
 #include <tuple>
 
 #include "sim/contact/closest_points.h"
+#include "sim/contact/vertex_row.h"
 
 namespace wobble {
 
 namespace {
 
-Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
-  return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
-}
-
-// How much of the thickness a pair that starts too close may open up by in one step: pushed
-// out at once it would leave with the whole shortfall as speed, and a pile kept on bouncing.
-constexpr double recovery_fraction = 0.1;
 // The queries are cut into this many chunks a kind, whatever the thread count, so that the
 // pairs come out in the same order on any machine.
 constexpr int chunks_per_kind = 32;
@@ -37,53 +31,44 @@ void SelfContactDetection::detect(const SelfCollisionSurface& surface, const Res
   // The common motion, and each vertex's wander from it.
   mean_motion_.setZero();
   for (const int v : surface.vertices)
-    mean_motion_ += row(end, v) - row(start, v);
+    mean_motion_ += vertex_row(end, v) - vertex_row(start, v);
   if (!surface.vertices.empty()) mean_motion_ /= static_cast<double>(surface.vertices.size());
   wander_.assign(start.rows(), 0.0);
   for (const int v : surface.vertices)
-    wander_[v] = (row(end, v) - row(start, v) - mean_motion_).norm();
+    wander_[v] = (vertex_row(end, v) - vertex_row(start, v) - mean_motion_).norm();
 
   // Each vertex's path in the frame that moves with ū: from where it starts to where it ends
   // less the common motion. Two features come within the thickness only where their paths in
   // that frame do, so each box covers its vertices' paths there (long and thin along a fold's
   // fall, not a ball of the wander's radius).
   const auto swept = [&](int i) {
-    const Eigen::Vector3d from = row(start, i);
+    const Eigen::Vector3d from = vertex_row(start, i);
     Eigen::AlignedBox3d box(from);
-    box.extend(Eigen::Vector3d(row(end, i) - mean_motion_));
+    box.extend(Eigen::Vector3d(vertex_row(end, i) - mean_motion_));
     return box;
   };
   const double grow = 0.5 * thickness + margin;
   const int triangle_count = static_cast<int>(surface.triangles.rows());
   triangle_boxes_.resize(triangle_count);
-  triangle_wander_.resize(triangle_count);
   extents_.resize(triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
     Eigen::AlignedBox3d box;
-    double wander = 0.0;
-    for (int c = 0; c < 3; ++c) {
-      const int i = surface.triangles(t, c);
-      box.extend(swept(i));
-      wander = std::max(wander, wander_[i]);
-    }
+    for (int c = 0; c < 3; ++c)
+      box.extend(swept(surface.triangles(t, c)));
     box.min().array() -= grow;
     box.max().array() += grow;
     triangle_boxes_[t] = box;
-    triangle_wander_[t] = wander;
     extents_[t] = box.sizes().maxCoeff();
   }
   const int edge_count = static_cast<int>(surface.edges.rows());
   edge_boxes_.resize(edge_count);
-  edge_wander_.resize(edge_count);
   for (int e = 0; e < edge_count; ++e) {
     const int i = surface.edges(e, 0), j = surface.edges(e, 1);
     Eigen::AlignedBox3d box = swept(i);
     box.extend(swept(j));
-    const double wander = std::max(wander_[i], wander_[j]);
     box.min().array() -= grow;
     box.max().array() += grow;
     edge_boxes_[e] = box;
-    edge_wander_[e] = wander;
   }
   // Cells the size of most boxes: each box covers a few cells, each cell holds a few boxes.
   double cell = std::max(surface.mean_edge, thickness + 2.0 * margin);
@@ -131,9 +116,9 @@ void SelfContactDetection::detect(const SelfCollisionSurface& surface, const Res
 void SelfContactDetection::query_vertex(int v, Chunk& chunk) const {
   const SelfCollisionSurface& surface = *surface_;
   const Eigen::MatrixXd& start = *start_;
-  const Eigen::Vector3d p = row(start, v);
+  const Eigen::Vector3d p = vertex_row(start, v);
   Eigen::AlignedBox3d box(p);
-  box.extend(Eigen::Vector3d(row(*end_, v) - mean_motion_));
+  box.extend(Eigen::Vector3d(vertex_row(*end_, v) - mean_motion_));
   const double grow = 0.5 * thickness_ + margin_;
   box.min().array() -= grow;
   box.max().array() += grow;
@@ -149,7 +134,7 @@ void SelfContactDetection::query_vertex(int v, Chunk& chunk) const {
     const int a = surface.triangles(t, 0), b = surface.triangles(t, 1), c = surface.triangles(t, 2);
     if (v == a || v == b || v == c || rest_->vertex_triangle(v, t)) return true;
     const Eigen::Vector3d alpha =
-        closest_on_triangle(p, row(start, a), row(start, b), row(start, c));
+        closest_on_triangle(p, vertex_row(start, a), vertex_row(start, b), vertex_row(start, c));
     keep_if_close(
         SelfContactPair{{v, a, b, c}, {1.0, -alpha(0), -alpha(1), -alpha(2)}, {}, 0.0, 0.0, true},
         1, chunk);
@@ -175,8 +160,8 @@ void SelfContactDetection::query_edge(int e, Chunk& chunk) const {
     if (f <= e) return true;  // each pair once, from its lower edge
     const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);
     if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1 || rest_->edge_edge(e, f)) return true;
-    const Eigen::Vector2d su =
-        closest_on_segments(row(start, p0), row(start, p1), row(start, q0), row(start, q1));
+    const Eigen::Vector2d su = closest_on_segments(vertex_row(start, p0), vertex_row(start, p1),
+                                                   vertex_row(start, q0), vertex_row(start, q1));
     keep_if_close(
         SelfContactPair{
             {p0, p1, q0, q1}, {1.0 - su(0), su(0), -(1.0 - su(1)), -su(1)}, {}, 0.0, 0.0, false},
@@ -194,7 +179,7 @@ void SelfContactDetection::keep_if_close(SelfContactPair pair, int first_size, C
   const double h = thickness_;
   Eigen::Vector3d gap = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k)
-    gap += pair.beta[k] * row(start, pair.vertex[k]);
+    gap += pair.beta[k] * vertex_row(start, pair.vertex[k]);
   const double distance = gap.norm();
   // How much closer the motion can bring the two features. Each point of one moves relative to
   // the other by a convex mix of its vertices' motions, so by at most the largest of them
@@ -206,7 +191,7 @@ void SelfContactDetection::keep_if_close(SelfContactPair pair, int first_size, C
   // along the layers and a fold turning about its crease count only for what they bring across.
   Eigen::Vector3d motion[4], mean = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
-    motion[k] = row(end, pair.vertex[k]) - row(start, pair.vertex[k]);
+    motion[k] = vertex_row(end, pair.vertex[k]) - vertex_row(start, pair.vertex[k]);
     mean += 0.25 * motion[k];
   }
   double closing_first = 0.0, closing_second = 0.0, wander_first = 0.0, wander_second = 0.0;
@@ -234,13 +219,13 @@ void SelfContactDetection::keep_if_close(SelfContactPair pair, int first_size, C
   } else {
     // Touching at the start (nothing kept them apart): the normal of the two features' plane,
     // on the side the pair ends on.
-    pair.normal = (row(start, pair.vertex[1]) - row(start, pair.vertex[0]))
-                      .cross(row(start, pair.vertex[3]) - row(start, pair.vertex[2]));
+    pair.normal = (vertex_row(start, pair.vertex[1]) - vertex_row(start, pair.vertex[0]))
+                      .cross(vertex_row(start, pair.vertex[3]) - vertex_row(start, pair.vertex[2]));
     if (!(pair.normal.squaredNorm() > 0.0)) return;
     pair.normal.normalize();
     Eigen::Vector3d at_end = Eigen::Vector3d::Zero();
     for (int k = 0; k < 4; ++k)
-      at_end += pair.beta[k] * row(end, pair.vertex[k]);
+      at_end += pair.beta[k] * vertex_row(end, pair.vertex[k]);
     if (at_end.dot(pair.normal) < 0.0) pair.normal = -pair.normal;
   }
   // A pair that starts closer than the thickness (the last step's sweeps left it short, or two
@@ -273,9 +258,7 @@ void SelfContactDetection::commit(Chunk& chunk) const {
 
 std::size_t SelfContactDetection::memory_bytes() const {
   std::size_t bytes =
-      (wander_.capacity() + triangle_wander_.capacity() + edge_wander_.capacity() +
-       extents_.capacity()) *
-          sizeof(double) +
+      (wander_.capacity() + extents_.capacity()) * sizeof(double) +
       (triangle_boxes_.capacity() + edge_boxes_.capacity()) * sizeof(Eigen::AlignedBox3d) +
       triangle_grid_.memory_bytes() + edge_grid_.memory_bytes();
   for (const Chunk& chunk : chunks_)

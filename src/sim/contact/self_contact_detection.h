@@ -49,6 +49,9 @@ struct SelfContactPair {
 class SelfContactDetection {
  public:
   static constexpr int max_pairs_per_feature = 32;
+  // How much of the thickness a pair that starts too close may open up by in one step: pushed
+  // out at once it would leave with the whole shortfall as speed, and a pile kept on bouncing.
+  static constexpr double recovery_fraction = 0.1;
   static constexpr int max_examined = 256;
   // The most boxes a query meets, those it skips (its own neighbourhood) included.
   static constexpr int max_met = 4 * max_examined;
@@ -93,7 +96,6 @@ class SelfContactDetection {
   Eigen::Vector3d mean_motion_ = Eigen::Vector3d::Zero();
 
   std::vector<double> wander_;  // #V: ‖uᵥ − ū‖ (m)
-  std::vector<double> triangle_wander_, edge_wander_;
   std::vector<Eigen::AlignedBox3d> triangle_boxes_, edge_boxes_;
   std::vector<double> extents_;
   SpatialGrid triangle_grid_, edge_grid_;

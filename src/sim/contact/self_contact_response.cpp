@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/contact/vertex_row.h"
+
 namespace wobble {
 
 namespace {
-
-Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
-  return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
-}
 
 // Moves the pair's vertices so that Σβₖxₖ moves by `amount` (m) along `direction`, each vertex
 // by wₖβₖλ; returns λ. No vertex moves farther than `amount`: when the only vertex free to move
@@ -137,7 +135,8 @@ void SelfContactResponse::apply_friction(std::vector<SelfContactPair>& pairs,
     // The pair's relative motion over the step, less its normal part.
     Eigen::Vector3d relative = Eigen::Vector3d::Zero();
     for (int k = 0; k < 4; ++k)
-      relative += pair.beta[k] * (row(next, pair.vertex[k]) - row(current, pair.vertex[k]));
+      relative +=
+          pair.beta[k] * (vertex_row(next, pair.vertex[k]) - vertex_row(current, pair.vertex[k]));
     const Eigen::Vector3d tangential = relative - relative.dot(pair.normal) * pair.normal;
     const double slide = tangential.norm();
     if (!(slide > 0.0)) continue;

@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <initializer_list>
 
+#include "sim/contact/vertex_row.h"
+
 namespace wobble {
 
 namespace {
-
-Eigen::Vector3d row(const Eigen::MatrixXd& m, int i) {
-  return Eigen::Vector3d(m(i, 0), m(i, 1), m(i, 2));
-}
 
 constexpr int chunks = 32;
 // The most triangles the first round looks at for one edge.
@@ -37,13 +35,14 @@ bool SelfCrossingGuard::crosses(const SelfCollisionSurface& surface, int edge, i
   const int a = surface.triangles(triangle, 0), b = surface.triangles(triangle, 1),
             c = surface.triangles(triangle, 2);
   if (p == a || p == b || p == c || q == a || q == b || q == c) return false;
-  if (!segment_crosses_triangle(row(next, p), row(next, q), row(next, a), row(next, b),
-                                row(next, c))) {
+  if (!segment_crosses_triangle(vertex_row(next, p), vertex_row(next, q), vertex_row(next, a),
+                                vertex_row(next, b), vertex_row(next, c))) {
     return false;
   }
   // A crossing the step started with (a tangle from before) is not this step's doing.
-  return !segment_crosses_triangle(row(current, p), row(current, q), row(current, a),
-                                   row(current, b), row(current, c));
+  return !segment_crosses_triangle(vertex_row(current, p), vertex_row(current, q),
+                                   vertex_row(current, a), vertex_row(current, b),
+                                   vertex_row(current, c));
 }
 
 void SelfCrossingGuard::build_grids(const SelfCollisionSurface& surface,
@@ -60,9 +59,9 @@ void SelfCrossingGuard::build_grids(const SelfCollisionSurface& surface,
     const int a = surface.triangles(t, 0), b = surface.triangles(t, 1), c = surface.triangles(t, 2);
     Eigen::AlignedBox3d box;  // empty: not filed
     if (watching({a, b, c})) {
-      box.extend(row(next, a));
-      box.extend(row(next, b));
-      box.extend(row(next, c));
+      box.extend(vertex_row(next, a));
+      box.extend(vertex_row(next, b));
+      box.extend(vertex_row(next, c));
     }
     triangle_boxes_[t] = box;
   }
@@ -71,8 +70,8 @@ void SelfCrossingGuard::build_grids(const SelfCollisionSurface& surface,
     const int p = surface.edges(e, 0), q = surface.edges(e, 1);
     Eigen::AlignedBox3d box;
     if (watching({p, q})) {
-      box.extend(row(next, p));
-      box.extend(row(next, q));
+      box.extend(vertex_row(next, p));
+      box.extend(vertex_row(next, q));
     }
     edge_boxes_[e] = box;
   }
