@@ -10,7 +10,7 @@ namespace wobble {
 namespace {
 
 constexpr int chunks = 32;
-// The most triangles the first round looks at for one edge.
+// The most triangles a round looks at for one edge, and edges for one triangle.
 constexpr int max_met = 1024;
 
 // Whether segment pq passes through triangle abc: p and q strictly on opposite sides of its
@@ -155,18 +155,20 @@ int SelfCrossingGuard::undo_crossings(const SelfCollisionSurface& surface,
           const int e = surface.vertex_edges.ids[s];
           if (edge_checked_[e] == round) continue;
           edge_checked_[e] = round;
+          int met = 0;
           triangle_grid_.for_each_overlapping(edge_boxes_[e], [&](int t) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, found_);
-            return true;
+            return ++met < max_met;
           });
         }
         for (int s = surface.vertex_triangles.begin(v); s < surface.vertex_triangles.end(v); ++s) {
           const int t = surface.vertex_triangles.ids[s];
           if (triangle_checked_[t] == round) continue;
           triangle_checked_[t] = round;
+          int met = 0;
           edge_grid_.for_each_overlapping(triangle_boxes_[t], [&](int e) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, found_);
-            return true;
+            return ++met < max_met;
           });
         }
       }
