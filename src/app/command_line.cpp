@@ -6,6 +6,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "io/output_target.h"
 #include "parse_number.h"
 #include "scene_catalog.h"
 #include "sim/input_error.h"
@@ -74,6 +75,31 @@ double number_between(const char* option, const std::string& text, double low, d
 std::string path_value(const char* option, const std::string& text, const char* what) {
   if (text.empty()) throw InputError(std::string(option) + ": expected a " + what + ", got ''");
   return text;
+}
+
+// Two outputs that would write one file, links followed: the later would silently replace the
+// earlier. A device, a terminal or a pipe takes both, one after the other.
+void check_distinct_outputs(const CommandLine& command) {
+  const std::pair<const char*, const std::string*> outputs[] = {
+      {"--screenshot", &command.screenshot},
+      {"--export-obj", &command.export_obj},
+      {"--convergence-csv", &command.convergence_csv},
+      {"--energy-csv", &command.energy_csv}};
+  std::vector<std::pair<std::string, std::string>> seen;  // option and identity
+  for (const auto& [option, path] : outputs) {
+    OutputTarget target;
+    // A path that cannot be written is refused later, by the output's own check.
+    if (path->empty() || !resolve_output(*path, target).empty() || target.identity.empty()) {
+      continue;
+    }
+    for (const auto& [earlier, identity] : seen) {
+      if (identity == target.identity) {
+        throw InputError(earlier + ", " + option + ": both would write " +
+                         shown_output(*path, target) + ", expected a file for each");
+      }
+    }
+    seen.emplace_back(option, target.identity);
+  }
 }
 
 }  // namespace
@@ -257,6 +283,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
     }
     command.color_by = *quantity;
   }
+  check_distinct_outputs(command);
   return command;
 }
 

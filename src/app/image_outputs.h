@@ -28,6 +28,11 @@ class ImageOutputs {
   // The record folder's file for a frame: DIR/frame_00001.png (or another extension).
   static std::string frame_file(const std::string& folder, long frame,
                                 const char* extension = ".png");
+  // Makes `folder` if it is missing, and removes the frames of an earlier recording in it
+  // (files named as frame_file names them, with `extension`), so that a recording into a
+  // folder that held a longer one never leaves that one's frames after its own. Other files
+  // are left alone. Returns how many frames were removed. OutputError if one cannot be.
+  static long start_frame_folder(const std::string& folder, const char* extension = ".png");
 
  private:
   std::string screenshot_, record_folder_;

@@ -82,8 +82,8 @@ void InstrumentCsv::record(long frame, const Simulation& simulation) {
 }
 
 void InstrumentCsv::write() const {
-  if (!convergence_path_.empty()) write_file_atomically(convergence_path_, convergence_);
-  if (!energy_path_.empty()) write_file_atomically(energy_path_, energy_);
+  if (!convergence_path_.empty()) write_output_file(convergence_path_, convergence_);
+  if (!energy_path_.empty()) write_output_file(energy_path_, energy_);
 }
 
 }  // namespace wobble

@@ -15,7 +15,7 @@ ObjSequence::ObjSequence(std::string folder) : folder_(std::move(folder)) {
 void ObjSequence::write(long frame, const Eigen::MatrixXd& positions,
                         const SpringNetwork& network) const {
   if (folder_.empty()) return;
-  if (!folder_made_) make_output_folder(folder_);
+  if (!folder_made_) ImageOutputs::start_frame_folder(folder_, ".obj");
   folder_made_ = true;
   write_obj(ImageOutputs::frame_file(folder_, frame, ".obj"), positions, network.F, network.E);
 }

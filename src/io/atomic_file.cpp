@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "io/output_target.h"
 #include "sim/input_error.h"
 
 namespace wobble {
@@ -98,31 +99,20 @@ void sync_folder(const std::string& path) {
 
 void check_output_path(const std::string& option, const std::string& path) {
   if (path.empty()) throw InputError(option + ": expected a file path, got ''");
-  struct stat info {};
-  if (stat(path.c_str(), &info) == 0) {
-    if (S_ISDIR(info.st_mode)) {
-      throw InputError(option + ": '" + path + "' is a folder, expected a file path");
-    }
-    if (!S_ISREG(info.st_mode)) {
-      throw InputError(option + ": '" + path +
-                       "' exists and is not a regular file (a device, FIFO or socket), expected "
-                       "a new file or a regular file to replace");
-    }
-  } else if (errno != ENOENT) {
-    throw InputError(option + ": cannot use '" + path + "': " + std::strerror(errno) +
-                     ", expected a file path that can be written");
-  }
-  const std::string folder = parent_folder(path);
-  if (stat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode)) {
-    throw InputError(option + ": '" + path + "': folder '" + folder + "' does not exist");
+  OutputTarget target;
+  const std::string problem = resolve_output(path, target);
+  if (!problem.empty()) throw InputError(option + ": '" + path + "' " + problem);
+  if (target.kind == OutputTarget::Kind::in_place ||
+      target.kind == OutputTarget::Kind::descriptor) {
+    return;  // written where it is: nothing is made beside it
   }
   // The very file the write will make first, made and removed: whatever would stop the write
   // at the end of the run stops it now.
   std::vector<char> temporary;
-  const int fd = create_temporary(path, temporary);
+  const int fd = create_temporary(target.path, temporary);
   if (fd < 0) {
-    throw InputError(option + ": cannot write a file beside '" + path + "': " +
-                     std::strerror(errno) + ", expected a writable folder and a shorter name");
+    throw InputError(option + ": cannot write a file beside " + shown_output(path, target) +
+                     ": " + std::strerror(errno) + ", expected a writable folder and a shorter name");
   }
   close(fd);
   forget_temporary(temporary, true);
@@ -155,12 +145,23 @@ void make_output_folder(const std::string& folder) {
   }
 }
 
-void write_file_atomically(const std::string& path, const std::string& contents) {
-  // Never rename over a device or a FIFO that appeared after the checks (a later frame's name).
+void write_output_file(const std::string& output, const std::string& contents) {
+  // Resolved again at the write: a later frame's name, or a link made since the checks.
+  OutputTarget target;
+  const std::string problem = resolve_output(output, target);
+  if (!problem.empty()) throw OutputError(output + ": " + problem + "; nothing written");
+  if (target.kind == OutputTarget::Kind::in_place ||
+      target.kind == OutputTarget::Kind::descriptor) {
+    const std::string failure = write_in_place(target, contents);
+    if (!failure.empty()) throw OutputError(output + ": " + failure);
+    return;
+  }
+  // A link is written through: its target is replaced, the link stays.
+  const std::string& path = target.path;
   struct stat info {};
   const bool replaces = stat(path.c_str(), &info) == 0;
   if (replaces && !S_ISREG(info.st_mode)) {
-    throw OutputError(path + ": exists and is not a regular file; not replaced");
+    throw OutputError(output + ": exists and is not a regular file; not replaced");
   }
   std::vector<char> temporary;
   const int fd = create_temporary(path, temporary);

@@ -114,7 +114,7 @@ std::string encode_png(const RgbaImage& image) {
 }
 
 void write_png(const std::string& path, const RgbaImage& image) {
-  write_file_atomically(path, encode_png(image));
+  write_output_file(path, encode_png(image));
 }
 
 RgbaImage read_png(const std::string& path, int max_side) {

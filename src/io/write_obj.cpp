@@ -48,7 +48,7 @@ std::string obj_text(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const E
 
 void write_obj(const std::string& path, const Eigen::MatrixXd& V, const Eigen::MatrixXi& F,
                const Eigen::MatrixXi& E) {
-  write_file_atomically(path, obj_text(V, F, E));
+  write_output_file(path, obj_text(V, F, E));
 }
 
 }  // namespace wobble

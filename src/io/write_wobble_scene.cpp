@@ -230,9 +230,9 @@ void write_wobble_scene(const std::string& json_path, const Scene& scene) {
 
   std::error_code ignored;
   const bool mesh_existed = fs::exists(mesh_path, ignored);
-  write_file_atomically(mesh_path, wobble_scene_obj_text(scene));
+  write_output_file(mesh_path, wobble_scene_obj_text(scene));
   try {
-    write_file_atomically(json_path, json_text);
+    write_output_file(json_path, json_text);
   } catch (...) {
     if (!mesh_existed) fs::remove(mesh_path, ignored);
     throw;
