@@ -304,6 +304,8 @@ void Viewer::apply_panel_settings() {
     simulation_->set_dt(panel_.dt);
     pacer_.restart();
   }
+  // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
+  panel_.iterations = std::min(panel_.iterations, simulation_->max_iterations_for_mesh());
   if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
   if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
   // The slider is gravity's strength: the scene's direction stays, sideways part included.

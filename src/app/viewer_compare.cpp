@@ -72,6 +72,7 @@ void Viewer::apply_split_settings() {
   const SimulationParams& params = twin_->params();
   if (static_cast<float>(params.k) != panel_.right_k) twin_->set_k(panel_.right_k);
   if (static_cast<float>(params.dt) != panel_.right_dt) twin_->set_dt(panel_.right_dt);
+  panel_.right_iterations = std::min(panel_.right_iterations, twin_->max_iterations_for_mesh());
   if (params.iterations != panel_.right_iterations) twin_->set_iterations(panel_.right_iterations);
   if (params.chebyshev != panel_.right_chebyshev) twin_->set_chebyshev(panel_.right_chebyshev);
 }

@@ -203,6 +203,7 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   solver_.set_single_precision_above(params_.single_precision_solve_above);
   solver_.analyze(Q_);
   ++symbolic_analyses_;
+  check_step_work(params_.iterations);  // the factor's size is known before it is computed
   refactorize();
   reset();
   if (params_.chebyshev) calibrate_chebyshev();

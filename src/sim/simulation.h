@@ -235,6 +235,9 @@ class Simulation {
   int numeric_factorizations() const { return numeric_factorizations_; }
   // Nonzeros of the Cholesky factor L of Q, its diagonal included.
   long factor_nonzeros() const { return solver_.factor_nonzeros(); }
+  // The most iterations a step of this mesh may take (limits::max_step_work): its springs and
+  // its factor's nonzeros are one iteration's work. At least 1 and at most max_iterations.
+  int max_iterations_for_mesh() const;
   double factorization_work() const { return solver_.factorization_work(); }
   // Whether the solve reads the factor's values rounded to float (a large factor).
   bool solves_in_single_precision() const { return solver_.solves_in_single_precision(); }
@@ -248,6 +251,8 @@ class Simulation {
   StepContext step_context() const;
   // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
   void refactorize();
+  // InputError unless `iterations` fit max_iterations_for_mesh.
+  void check_step_work(int iterations) const;
   void calibrate_chebyshev();
   // next_ = the accelerated iterate from next_ and the plain solve solved_; see step().
   void accelerate(int iteration, bool restart_on_growth);

@@ -1,5 +1,8 @@
 // The Simulation's setters: each changes what it must and no more (see the README's table of
 // costs): k and dt re-factorize numerically, pins re-factorize, targets and iterations do not.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -30,7 +33,29 @@ void Simulation::set_iterations(int iterations) {
   SimulationParams changed = params_;
   changed.iterations = iterations;
   validate_simulation_params(changed);
+  check_step_work(iterations);
   params_.iterations = iterations;
+}
+
+int Simulation::max_iterations_for_mesh() const {
+  const double per_iteration =
+      static_cast<double>(network_.E.rows()) + static_cast<double>(solver_.factor_nonzeros());
+  const double most = std::floor(limits::max_step_work / std::max(per_iteration, 1.0));
+  return static_cast<int>(std::clamp(most, 1.0, static_cast<double>(max_iterations)));
+}
+
+void Simulation::check_step_work(int iterations) const {
+  if (iterations <= max_iterations_for_mesh()) return;
+  const double work = static_cast<double>(iterations) *
+                      (static_cast<double>(network_.E.rows()) + solver_.factor_nonzeros());
+  std::ostringstream message;
+  message.precision(2);
+  message << "iterations and the mesh: " << iterations << " iterations of "
+          << network_.E.rows() << " springs and a Cholesky factor of " << solver_.factor_nonzeros()
+          << " nonzeros are " << work << " units of work a step, expected at most "
+          << limits::max_step_work << ": at most " << max_iterations_for_mesh()
+          << " iterations for this mesh, or a coarser mesh";
+  throw InputError(message.str());
 }
 
 void Simulation::set_chebyshev(bool on) {

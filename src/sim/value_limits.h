@@ -30,6 +30,13 @@ inline constexpr ValueRange time_step{1e-9, 1.0, "s"};
 // Local-global iterations per step: 5000 on the built-in cloth are a few seconds a step (tests
 // take 3000 for a converged step).
 inline constexpr int max_iterations = 5000;
+// The work of one step, as iterations x (springs + the Cholesky factor's nonzeros): each
+// iteration visits every spring (local step) and every nonzero of the factor twice (forward and
+// back substitution). Each limit alone is fine, but not their product: 5,000 iterations of a
+// 256x256 cloth (390,658 springs, a factor of 5.85 million nonzeros) are 3.1e10, over a minute
+// a frame. 2e9 is about 7 s a frame on a 2-core laptop: 320 iterations of that cloth, and all
+// 5,000 of the built-in 40x40 cloth (3.6e8).
+inline constexpr double max_step_work = 2e9;
 // Gravity and every initial velocity, each component (and the sway's top speed).
 inline constexpr ValueRange acceleration{-1000.0, 1000.0, "m/s²"};
 inline constexpr ValueRange speed{-1000.0, 1000.0, "m/s"};

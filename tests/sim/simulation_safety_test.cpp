@@ -2,7 +2,10 @@
 // and the extreme settings a curious user can reach keep running.
 #include <gtest/gtest.h>
 
+#include "sim/input_error.h"
+#include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
+#include "sim/value_limits.h"
 #include "test_meshes.h"
 
 namespace {
@@ -108,3 +111,41 @@ TEST(SimulationSafety, DescriptionsSayWhatToTry) {
 }
 
 }  // namespace
+
+// Iterations and mesh size are each within their limits, but not always their product: a step
+// of 5,000 iterations of a 256x256 cloth ran past a minute. The bound is computed from this
+// mesh's springs and factor, and refusals name both settings.
+TEST(SimulationSafety, TheWorkOfAStepIsBoundedByIterationsTimesTheMesh) {
+  wobble::ClothGridOptions options;
+  options.resolution = 128;
+  const wobble::SpringNetwork cloth = wobble::make_cloth_grid(options);
+  wobble::SimulationParams params;
+  params.iterations = 10;
+  wobble::Simulation simulation(cloth, {0}, params);
+  const int most = simulation.max_iterations_for_mesh();
+  const double per_iteration =
+      static_cast<double>(cloth.E.rows()) + static_cast<double>(simulation.factor_nonzeros());
+  EXPECT_LE(most * per_iteration, wobble::limits::max_step_work);
+  EXPECT_GT((most + 1) * per_iteration, wobble::limits::max_step_work);
+  EXPECT_LT(most, wobble::Simulation::max_iterations);  // the product binds before the limit
+  EXPECT_NO_THROW(simulation.set_iterations(most));
+  try {
+    simulation.set_iterations(most + 1);
+    ADD_FAILURE() << "one iteration past the bound was taken";
+  } catch (const wobble::InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("iterations and the mesh"), std::string::npos) << message;
+    EXPECT_NE(message.find("at most " + std::to_string(most) + " iterations"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  EXPECT_EQ(simulation.params().iterations, most);
+  params.iterations = most + 1;
+  EXPECT_THROW(wobble::Simulation(cloth, {0}, params), wobble::InputError);
+  // The built-in 40x40 cloth takes every iteration the limit allows.
+  options.resolution = 40;
+  params.iterations = wobble::Simulation::max_iterations;
+  EXPECT_EQ(wobble::Simulation(wobble::make_cloth_grid(options), {0}, params)
+                .max_iterations_for_mesh(),
+            wobble::Simulation::max_iterations);
+}
