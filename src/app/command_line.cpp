@@ -262,6 +262,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   if (screenshot) command.screenshot = path_value("--screenshot", *screenshot, "file path");
   if (record) command.record = path_value("--record", *record, "folder path");
+  if (command.compare && command.headless && !command.writes_images()) {
+    throw InputError(
+        "--compare: shows the two sides in the split view, so it needs the window or, "
+        "headless, --screenshot or --record");
+  }
   if (!command.student.empty() && command.headless && !command.writes_images()) {
     throw InputError(
         "--student: shows the student's step beside Wobble's, so it needs the window "
@@ -288,6 +293,24 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
 }
 
 void apply_scene_overrides(const CommandLine& command, SimulationParams& params) {
+  // One rule for every scene format: a flag the scene cannot honour is refused, never accepted
+  // and ignored or reported as on. A course scene runs the reference program's method exactly
+  // (its k, dt, iterations and wind are the reference's own settings).
+  if (params.gravity_model == GravityModel::force_per_vertex) {
+    const std::pair<bool, const char*> changes_method[] = {
+        {command.chebyshev, "--chebyshev"},
+        {command.damping.has_value(), "--damping"},
+        {command.friction.has_value(), "--friction"},
+        {command.self_collision_thickness.has_value(), "--self-collision-thickness"},
+        {command.self_collision, "--self-collision"}};
+    for (const auto& [given, option] : changes_method) {
+      if (given) {
+        throw InputError(std::string(option) +
+                         ": not for a course scene, which keeps the reference's behaviour "
+                         "(its k, dt, iterations and wind may be set)");
+      }
+    }
+  }
   if (command.damping) params.damping = *command.damping;
   if (command.friction) params.contact.friction = *command.friction;
   if (command.wind) {
@@ -297,12 +320,6 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
     params.wind.on = true;
   }
   if (command.self_collision) {
-    if (params.gravity_model == GravityModel::force_per_vertex) {
-      throw InputError(
-          std::string(command.self_collision_thickness ? "--self-collision-thickness"
-                                                       : "--self-collision") +
-          ": not for a course scene, which keeps the reference's behaviour (no self-collision)");
-    }
     params.self_collision.on = true;
     if (command.self_collision_thickness) {
       params.self_collision.thickness = *command.self_collision_thickness;

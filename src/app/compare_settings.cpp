@@ -56,12 +56,19 @@ CompareSettings parse_compare_settings(const std::string& text) {
         "got '" +
         text + "'");
   }
+  std::vector<std::string> named;
   for (const std::string& part : parts) {
     const std::size_t equals = part.find('=');
     if (equals == std::string::npos) {
       throw InputError("--compare: expected name=value, got '" + part + "'");
     }
     const std::string name = part.substr(0, equals), value = part.substr(equals + 1);
+    // As in a scene file, a setting given twice is refused: which one was meant?
+    if (std::find(named.begin(), named.end(), name) != named.end()) {
+      throw InputError("--compare: " + name + " is given twice in '" + text +
+                       "', expected each setting once");
+    }
+    named.push_back(name);
     if (name == "iterations") {
       const std::optional<long> count = parse_number<long>(value);
       if (!count || *count < 1 || *count > Simulation::max_iterations) {

@@ -111,8 +111,8 @@ void check_output_path(const std::string& option, const std::string& path) {
   std::vector<char> temporary;
   const int fd = create_temporary(target.path, temporary);
   if (fd < 0) {
-    throw InputError(option + ": cannot write a file beside " + shown_output(path, target) +
-                     ": " + std::strerror(errno) + ", expected a writable folder and a shorter name");
+    throw InputError(option + ": cannot write a file beside " + shown_output(path, target) + ": " +
+                     std::strerror(errno) + ", expected a writable folder and a shorter name");
   }
   close(fd);
   forget_temporary(temporary, true);

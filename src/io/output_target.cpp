@@ -28,8 +28,8 @@ std::optional<int> descriptor_named(const std::string& path) {
   if (normal == "/dev/stdout") return 1;
   if (normal == "/dev/stderr") return 2;
   const std::string own = "/proc/" + std::to_string(getpid()) + "/fd/";
-  for (const std::string& prefix :
-       {std::string("/dev/fd/"), std::string("/proc/self/fd/"), std::string("/proc/thread-self/fd/"), own}) {
+  for (const std::string& prefix : {std::string("/dev/fd/"), std::string("/proc/self/fd/"),
+                                    std::string("/proc/thread-self/fd/"), own}) {
     if (normal.compare(0, prefix.size(), prefix) != 0) continue;
     const std::string number = normal.substr(prefix.size());
     if (number.empty() || number.size() > 9 ||
@@ -61,7 +61,8 @@ std::string resolve_entry(const std::string& path, const struct stat& info, Outp
   if (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) || S_ISFIFO(info.st_mode)) {
     target.kind = OutputTarget::Kind::in_place;
     target.identity = "";  // written in place, one output after the other: nothing is lost
-    if (access(path.c_str(), W_OK) != 0) return std::string("cannot be written: ") + strerror(errno);
+    if (access(path.c_str(), W_OK) != 0)
+      return std::string("cannot be written: ") + strerror(errno);
     return "";
   }
   if (S_ISDIR(info.st_mode)) return "is a folder, expected a file path";
@@ -117,9 +118,8 @@ std::string resolve_output(const std::string& path, OutputTarget& target) {
     }
     std::error_code error;
     const std::filesystem::path canonical = std::filesystem::canonical(folder, error);
-    target.identity =
-        "new " + (error ? folder : canonical.string()) + "/" +
-        std::filesystem::path(current).filename().string();
+    target.identity = "new " + (error ? folder : canonical.string()) + "/" +
+                      std::filesystem::path(current).filename().string();
     return "";
   }
   return "is a link in a chain of more than " + std::to_string(max_links) + " links (a loop?)";
@@ -127,7 +127,8 @@ std::string resolve_output(const std::string& path, OutputTarget& target) {
 
 std::string shown_output(const std::string& path, const OutputTarget& target) {
   std::string shown = "'" + path + "'";
-  if (target.kind != OutputTarget::Kind::descriptor && !target.path.empty() && target.path != path) {
+  if (target.kind != OutputTarget::Kind::descriptor && !target.path.empty() &&
+      target.path != path) {
     shown += " (a link to '" + target.path + "')";
   }
   return shown;

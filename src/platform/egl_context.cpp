@@ -9,6 +9,8 @@
 #include <cstring>
 #include <string>
 
+#include "sim/input_error.h"
+
 namespace wobble {
 
 namespace {
@@ -147,8 +149,9 @@ EglContext::EglContext() {
   const char* only = std::getenv("WOBBLE_EGL_PLATFORM");
   const std::string forced = only == nullptr ? "" : only;
   if (!forced.empty() && forced != "device" && forced != "surfaceless") {
-    throw ContextError("WOBBLE_EGL_PLATFORM: expected 'device' or 'surfaceless', got '" + forced +
-                       "'");
+    // A setting the user gave, not a failure of the machine: bad input, exit 2.
+    throw InputError("WOBBLE_EGL_PLATFORM: expected 'device' or 'surfaceless' (or unset), got '" +
+                     forced + "'");
   }
   const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string failures;

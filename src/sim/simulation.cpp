@@ -201,9 +201,10 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   update_external_forces();
 
   solver_.set_single_precision_above(params_.single_precision_solve_above);
+  check_step_work(params_.iterations, /*analyzed=*/false);
   solver_.analyze(Q_);
   ++symbolic_analyses_;
-  check_step_work(params_.iterations);  // the factor's size is known before it is computed
+  check_step_work(params_.iterations, /*analyzed=*/true);  // before the factor is computed
   refactorize();
   reset();
   if (params_.chebyshev) calibrate_chebyshev();

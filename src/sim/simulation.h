@@ -251,8 +251,9 @@ class Simulation {
   StepContext step_context() const;
   // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
   void refactorize();
-  // InputError unless `iterations` fit max_iterations_for_mesh.
-  void check_step_work(int iterations) const;
+  // InputError unless `iterations` fit max_iterations_for_mesh; before the analysis
+  // (`analyzed` false) the factor is taken as its diagonal alone, a lower bound.
+  void check_step_work(int iterations, bool analyzed) const;
   void calibrate_chebyshev();
   // next_ = the accelerated iterate from next_ and the plain solve solved_; see step().
   void accelerate(int iteration, bool restart_on_growth);

@@ -33,28 +33,41 @@ void Simulation::set_iterations(int iterations) {
   SimulationParams changed = params_;
   changed.iterations = iterations;
   validate_simulation_params(changed);
-  check_step_work(iterations);
+  check_step_work(iterations, /*analyzed=*/true);
   params_.iterations = iterations;
 }
 
-int Simulation::max_iterations_for_mesh() const {
-  const double per_iteration =
-      static_cast<double>(network_.E.rows()) + static_cast<double>(solver_.factor_nonzeros());
-  const double most = std::floor(limits::max_step_work / std::max(per_iteration, 1.0));
-  return static_cast<int>(std::clamp(most, 1.0, static_cast<double>(max_iterations)));
+namespace {
+
+int most_iterations(double springs, double factor_nonzeros) {
+  const double most = std::floor(limits::max_step_work / std::max(springs + factor_nonzeros, 1.0));
+  return static_cast<int>(std::clamp(most, 1.0, static_cast<double>(limits::max_iterations)));
 }
 
-void Simulation::check_step_work(int iterations) const {
-  if (iterations <= max_iterations_for_mesh()) return;
-  const double work = static_cast<double>(iterations) *
-                      (static_cast<double>(network_.E.rows()) + solver_.factor_nonzeros());
+}  // namespace
+
+int Simulation::max_iterations_for_mesh() const {
+  return most_iterations(static_cast<double>(network_.E.rows()),
+                         static_cast<double>(solver_.factor_nonzeros()));
+}
+
+void Simulation::check_step_work(int iterations, bool analyzed) const {
+  const double springs = static_cast<double>(network_.E.rows());
+  // Before the analysis, the factor is known to hold at least its diagonal: a step that is
+  // too much work with that alone is refused before the analysis takes its memory.
+  const double factor = analyzed ? static_cast<double>(solver_.factor_nonzeros())
+                                 : static_cast<double>(network_.V.rows());
+  const int most = most_iterations(springs, factor);
+  if (iterations <= most) return;
   std::ostringstream message;
   message.precision(2);
-  message << "iterations and the mesh: " << iterations << " iterations of "
-          << network_.E.rows() << " springs and a Cholesky factor of " << solver_.factor_nonzeros()
-          << " nonzeros are " << work << " units of work a step, expected at most "
-          << limits::max_step_work << ": at most " << max_iterations_for_mesh()
-          << " iterations for this mesh, or a coarser mesh";
+  message << "iterations and the mesh: " << iterations << " iterations of " << network_.E.rows()
+          << " springs and a Cholesky factor of " << (analyzed ? "" : "at least ")
+          << static_cast<long>(factor) << " nonzeros are " << (analyzed ? "" : "at least ")
+          << iterations * (springs + factor) << " units of work a step, expected at most "
+          << limits::max_step_work << ": ";
+  if (analyzed) message << "at most " << most << " iterations for this mesh, ";
+  message << (analyzed ? "or a coarser mesh" : "fewer iterations or a coarser mesh");
   throw InputError(message.str());
 }
 

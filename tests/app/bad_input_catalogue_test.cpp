@@ -858,11 +858,93 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   EXPECT_EQ(after, expected_entries) << "a file was written";
 }
 
+// Issue 28's classes, as a table: outputs that would clobber one another or that a link cannot
+// reach, settings whose product is too much work, flags a scene cannot honour, and settings
+// given twice.
+std::vector<BadInput> round_two_catalogue() {
+  const std::pair<std::string, std::string> triangle = {"tri.obj", triangle_obj};
+  const auto link = [](const char* name, const char* target) {
+    return Special{Special::symlink, name, target};
+  };
+  return {
+      {"two_outputs_one_file",
+       {},
+       "cloth",
+       {"--convergence-csv, --energy-csv", "both would write", "a.csv"},
+       {},
+       false,
+       nullptr,
+       "--energy-csv '{dir}/a.csv' --convergence-csv '{dir}/a.csv'"},
+      {"two_outputs_one_file_through_a_link",
+       {},
+       "cloth",
+       {"--export-obj, --energy-csv", "both would write", "alias.csv", "a link to"},
+       {link("alias.csv", "a.csv")},
+       false,
+       nullptr,
+       "--energy-csv '{dir}/alias.csv' --export-obj '{dir}/a.csv'"},
+      {"two_outputs_one_existing_file_spelt_two_ways",
+       {{"a.obj", "kept\n"}},
+       "cloth",
+       {"both would write"},
+       {},
+       true,
+       nullptr,
+       "--export-obj '{dir}/a.obj' --energy-csv '{dir}/./a.obj'"},
+      {"output_link_into_a_missing_folder",
+       {},
+       "cloth",
+       {"--energy-csv", "lost.csv", "is a link to", "nowhere", "does not exist"},
+       {link("lost.csv", "nowhere/x.csv")},
+       false,
+       nullptr,
+       "--energy-csv '{dir}/lost.csv'"},
+      {"output_link_to_a_folder",
+       {{"sub/keep", ""}},
+       "cloth",
+       {"--export-obj", "to-sub.obj", "is a folder"},
+       {link("to-sub.obj", "sub")},
+       false,
+       nullptr,
+       "--export-obj '{dir}/to-sub.obj'"},
+      {"iterations_times_a_large_cloth",
+       {{"big.json", "{\"mesh\": {\"generator\": \"cloth\", \"resolution\": 256}}"}},
+       "{dir}/big.json --iterations 5000",
+       {"big.json", "iterations and the mesh", "5000 iterations", "a coarser mesh"}},
+      {"compare_setting_twice",
+       {},
+       "cloth --compare iterations=5,iterations=6",
+       {"--compare", "iterations is given twice"}},
+      {"compare_headless_without_an_image",
+       {},
+       "cloth --compare k=100",
+       {"--compare", "--screenshot or --record"},
+       {},
+       false},
+      {"course_scene_with_chebyshev",
+       {triangle, {"c.json", course("")}},
+       "{dir}/c.json --chebyshev",
+       {"--chebyshev", "not for a course scene"}},
+      {"course_scene_with_damping",
+       {triangle, {"c.json", course("")}},
+       "{dir}/c.json --damping 1",
+       {"--damping", "not for a course scene"}},
+      {"course_scene_with_friction",
+       {triangle, {"c.json", course("")}},
+       "{dir}/c.json --friction 0.5",
+       {"--friction", "not for a course scene"}},
+  };
+}
+
 INSTANTIATE_TEST_SUITE_P(BadInput, Catalogue, ::testing::ValuesIn(catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });
 INSTANTIATE_TEST_SUITE_P(BadContactInput, Catalogue, ::testing::ValuesIn(contact_catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+INSTANTIATE_TEST_SUITE_P(RoundTwo, Catalogue, ::testing::ValuesIn(round_two_catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });

@@ -80,6 +80,18 @@ TEST(HeadlessRender, BothEglPlatformsDrawTheSamePicture) {
             wobble::read_png(folder.file("surfaceless.png")).pixels);
 }
 
+TEST(HeadlessRender, AnUnknownEglPlatformIsBadInputAndWritesNothing) {
+  TemporaryFolder folder;
+  const auto run =
+      run_wobble("cloth --headless --frames 2 --screenshot '" + folder.file("a.png") + "'",
+                 no_display + " WOBBLE_EGL_PLATFORM=wayland");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(run.err,
+            "wobble: WOBBLE_EGL_PLATFORM: expected 'device' or 'surfaceless' (or unset), got "
+            "'wayland'\n");
+  EXPECT_TRUE(folder.entries().empty());
+}
+
 TEST(HeadlessRender, RecordWritesEveryFrameAndTheyMove) {
   TemporaryFolder folder;
   const std::string record = folder.file("frames");

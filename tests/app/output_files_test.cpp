@@ -17,11 +17,14 @@ using wobble::testing::TemporaryFolder;
 
 namespace {
 
-std::string quoted(const std::string& path) { return "'" + path + "'"; }
+std::string quoted(const std::string& path) {
+  return "'" + path + "'";
+}
 
 int lines(const std::string& text) {
   int count = 0;
-  for (const char c : text) count += c == '\n';
+  for (const char c : text)
+    count += c == '\n';
   return count;
 }
 

@@ -72,6 +72,14 @@ TEST(ThreadOptions, AVariableThatCannotBeObeyedIsReportedOnOneLine) {
   EXPECT_EQ(stats_of(result)["threads_from"], "processors");
 }
 
+TEST(ThreadOptions, AValueWithALineBreakStaysOnOneLine) {
+  const Result result = run_wobble(short_run, only("OMP_NUM_THREADS=\"$(printf '2\\nx')\""));
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err,
+            "wobble: warning: OMP_NUM_THREADS='2\\nx' is not a whole number of threads from 1 to " +
+                std::to_string(wobble::max_setting_threads) + ", so it is not obeyed\n");
+}
+
 TEST(ThreadOptions, TheFlagRefusesWhatItCannotObey) {
   for (const char* value : {"0", "65", "two", "1.5", "-1"}) {
     const Result result = run_wobble(std::string("cloth --headless --frames 1 --threads ") + value);

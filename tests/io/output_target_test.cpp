@@ -50,7 +50,8 @@ TEST(OutputTarget, ALinkIsWrittenThroughAndStaysALink) {
   std::filesystem::create_symlink(folder.file("link.csv"), folder.file("chain.csv"));
   wobble::write_output_file(folder.file("chain.csv"), "third\n");
   EXPECT_EQ(read_text(folder.file("real.csv")), "third\n");
-  EXPECT_EQ(resolved(folder.file("chain.csv")).identity, resolved(folder.file("real.csv")).identity);
+  EXPECT_EQ(resolved(folder.file("chain.csv")).identity,
+            resolved(folder.file("real.csv")).identity);
   EXPECT_EQ(resolved(folder.file("chain.csv")).kind, OutputTarget::Kind::regular_file);
 }
 
@@ -78,7 +79,8 @@ TEST(OutputTarget, ADanglingLinkMakesItsTargetOrIsRefusedWithItsFolder) {
 TEST(OutputTarget, NewFilesSpeltTwoWaysAreOneFile) {
   TemporaryFolder folder;
   std::filesystem::create_directory(folder.file("sub"));
-  EXPECT_EQ(resolved(folder.file("sub/../x.csv")).identity, resolved(folder.file("x.csv")).identity);
+  EXPECT_EQ(resolved(folder.file("sub/../x.csv")).identity,
+            resolved(folder.file("x.csv")).identity);
   EXPECT_NE(resolved(folder.file("y.csv")).identity, resolved(folder.file("x.csv")).identity);
 }
 
@@ -101,10 +103,9 @@ TEST(OutputTarget, AFifoIsWrittenInPlaceForItsReader) {
 TEST(OutputTarget, DescriptorNamesWriteToTheOpenDescriptor) {
   int ends[2];
   ASSERT_EQ(pipe(ends), 0);
-  for (const std::string& name : {"/dev/fd/" + std::to_string(ends[1]),
-                                  "/proc/self/fd/" + std::to_string(ends[1]),
-                                  "/proc/" + std::to_string(getpid()) + "/fd/" +
-                                      std::to_string(ends[1])}) {
+  for (const std::string& name :
+       {"/dev/fd/" + std::to_string(ends[1]), "/proc/self/fd/" + std::to_string(ends[1]),
+        "/proc/" + std::to_string(getpid()) + "/fd/" + std::to_string(ends[1])}) {
     const OutputTarget target = resolved(name);
     EXPECT_EQ(target.kind, OutputTarget::Kind::descriptor) << name;
     EXPECT_EQ(target.descriptor, ends[1]) << name;

@@ -145,7 +145,7 @@ TEST(SimulationSafety, TheWorkOfAStepIsBoundedByIterationsTimesTheMesh) {
   // The built-in 40x40 cloth takes every iteration the limit allows.
   options.resolution = 40;
   params.iterations = wobble::Simulation::max_iterations;
-  EXPECT_EQ(wobble::Simulation(wobble::make_cloth_grid(options), {0}, params)
-                .max_iterations_for_mesh(),
-            wobble::Simulation::max_iterations);
+  EXPECT_EQ(
+      wobble::Simulation(wobble::make_cloth_grid(options), {0}, params).max_iterations_for_mesh(),
+      wobble::Simulation::max_iterations);
 }

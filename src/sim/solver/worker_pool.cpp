@@ -4,6 +4,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "sim/input_error.h"
+
 #if defined(__linux__)
 #include <fcntl.h>
 #include <sched.h>
@@ -165,8 +167,9 @@ ThreadSetting decide_thread_setting(int requested, const char* omp_num_threads,
   ThreadSetting setting;
   std::string ignored;
   const auto not_obeyed = [&](const char* name, const char* value) {
-    ignored += std::string(ignored.empty() ? "" : "; ") + name + "='" + value +
-               "' is not a whole number of threads from 1 to " +
+    // The value is quoted escaped: a line break in it must not split the warning's line.
+    ignored += std::string(ignored.empty() ? "" : "; ") + name + "='" +
+               escape_control_characters(value) + "' is not a whole number of threads from 1 to " +
                std::to_string(max_setting_threads) + ", so it is not obeyed";
   };
   int limit = max_setting_threads;
