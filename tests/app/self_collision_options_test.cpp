@@ -91,11 +91,11 @@ TEST(SelfCollisionOptions, ACourseSceneRefusesIt) {
             wobble::GravityModel::force_per_vertex);
   EXPECT_FALSE(wobble::open_scene(parse({course_scene})).params.self_collision.on);
   EXPECT_EQ(error_of({course_scene, "--self-collision"}),
-            "--self-collision: not for a course scene, which keeps the reference's behaviour (no "
-            "self-collision)");
+            "--self-collision: not for a course scene, which keeps the reference's behaviour (its "
+            "k, dt, iterations and wind may be set)");
   EXPECT_EQ(error_of({course_scene, "--self-collision-thickness", "0.01"}),
             "--self-collision-thickness: not for a course scene, which keeps the reference's "
-            "behaviour (no self-collision)");
+            "behaviour (its k, dt, iterations and wind may be set)");
 }
 
 // The real executable: exit code 2 and one line naming the option, headless, headless with an
