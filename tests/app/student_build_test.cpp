@@ -103,9 +103,16 @@ struct Surroundings {
     return left;
   }
 
-  bool compiler_running() const {
-    for (const std::string& process : processes())
-      if (process.find(" cc1plus") != std::string::npos) return true;
+  // Whether a compiler wobble started runs on a file of `submission` (its command line names
+  // the folder, which the compilers of Wobble's own files do not).
+  bool compiling(const std::string& submission) const {
+    for (const std::string& process : processes()) {
+      const std::size_t space = process.find(' ');
+      if (process.substr(space + 1) != "cc1plus") continue;
+      const std::string command_line =
+          wobble::testing::read_text("/proc/" + process.substr(0, space) + "/cmdline");
+      if (command_line.find(submission) != std::string::npos) return true;
+    }
     return false;
   }
 
@@ -161,9 +168,9 @@ TEST(StudentBuild, ASignalDuringTheBuildLeavesNothingBehind) {
                                     around.folder.file("out.png")});
     ASSERT_GT(pid, 0);
     const auto give_up = Clock::now() + std::chrono::seconds(120);
-    while (!around.compiler_running() && Clock::now() < give_up)
+    bool compiling = false;
+    while (!(compiling = around.compiling(submission)) && Clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    const bool compiling = around.compiler_running();
     kill(pid, signal_number);
     int status = 0;
     ASSERT_EQ(waitpid(pid, &status, 0), pid);

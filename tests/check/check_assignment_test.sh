@@ -77,24 +77,38 @@ print(status, round(time.monotonic() - start, 1), peak)' "$dir" "$script" --cach
   [ -z "$err" ] || echo "stderr: $err"
 }
 
-# signal_during_build SIGNAL ARGUMENT...: starts the script with ARGUMENT..., sends SIGNAL once
-# a compiler of this test runs, and waits for the script: its exit status in $status.
+# compiling FOLDER: whether a compiler of this test runs on a file of the submission FOLDER
+# (its command line names the folder, which Wobble's own files' compilers do not).
+compiling() {
+  local pid
+  for pid in $(left_behind | awk '$2 == "cc1plus" { print $1 }'); do
+    tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null | grep -qF -- "$1" && return 0
+  done
+  return 1
+}
+
+# signal_during_build SIGNAL FOLDER ARGUMENT...: starts the script with ARGUMENT..., sends
+# SIGNAL once a compiler of the submission FOLDER runs, and waits for the script: its exit
+# status in $status.
 signal_during_build() {
-  local signal=$1
-  shift
+  local signal=$1 folder=$2
+  shift 2
   # As from a terminal: a background job of a script would ignore SIGINT.
   env --default-signal=INT "$script" --cache "$cache" "$@" >"$dir/stdout.txt" 2>"$dir/stderr.txt" &
-  local pid=$! tries
+  local pid=$! tries started=0
   for tries in $(seq 1200); do
-    left_behind | grep -q ' cc1plus$' && break
+    if compiling "$folder"; then
+      started=1
+      break
+    fi
     sleep 0.1
   done
-  left_behind | grep -q ' cc1plus$' || fail "no compiler ever ran: $(cat "$dir/stderr.txt")"
   kill -s "$signal" "$pid"
   set +e
   wait "$pid"
   status=$?
   set -e
+  [ "$started" = 1 ] || fail "the submission's file never reached the compiler: $(cat "$dir/stderr.txt")"
   echo "\$ check-assignment.sh $* <- SIG$signal during the build -> exit $status"
 }
 
@@ -564,15 +578,15 @@ static const int forked_at_start = [] {
     plant fast_mass_springs_step_sparse.cpp '#include "fast_mass_springs_step_sparse.h"' \
       '#include "never.h"
 #include "fast_mass_springs_step_sparse.h"'
-    signal_during_build TERM "$dir/submission"
+    signal_during_build TERM "$dir/submission" "$dir/submission"
     expect_status 143
     expect_nothing_left
-    signal_during_build INT --build-step-server "$dir/submission"
+    signal_during_build INT "$dir/submission" --build-step-server "$dir/submission"
     expect_status 130
     expect_nothing_left
     mkdir -p "$dir/class"
     mv "$dir/submission" "$dir/class/student"
-    signal_during_build HUP --class "$dir/class" --output "$dir/grades"
+    signal_during_build HUP "$dir/class/student" --class "$dir/class" --output "$dir/grades"
     expect_status 129
     expect_nothing_left
     ;;
