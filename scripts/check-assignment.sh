@@ -32,8 +32,9 @@
 #                        (default ${XDG_CACHE_HOME:-$HOME/.cache}/wobble-check)
 #   --time-limit S       seconds each check may run (default 10)
 #   --memory-limit MIB   address space of each check (default 2048)
-#   --compile-limit S    seconds each compile of a student's file may take (default 120; its
-#                        address space is held to 4096 MiB)
+#   --compile-limit S    seconds each compile of a student's file may take, wall clock and CPU
+#                        (default 120; its address space is held to 2048 MiB, the files it
+#                        writes to 128 MiB, its messages kept to the first 64 KiB)
 #   --jobs N             compilers and checks at once, or with --class submissions at once
 #                        (default: the number of cores)
 #   --build-step-server DIR
@@ -41,10 +42,16 @@
 #                        reference for every other function) and print its path; it serves
 #                        steps to the viewer (src/app/student_step.h, src/check/step_protocol.h)
 #   --output FILE        with --build-step-server: copy the server to FILE and print FILE
+#
+# Every compiler and checker runs in a process group of its own, under a launcher
+# (src/check/bounded_main.cpp) that kills the whole group, and whatever left it, when it ends,
+# passes a limit, or the script gets SIGTERM, SIGINT or SIGHUP; the script then removes its
+# temporary folder and ends by that signal.
 set -uo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 source "$root/src/check/submission_files.sh"
+source "$root/src/check/stop_on_signal.sh"
 
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/wobble-check"
 time_limit=10

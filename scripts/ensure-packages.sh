@@ -11,6 +11,7 @@ run_packages=(
   libglfw3-dev libimgui-dev             # window and panel
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL, and Mesa's renderer (llvmpipe)
   libspng-dev                           # PNG input and output
+  procps                                # ps: the checker's clean-up on a signal
 )
 # What the test suite needs on top: the window smoke test runs under a virtual X server.
 test_packages=(

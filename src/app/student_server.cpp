@@ -1,7 +1,6 @@
 #include "student_server.h"
 
 #include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,37 +9,37 @@
 #include <sstream>
 #include <vector>
 
+#include "check/bounded_process.h"
 #include "sim/input_error.h"
-
-extern char** environ;
 
 namespace wobble {
 
 namespace {
 
-// The script's output (stdout and stderr together) and its exit status, or -1 when it could not
-// be started.
+// How long the script may take to clean up (end its compilers, remove its temporary folder)
+// when wobble is stopped by a signal during the build, before its whole group is killed.
+constexpr double kScriptGraceSeconds = 5.0;
+
+// The script's output (stdout and stderr together) and its exit status, or -1 with errno set
+// when it could not be started. It runs in a process group of its own (bounded_process.h): a
+// SIGTERM, SIGINT or SIGHUP to wobble meanwhile passes on to the script, which ends its
+// compilers and removes its temporary folder before wobble ends, and the script gets SIGTERM
+// if wobble is killed outright.
 int run_script(const std::vector<std::string>& arguments, std::string& output) {
   int pipe_ends[2];
-  if (pipe(pipe_ends) != 0) return -1;
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
-  posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments)
-    argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  pid_t child = -1;
-  const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
+  if (pipe2(pipe_ends, O_CLOEXEC) != 0) return -1;
+  const int nothing = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  const pid_t child = spawn_bounded(arguments, ProcessLimits{},
+                                    ChildStreams{nothing, pipe_ends[1], pipe_ends[1]}, true);
+  const int spawn_error = errno;
+  if (nothing >= 0) close(nothing);
   close(pipe_ends[1]);
-  if (spawned != 0) {
+  if (child < 0) {
     close(pipe_ends[0]);
+    errno = spawn_error;
     return -1;
   }
+  const EndGroupOnTermination end_on_termination(child, kScriptGraceSeconds);
   char buffer[4096];
   for (;;) {
     const ssize_t got = read(pipe_ends[0], buffer, sizeof(buffer));
@@ -54,6 +53,7 @@ int run_script(const std::vector<std::string>& arguments, std::string& output) {
   int status = 0;
   while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
+  kill_group(child, false);  // anything of the script's still in its group
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 

@@ -3,21 +3,20 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
 #include <vector>
 
 #include "app/step_messages.h"
+#include "check/bounded_process.h"
 #include "check/step_protocol.h"
-
-extern char** environ;
 
 namespace wobble {
 namespace {
@@ -34,6 +33,20 @@ std::string signal_words(int signal_number) {
     return std::string("SIG") + abbreviation;
 #endif
   return "signal " + std::to_string(signal_number);
+}
+
+// The server's limits, set before its first instruction (the student's static initializers
+// run before its main): the address space it also sets itself (2 GiB, or
+// WOBBLE_STEP_SERVER_MEMORY_MIB), and 64 MiB for any file the student's code writes. No CPU
+// limit: it serves every step while the viewer runs, each within seconds_per_step.
+ProcessLimits server_limits() {
+  ProcessLimits limits;
+  long long memory_mib = 2048;
+  if (const char* text = std::getenv("WOBBLE_STEP_SERVER_MEMORY_MIB"))
+    memory_mib = std::atoll(text);
+  limits.memory_bytes = memory_mib > 0 ? memory_mib << 20 : 0;
+  limits.file_bytes = 64LL << 20;
+  return limits;
 }
 
 // "5" or "0.5": a time limit as a person writes it.
@@ -73,38 +86,25 @@ StudentStep::StudentStep(const std::string& server_path, const Eigen::MatrixXd& 
     close(sockets[1]);
     return;
   }
-  // posix_spawn rather than fork: the viewer has threads and a GL context, and nothing of it
-  // should run in the child between fork and exec. The child gets default signal handling and
-  // no blocked signals, whatever the viewer set for itself.
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, sockets[1], STDIN_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, sockets[1], STDOUT_FILENO);
-  posix_spawn_file_actions_adddup2(&actions, stderr_ends[1], STDERR_FILENO);
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  sigset_t signals;
-  sigfillset(&signals);
-  posix_spawnattr_setsigdefault(&attributes, &signals);
-  sigemptyset(&signals);
-  posix_spawnattr_setsigmask(&attributes, &signals);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
-  std::vector<char> path(server_path.begin(), server_path.end());
-  path.push_back('\0');
-  char* arguments[] = {path.data(), nullptr};
-  const int started =
-      posix_spawn(&server_, server_path.c_str(), &actions, &attributes, arguments, environ);
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attributes);
+  // In a process group of its own, so that whatever the student's code starts (a fork) ends
+  // with it, here or when the viewer is stopped by a signal. Between fork and exec the child
+  // makes only async-signal-safe calls (the viewer has threads and a GL context), and it gets
+  // default signal handling and no blocked signals, whatever the viewer set for itself.
+  server_ = spawn_bounded({server_path}, server_limits(),
+                          ChildStreams{sockets[1], sockets[1], stderr_ends[1]});
+  const int spawn_error = errno;
   close(sockets[1]);
   close(stderr_ends[1]);
   socket_ = sockets[0];
   stderr_pipe_ = stderr_ends[0];
-  if (started != 0) {
+  if (server_ < 0) {
     server_ = -1;
-    fail("cannot start the student's step server " + server_path + ": " + std::strerror(started));
+    fail("cannot start the student's step server " + server_path + ": " +
+         std::strerror(spawn_error));
     return;
   }
+  server_group_ = server_;
+  end_on_termination_ = std::make_unique<EndGroupOnTermination>(server_group_, 0.0);
   fcntl(socket_, F_SETFL, fcntl(socket_, F_GETFL) | O_NONBLOCK);
   fcntl(stderr_pipe_, F_SETFL, fcntl(stderr_pipe_, F_GETFL) | O_NONBLOCK);
 
@@ -276,11 +276,15 @@ void StudentStep::stop_server() {
     for (int tries = 0; tries < 20 && (ended = waitpid(server_, &status, WNOHANG)) == 0; ++tries)
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
     if (ended == 0) {
-      kill(server_, SIGKILL);
+      kill_group(server_group_, true);
       waitpid(server_, &status, 0);
     }
     server_ = -1;
   }
+  // What the student's code started and left in the group (a fork) ends with the server.
+  if (server_group_ > 0) kill_group(server_group_, false);
+  server_group_ = -1;
+  end_on_termination_.reset();
   if (stderr_pipe_ >= 0) close(stderr_pipe_);
   stderr_pipe_ = -1;
 }

@@ -2,8 +2,12 @@
 #define WOBBLE_APP_STUDENT_STEP_H
 
 #include <sys/types.h>
+
 #include <Eigen/Core>
+#include <memory>
 #include <string>
+
+#include "check/bounded_process.h"
 
 namespace wobble {
 
@@ -15,6 +19,11 @@ namespace wobble {
 //
 // builds from DIR/fast_mass_springs_step_sparse.cpp; it runs Wobble's reference precomputation
 // once, then the student's step for each request (src/check/step_protocol.h has the messages).
+//
+// The server runs in a process group of its own (check/bounded_process.h) within 2 GiB of
+// address space (WOBBLE_STEP_SERVER_MEMORY_MIB) and 64 MiB a file, and stopping it ends its
+// whole group, so a fork in the student's code leaves nothing behind; so does a SIGTERM,
+// SIGINT or SIGHUP to the viewer.
 //
 // Nothing here throws or prints: a failure (the server cannot start, crashes, takes longer than
 // the time limit, returns a wrong shape, throws) becomes an error string, and the server is
@@ -60,7 +69,9 @@ class StudentStep {
   void fail(const std::string& what);    // records the first error and stops the server
   void stop_server();
 
-  pid_t server_ = -1;
+  pid_t server_ = -1;        // not yet reaped
+  pid_t server_group_ = -1;  // the server's process group, until it is ended
+  std::unique_ptr<EndGroupOnTermination> end_on_termination_;
   int socket_ = -1;       // the server's stdin and stdout
   int stderr_pipe_ = -1;  // the server's stderr: its last line is quoted on a crash
   std::string stderr_tail_;

@@ -10,21 +10,38 @@ course="$root/assets/course"
 # The checker's own sources; step_server_main.cpp is the other program's main and course_call.cpp
 # is compiled with each student file.
 checker_sources=(check_main check_scene check_incidence check_precomputation check_step compare
-                 course_problem child_process pin_weight step_hints course_call_unlinked)
+                 course_problem child_process bounded_process pin_weight step_hints
+                 course_call_unlinked)
 cxx=g++
 eigen=/usr/include/eigen3
-# Student files compile within these, so a file that includes /dev/zero or instantiates
-# templates without end stops with an ERROR instead of taking the machine.
-compile_memory_mib=4096
+# A student's file compiles (and links) within these, besides --compile-limit seconds of wall
+# clock and of CPU time, so a file that includes /dev/zero or a pipe, or instantiates templates
+# without end, stops with an ERROR instead of taking the machine. Memory is the compiler's
+# address space (RLIMIT_AS): the seed's six files, as a submission, each compile within 256 to
+# 320 MiB with the precompiled prelude and 256 to 384 MiB without it (the smallest limits that
+# worked, 64 MiB apart), so 2 GiB is 5 times the most; /dev/zero reaches it in about 1.5 s.
+# Files (the object, the assembler's): 128 MiB, 400 times a submission's object. The compiler's
+# messages: the first 64 KiB are kept.
+compile_memory_mib=2048
+compile_file_mib=128
+compile_messages_kib=64
+# A checker runs a student's static initializers before its own checks: the whole run is held to
+# 20 times --time-limit plus 30 s and its checks' memory plus 256 MiB; what it writes to 64 MiB.
+checker_file_mib=64
 
 check_toolchain() {
   command -v "$cxx" >/dev/null || die "g++ not found (apt-get install g++)"
+  command -v ps >/dev/null || die "ps not found (apt-get install procps)"
   [ -f "$eigen/Eigen/Core" ] || die "Eigen not found in $eigen (apt-get install libeigen3-dev)"
   [ -f /usr/include/nlohmann/json.hpp ] ||
     die "nlohmann-json not found (apt-get install nlohmann-json3-dev)"
   mkdir -p "$cache/obj" "$cache/lib" "$cache/bin" 2>/dev/null ||
     die "$cache: cannot create the cache folder"
   work=$(mktemp -d) || die "cannot create a temporary folder"
+  # The compilers' own temporary files (g++'s .s) too, so that one killed at a limit or by a
+  # signal leaves nothing outside the folder, which goes at the end whatever happens.
+  mkdir "$work/tmp" || die "cannot create a temporary folder in $work"
+  export TMPDIR="$work/tmp"
   # WOBBLE_CHECK_KEEP=1 keeps it (the linked checkers, the compilers' logs) and says where.
   if [ "${WOBBLE_CHECK_KEEP:-0}" = 1 ]; then
     echo "check-assignment: keeping $work" >&2
@@ -38,6 +55,28 @@ check_toolchain() {
     cat "$eigen/Eigen/src/Core/util/Macros.h" /usr/include/nlohmann/json.hpp
     find "$course_headers" -type f | LC_ALL=C sort | xargs cat
   } | sha256sum | cut -c1-16)
+  build_launcher
+}
+
+# The launcher every compiler and checker runs under (bounded_main.cpp): in the cache by
+# content, its path in $launcher. Compiled in the background and waited for, so that a signal's
+# trap (stop_on_signal.sh) can end the compiler.
+build_launcher() {
+  local sources=("$check_sources/bounded_main.cpp" "$check_sources/bounded_run.cpp"
+                 "$check_sources/bounded_process.cpp")
+  local key
+  key=$(cat "${sources[@]}" "$check_sources/bounded_run.h" "$check_sources/bounded_process.h" |
+        { cat; printf '%s\n' "$toolchain_id"; } | sha256sum | cut -c1-32)
+  launcher="$cache/bin/bounded-$key"
+  [ -x "$launcher" ] && return 0
+  "$cxx" -std=c++17 -O2 -I "$check_sources" "${sources[@]}" -o "$launcher.tmp.$$" \
+    >"$work/launcher.log" 2>&1 &
+  if wait $!; then
+    mv -f "$launcher.tmp.$$" "$launcher" || die "cannot write $launcher"
+  else
+    rm -f "$launcher.tmp.$$"
+    die "cannot compile Wobble's launcher: $(first_error "$work/launcher.log")"
+  fi
 }
 
 # -O2: the checks and the scale check run in a second; Eigen's assertions stay on (no NDEBUG),
@@ -96,13 +135,20 @@ finish_jobs() {
   running=0
 }
 
-# bounded COMMAND...: COMMAND within the compile limits (a student's file is untrusted input).
+# bounded NAME COMMAND...: COMMAND within the compile limits (a student's file is untrusted
+# input), through the launcher; past a limit it says so in one line, "bounded: NAME passed its
+# memory limit of 2 GiB", and fails.
 bounded() {
-  ulimit -v $((compile_memory_mib * 1024)) 2>/dev/null
-  timeout --kill-after=5 "$compile_limit" "$@"
-  local status=$?
-  [ "$status" != 124 ] || echo "wobble-check: the compiler ran past $compile_limit s" >&2
-  return "$status"
+  local name=$1
+  shift
+  "$launcher" --name "$name" --seconds "$compile_limit" --memory-mib "$compile_memory_mib" \
+    --file-mib "$compile_file_mib" --messages-kib "$compile_messages_kib" -- "$@"
+}
+
+# grouped COMMAND...: Wobble's own compiles, without limits but through the launcher all the
+# same, so that a signal to the script ends them.
+grouped() {
+  "$launcher" --name "the compiler" -- "$@"
 }
 
 # compile NAME SOURCE TAG INCLUDE_DIR... -- EXTRA_FLAG...: compile what is not cached yet.
@@ -118,14 +164,17 @@ compile() {
   object[$name]="$cache/obj/$key.o"
   local includes=()
   for dir in "${dirs[@]}"; do includes+=(-I "$dir"); done
-  local runner=()
-  [[ "$name" == student.* ]] && runner=(bounded)
+  local runner=(grouped)
+  [[ "$name" == student.* ]] && runner=(bounded "the compiler")
   start_job "${object[$name]}" "$work/$name.log" \
     "${runner[@]}" "$cxx" "${flags[@]}" "$@" "${includes[@]}" -I "$eigen" -c "$source"
 }
 
+# first_error LOG: the line of LOG that says why it failed: a limit the launcher enforced, else
+# the first error.
 first_error() {
-  grep -m 1 -E 'undefined reference|multiple definition|(fatal )?error|out of memory|memory exhausted|wobble-check:' "$1" ||
+  grep -m 1 '^bounded: ' "$1" ||
+    grep -m 1 -E 'undefined reference|multiple definition|(fatal )?error|out of memory|memory exhausted' "$1" ||
     grep -m 1 . "$1"
 }
 
@@ -150,12 +199,16 @@ compile_error() {
     return
   fi
   case "$line" in
-    *"out of memory"* | *"memory exhausted"*)
-      echo "the compiler ran out of memory (it may use $compile_memory_mib MiB): does the file include something without end, such as /dev/zero?"
+    "bounded: "*"memory limit"*)
+      echo "${line#bounded: } (does the file include something that never ends, such as /dev/zero?)"
       return
       ;;
-    *"wobble-check: "*)
-      echo "${line#*wobble-check: }: does the file include something without end, such as a pipe?"
+    "bounded: "*"file larger"*)
+      echo "${line#bounded: } (does the file define a huge array with initial values?)"
+      return
+      ;;
+    "bounded: "*)
+      echo "${line#bounded: } (does the file include something that never ends, such as a pipe, or make the compiler compute without end?)"
       return
       ;;
   esac
@@ -179,7 +232,7 @@ start_prelude() {
       die "cannot write $prelude_folder"
   fi
   start_job "$prelude_folder/check_prelude.h.gch" "$work/prelude.log" \
-    "$cxx" "${flags[@]}" -I "$eigen" -x c++-header "$prelude_folder/check_prelude.h"
+    grouped "$cxx" "${flags[@]}" -I "$eigen" -x c++-header "$prelude_folder/check_prelude.h"
 }
 
 # Wobble's side: its six functions plain (into an archive the linker takes what it lacks from)
@@ -312,7 +365,7 @@ build_step_server() {
                 "$archive_path")
   local server
   server="$cache/bin/step-server-$(link_key "${inputs[@]}")"
-  start_job "$server" "$work/link.log" "$cxx" "${inputs[@]}"
+  start_job "$server" "$work/link.log" bounded "the linker" "$cxx" "${inputs[@]}"
   finish_jobs
   [ -f "$server" ] || die "cannot link the step server: $(first_error "$work/link.log")"
   if [ -n "$output" ]; then

@@ -79,7 +79,7 @@ check_submission() {
     # Linked for this run only: a link takes a fraction of a second, and a class's checkers
     # would fill the cache.
     checker[$function]="$work/check-$function"
-    start_job "${checker[$function]}" "$work/link.$function.log" "$cxx" "${inputs[@]}"
+    start_job "${checker[$function]}" "$work/link.$function.log" bounded "the linker" "$cxx" "${inputs[@]}"
   done
   finish_jobs
   for function in "${!checker[@]}"; do
@@ -91,7 +91,10 @@ check_submission() {
   done
   compiled=$(now)
 
-  # Run the checkers, $jobs at once.
+  # Run the checkers, $jobs at once, each through the launcher: the student's static initializers
+  # run in it before any check does, and whatever they start ends with it.
+  local checker_seconds
+  checker_seconds=$(awk -v t="$time_limit" 'BEGIN { print 20 * t + 30 }')
   for function in "${functions[@]}"; do
     [ -n "${checker[$function]:-}" ] || continue
     if [ "$running" -ge "$jobs" ]; then
@@ -99,7 +102,9 @@ check_submission() {
       running=$((running - 1))
     fi
     (
-      "${checker[$function]}" --function "$function" --course-dir "$course" \
+      "$launcher" --name "the checker of $function" --seconds "$checker_seconds" \
+        --memory-mib $((memory_mib + 256)) --file-mib "$checker_file_mib" -- \
+        "${checker[$function]}" --function "$function" --course-dir "$course" \
         --time-limit "$time_limit" --memory-limit "$memory_mib" --facts "$work/$function.facts" \
         >"$work/$function.out" 2>"$work/$function.err"
       echo $? >"$work/$function.status"
@@ -114,6 +119,10 @@ check_submission() {
     code=$(cat "$work/$function.status" 2>/dev/null || echo missing)
     case "$code" in
       0 | 1) verdict[$function]=checked ;;
+      124)
+        verdict[$function]=ERROR
+        detail[$function]=$(grep -m 1 '^bounded: ' "$work/$function.err" | sed 's/^bounded: //')
+        ;;
       *) die "the checker of $function could not run (status $code): $(head -n 1 "$work/$function.err")" ;;
     esac
   done

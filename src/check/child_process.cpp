@@ -1,8 +1,8 @@
 #include "child_process.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,6 +13,8 @@
 #include <new>
 #include <stdexcept>
 #include <thread>
+
+#include "bounded_process.h"
 
 namespace {
 
@@ -34,17 +36,16 @@ void write_all(int fd, const std::string& text) {
 
 [[noreturn]] void run_child(const ChildCheck& check, const ChildLimits& limits, int result_fd,
                             int output_fd) {
-  setpgid(0, 0);  // its own process group, so a time-out kills whatever it started too
   dup2(output_fd, STDOUT_FILENO);
   dup2(output_fd, STDERR_FILENO);
-  const rlimit memory{static_cast<rlim_t>(limits.memory_bytes),
-                      static_cast<rlim_t>(limits.memory_bytes)};
-  setrlimit(RLIMIT_AS, &memory);
-  const rlimit no_core{0, 0};
-  setrlimit(RLIMIT_CORE, &no_core);
-  // A student's code printing in a loop must not fill the disk: past 16 MiB a write just fails.
-  const rlimit output_size{16 << 20, 16 << 20};
-  setrlimit(RLIMIT_FSIZE, &output_size);
+  // Its own process group, so that whatever it starts (a fork in the student's code) ends with
+  // it; its CPU time as long as its wall clock; a student's code printing in a loop must not
+  // fill the disk: past 16 MiB a write just fails (SIGXFSZ ignored).
+  ProcessLimits bounds;
+  bounds.cpu_seconds = limits.seconds;
+  bounds.memory_bytes = limits.memory_bytes;
+  bounds.file_bytes = 16 << 20;
+  enter_bounds(bounds);
   signal(SIGXFSZ, SIG_IGN);
 
   int code = 0;
@@ -135,51 +136,56 @@ ChildOutcome run_in_child(const ChildCheck& check, const ChildLimits& limits) {
   close(result_pipe[1]);
   setpgid(child, child);  // also here, so the group exists before any kill below
 
-  // Read the child's result until it closes the pipe (it exits) or the time is up.
+  // Read the child's result until it ends or the time is up. A process that the student's
+  // code forked may hold the pipe open after the child has ended: once the child is reaped,
+  // only what is in the pipe already is read. (A child that closed the pipe itself and went on
+  // looping is still a time-out.)
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration<double>(limits.seconds);
-  bool finished = false, timed_out = false;
-  while (!finished) {
+  fcntl(result_pipe[0], F_SETFL, fcntl(result_pipe[0], F_GETFL) | O_NONBLOCK);
+  const auto read_available = [&]() {  // false once the pipe is closed
+    char buffer[4096];
+    for (;;) {
+      const ssize_t n = read(result_pipe[0], buffer, sizeof buffer);
+      if (n > 0)
+        outcome.text.append(buffer, static_cast<size_t>(n));
+      else if (n == 0)
+        return false;
+      else if (errno != EINTR)
+        return errno == EAGAIN || errno == EWOULDBLOCK;
+    }
+  };
+  int status = 0;
+  bool pipe_open = true, reaped = false, timed_out = false;
+  while (!reaped) {
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) {
       timed_out = true;
       break;
     }
-    pollfd wait_for{result_pipe[0], POLLIN, 0};
-    if (poll(&wait_for, 1, static_cast<int>(std::min<long long>(left, 1000))) < 0 && errno != EINTR)
-      break;
-    if (wait_for.revents & (POLLIN | POLLHUP | POLLERR)) {
-      char buffer[4096];
-      const ssize_t n = read(result_pipe[0], buffer, sizeof buffer);
-      if (n > 0)
-        outcome.text.append(buffer, static_cast<size_t>(n));
-      else if (n == 0 || errno != EINTR)
-        finished = true;
+    if (pipe_open) {
+      pollfd wait_for{result_pipe[0], POLLIN, 0};
+      if (poll(&wait_for, 1, static_cast<int>(std::min<long long>(left, 20))) > 0)
+        pipe_open = read_available();
+    } else {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
+    reaped = waitpid(child, &status, WNOHANG) == child;
   }
+  if (reaped && pipe_open) read_available();  // what it wrote before it ended
   close(result_pipe[0]);
 
   const bool completed = outcome.text.rfind(kCompletedMarker, 0) == 0;
   if (completed) outcome.text.erase(0, kCompletedMarker.size());
 
-  int status = 0;
-  if (!timed_out) {
-    // The pipe closed, so the child is exiting; give it the rest of the time to do so (a child
-    // that closed the pipe itself and went on looping is still a time-out).
-    while (waitpid(child, &status, WNOHANG) == 0) {
-      if (Clock::now() >= deadline) {
-        timed_out = true;
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
+  // Whatever the check started and left in its group (a student's fork) ends with it.
+  kill_group(child, timed_out);
   if (timed_out) {
-    kill(-child, SIGKILL);
-    kill(child, SIGKILL);
     waitpid(child, &status, 0);
     outcome.kind = ChildOutcome::kTimedOut;
+  } else if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU) {
+    outcome.kind = ChildOutcome::kTimedOut;  // its CPU time ran out first
   } else if (WIFSIGNALED(status)) {
     outcome.kind = ChildOutcome::kCrashed;
     outcome.signal_name = signal_name(WTERMSIG(status));

@@ -5,10 +5,12 @@
 #include <string>
 
 // Runs one check in a child process (fork), so that whatever the student's code does there
-// (crash, loop forever, allocate without end, print, call exit) the checker itself goes on.
+// (crash, loop forever, allocate without end, print, call exit, fork) the checker itself goes
+// on. The child is bounded as every process with a student's code is (bounded_process.h): a
+// process group of its own, killed as a whole when the check ends, however it ends.
 
 struct ChildLimits {
-  double seconds = 10;                 // wall clock; the child is killed when it runs longer
+  double seconds = 10;                 // wall clock and CPU time; the child is killed past them
   long long memory_bytes = 2LL << 30;  // address space (RLIMIT_AS) of the child
 };
 

@@ -2,12 +2,16 @@
 // and from planted copies of it (the CheckAssignment.BuildStepServers fixture, see
 // tests/check/check_assignment_test.sh): the seed's server matches Wobble's own step, and a
 // crashing, hanging, printing or missing server is an error string, never a crash or a hang of
-// the process that drives it.
+// the process that drives it; what a forking one starts ends with it.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <thread>
 
 #include "app/student_step.h"
 #include "sim/seed/fast_mass_springs_precomputation_sparse.h"
@@ -154,6 +158,47 @@ TEST(StudentStep, MissingServerIsAnError) {
   std::string error;
   EXPECT_FALSE(student.step(cloth.fext, cloth.V, cloth.V, Unext, error));
   EXPECT_EQ(error, student.error());
+}
+
+// How many running processes carry `entry` (NAME=VALUE) in their environment, after up to
+// `seconds` for that count to reach `wanted`.
+int processes_with(const std::string& entry, int wanted, double seconds) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  for (;;) {
+    int count = 0;
+    for (const auto& process : std::filesystem::directory_iterator("/proc")) {
+      const std::string name = process.path().filename().string();
+      if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+      std::ifstream environ(process.path() / "environ", std::ios::binary);
+      for (std::string variable; std::getline(environ, variable, '\0');)
+        count += variable == entry;
+    }
+    if (count == wanted || std::chrono::steady_clock::now() > until) return count;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+}
+
+TEST(StudentStep, AForkInTheStepLeavesNothingBehindOnceStopped) {
+  // This server forks a child that sleeps 300 s in a static initializer, and another in every
+  // step. The server and its children carry a marker in their environment.
+  const std::string value = std::to_string(getpid()) + "-forking";
+  setenv("WOBBLE_STUDENT_STEP_TEST", value.c_str(), 1);
+  const std::string entry = "WOBBLE_STUDENT_STEP_TEST=" + value;
+  {
+    const Cloth cloth;
+    wobble::StudentStep student(server("forking"), cloth.V, cloth.E, cloth.k, cloth.m, cloth.b,
+                                cloth.delta_t);
+    unsetenv("WOBBLE_STUDENT_STEP_TEST");
+    Eigen::MatrixXd Unext;
+    std::string error;
+    for (int step = 0; step < 3; ++step)
+      ASSERT_TRUE(student.step(cloth.fext, cloth.V, cloth.V, Unext, error)) << error;
+    // The server, the static initializer's child and a child for every step (the server's
+    // probe of the pin weight is one more).
+    EXPECT_GE(processes_with(entry, -1, 0.0), 5);
+  }
+  EXPECT_EQ(processes_with(entry, 0, 2.0), 0)
+      << "the student's forked children outlived the server";
 }
 
 TEST(StudentStep, WrongInputShapeIsRefusedWithoutStoppingTheServer) {

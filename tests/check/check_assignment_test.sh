@@ -24,6 +24,94 @@ fail() {
   exit 1
 }
 
+# Every process this test starts carries this in its environment, and so does whatever those
+# leave behind: left_behind finds them by it. The script's temporary folders go in $dir/tmp.
+export WOBBLE_CHECK_TEST="$scenario-$$"
+mkdir -p "$dir/tmp"
+export TMPDIR="$dir/tmp"
+
+# left_behind: "PID NAME" of each process that carries this test's marker and still runs, after
+# up to 2 s for what is ending (a SIGKILL is not instant).
+left_behind() {
+  local tries found=""
+  for tries in $(seq 20); do
+    found=$(env -u WOBBLE_CHECK_TEST grep -l -z -x "WOBBLE_CHECK_TEST=$WOBBLE_CHECK_TEST" \
+              /proc/[0-9]*/environ 2>/dev/null |
+            while IFS= read -r file; do
+              pid=${file#/proc/}
+              pid=${pid%/environ}
+              echo "$pid $(cat "/proc/$pid/comm" 2>/dev/null)"
+            done)
+    [ -n "$found" ] || return 0
+    sleep 0.1
+  done
+  echo "$found"
+}
+
+# expect_nothing_left: no process of this test runs, and the temporary folder is empty.
+expect_nothing_left() {
+  local left
+  left=$(left_behind)
+  [ -z "$left" ] || fail "processes left running: $(echo "$left" | paste -sd ',')"
+  [ -z "$(ls -A "$dir/tmp")" ] || fail "left in the temporary folder: $(ls -A "$dir/tmp" | paste -sd ' ')"
+}
+
+# measured ARGUMENT...: run_check, with the wall time (s) in $seconds and the largest resident
+# size of any process it ran (KiB) in $peak_kib.
+measured() {
+  set +e
+  python3 -c '
+import resource, subprocess, sys, time
+start = time.monotonic()
+status = subprocess.call(sys.argv[2:], stdout=open(sys.argv[1] + "/stdout.txt", "w"),
+                         stderr=open(sys.argv[1] + "/stderr.txt", "w"))
+peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+print(status, round(time.monotonic() - start, 1), peak)' "$dir" "$script" --cache "$cache" "$@" \
+    >"$dir/measured.txt"
+  set -e
+  read -r status seconds peak_kib <"$dir/measured.txt"
+  out=$(cat "$dir/stdout.txt")
+  err=$(cat "$dir/stderr.txt")
+  echo "\$ check-assignment.sh $* -> exit $status in $seconds s, at most $peak_kib KiB resident"
+  [ -z "$out" ] || echo "$out"
+  [ -z "$err" ] || echo "stderr: $err"
+}
+
+# compiling FOLDER: whether a compiler of this test runs on a file of the submission FOLDER
+# (its command line names the folder, which Wobble's own files' compilers do not).
+compiling() {
+  local pid
+  for pid in $(left_behind | awk '$2 == "cc1plus" { print $1 }'); do
+    tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null | grep -qF -- "$1" && return 0
+  done
+  return 1
+}
+
+# signal_during_build SIGNAL FOLDER ARGUMENT...: starts the script with ARGUMENT..., sends
+# SIGNAL once a compiler of the submission FOLDER runs, and waits for the script: its exit
+# status in $status.
+signal_during_build() {
+  local signal=$1 folder=$2
+  shift 2
+  # As from a terminal: a background job of a script would ignore SIGINT.
+  env --default-signal=INT "$script" --cache "$cache" "$@" >"$dir/stdout.txt" 2>"$dir/stderr.txt" &
+  local pid=$! tries started=0
+  for tries in $(seq 1200); do
+    if compiling "$folder"; then
+      started=1
+      break
+    fi
+    sleep 0.1
+  done
+  kill -s "$signal" "$pid"
+  set +e
+  wait "$pid"
+  status=$?
+  set -e
+  [ "$started" = 1 ] || fail "the submission's file never reached the compiler: $(cat "$dir/stderr.txt")"
+  echo "\$ check-assignment.sh $* <- SIG$signal during the build -> exit $status"
+}
+
 # run_check ARGUMENT...: run the script; its stdout in $out, stderr in $err, exit in $status.
 run_check() {
   set +e
@@ -418,6 +506,132 @@ case "$scenario" in
   Unext = Ucur;'
     run_check --build-step-server "$dir/submission" --output "$work/servers/printing"
     expect_status 0
+    rm -rf "$dir/submission"
+    submission
+    plant fast_mass_springs_step_sparse.cpp '#include "fast_mass_springs_step_sparse.h"' \
+      '#include "fast_mass_springs_step_sparse.h"
+#include <unistd.h>
+static const int forked_at_start = [] {
+  if (fork() == 0) {
+    sleep(300);
+    _exit(0);
+  }
+  return 0;
+}();'
+    plant fast_mass_springs_step_sparse.cpp '  Unext = Ucur;' '  if (fork() == 0) {
+    sleep(300);
+    _exit(0);
+  }
+  Unext = Ucur;'
+    run_check --build-step-server "$dir/submission" --output "$work/servers/forking"
+    expect_status 0
+    ;;
+  IncludesDevZero)
+    # A file that includes /dev/zero: its compiler stops at the 2 GiB memory limit, within
+    # seconds and that memory, said on its function's line while the others are graded; for the
+    # step server, in one line on stderr with exit 2. Nothing is left behind.
+    submission
+    plant signed_incidence_matrix_dense.cpp '#include "signed_incidence_matrix_dense.h"' \
+      '#include "/dev/zero"
+#include "signed_incidence_matrix_dense.h"'
+    measured "$dir/submission"
+    expect_status 1
+    [ "$(echo "$out" | head -n 1)" = "ERROR  signed_incidence_matrix_dense: the compiler passed its memory limit of 2 GiB (does the file include something that never ends, such as /dev/zero?)" ] ||
+      fail "expected the memory limit named on the function's line"
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 5 ] || fail "expected the other five to pass"
+    [ "$peak_kib" -lt $((2 << 20)) ] || fail "a process took $peak_kib KiB, more than 2 GiB"
+    # Without the limit the compiler took 5 GB in 16 s and went on; with it, 1.5 s.
+    awk -v s="$seconds" 'BEGIN { exit !(s < 120) }' || fail "took $seconds s"
+    expect_nothing_left
+    plant fast_mass_springs_step_sparse.cpp '#include "fast_mass_springs_step_sparse.h"' \
+      '#include "/dev/zero"
+#include "fast_mass_springs_step_sparse.h"'
+    run_check --build-step-server "$dir/submission"
+    expect_status 2
+    [ "$err" = "check-assignment: cannot compile $dir/submission/fast_mass_springs_step_sparse.cpp: the compiler passed its memory limit of 2 GiB (does the file include something that never ends, such as /dev/zero?)" ] ||
+      fail "expected one line naming the memory limit"
+    [ -z "$out" ] || fail "expected no server path"
+    expect_nothing_left
+    ;;
+  IncludesAPipe)
+    # A file that includes a named pipe nobody writes: its compiler waits without end, and stops
+    # at --compile-limit, named on its function's line.
+    submission
+    mkfifo "$dir/submission/never.h"
+    plant signed_incidence_matrix_sparse.cpp '#include "signed_incidence_matrix_sparse.h"' \
+      '#include "never.h"
+#include "signed_incidence_matrix_sparse.h"'
+    run_check --compile-limit 2 "$dir/submission"
+    expect_status 1
+    [ "$(echo "$out" | sed -n 2p)" = "ERROR  signed_incidence_matrix_sparse: the compiler took longer than its 2 s limit (does the file include something that never ends, such as a pipe, or make the compiler compute without end?)" ] ||
+      fail "expected the time limit named on the function's line"
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 5 ] || fail "expected the other five to pass"
+    expect_nothing_left
+    ;;
+  SignalDuringBuild)
+    # SIGTERM, SIGINT or SIGHUP to the script while a compiler waits on a pipe (a build that
+    # never ends by itself): the script ends by that signal, and no script, launcher, g++ or
+    # cc1plus is left running, nor anything in the temporary folder. One submission, the step
+    # server's build, and a class.
+    submission
+    mkfifo "$dir/submission/never.h"
+    plant fast_mass_springs_step_sparse.cpp '#include "fast_mass_springs_step_sparse.h"' \
+      '#include "never.h"
+#include "fast_mass_springs_step_sparse.h"'
+    signal_during_build TERM "$dir/submission" "$dir/submission"
+    expect_status 143
+    expect_nothing_left
+    signal_during_build INT "$dir/submission" --build-step-server "$dir/submission"
+    expect_status 130
+    expect_nothing_left
+    mkdir -p "$dir/class"
+    mv "$dir/submission" "$dir/class/student"
+    signal_during_build HUP "$dir/class/student" --class "$dir/class" --output "$dir/grades"
+    expect_status 129
+    expect_nothing_left
+    ;;
+  ForkingStudentCode)
+    # A function that forks a sleeping child each time it runs, and a static initializer that
+    # forks one which leaves the checker's process group (setsid, then a second fork): every
+    # check still passes, and nothing of them is left running afterwards; the step server's
+    # build likewise (its run: wobble_student_step_tests, StudentStep.AForkInTheStepLeaves...).
+    submission
+    plant signed_incidence_matrix_sparse.cpp '#include "signed_incidence_matrix_sparse.h"' \
+      '#include "signed_incidence_matrix_sparse.h"
+#include <unistd.h>
+static const int forked_at_start = [] {
+  if (fork() == 0) {
+    setsid();
+    if (fork() == 0) sleep(300);
+    _exit(0);
+  }
+  return 0;
+}();'
+    plant signed_incidence_matrix_sparse.cpp '  A.resize(E.rows(), n);' '  if (fork() == 0) {
+    sleep(300);
+    _exit(0);
+  }
+  A.resize(E.rows(), n);'
+    run_check "$dir/submission"
+    expect_status 0
+    [ "$out" = "$(printf 'PASS  %s\n' "${functions[@]}")" ] || fail "expected six PASS lines only"
+    expect_nothing_left
+    ;;
+  StaticInitializerHoards)
+    # A static initializer that asks for 4 GiB runs in the checker itself, before any check:
+    # the launcher names the checker's memory limit (--memory-limit and 256 MiB) on the
+    # function's line, and the others are graded.
+    submission
+    plant signed_incidence_matrix_dense.cpp '#include "signed_incidence_matrix_dense.h"' \
+      '#include "signed_incidence_matrix_dense.h"
+#include <vector>
+static std::vector<char> hoard(std::size_t(1) << 32, 1);'
+    run_check "$dir/submission"
+    expect_status 1
+    [ "$(echo "$out" | head -n 1)" = "ERROR  signed_incidence_matrix_dense: the checker of signed_incidence_matrix_dense passed its memory limit of 2304 MiB" ] ||
+      fail "expected the checker's memory limit named on the function's line"
+    [ "$(echo "$out" | grep -c '^PASS  ')" = 5 ] || fail "expected the other five to pass"
+    expect_nothing_left
     ;;
   *)
     fail "unknown scenario $scenario"
