@@ -42,8 +42,9 @@ Viewer open_viewer(const CommandLine& command) {
   if (!command.student.empty()) {
     settings.student_server = build_student_step_server(command.student);
   }
+  Scene scene = open_scene(command);  // its refusals name the file already: not inside
   return naming_scene(command.scene,
-                      [&] { return Viewer(open_scene(command), settings, scene_catalog()); });
+                      [&] { return Viewer(std::move(scene), settings, scene_catalog()); });
 }
 
 ViewerSettings viewer_settings(const CommandLine& command) {

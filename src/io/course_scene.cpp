@@ -9,6 +9,7 @@
 
 #include "io/input_file.h"
 #include "io/input_file_limits.h"
+#include "io/json_fields.h"
 #include "io/png_image.h"
 #include "io/read_json_file.h"
 #include "io/read_obj.h"
@@ -28,9 +29,11 @@ constexpr double course_gravity = -9.8;
 
 // A JSON value as it would be written, cut short so that a long list keeps the message short.
 std::string shown(const nlohmann::json& value) {
-  const std::string text = value.dump();
-  return text.size() <= 40 ? text : text.substr(0, 37) + "...";
+  return json_preview(value);
 }
+
+// The keys a course scene has: the course's own reader takes these and no other.
+const std::vector<std::string> course_keys = {"obj", "b", "k", "m", "png"};
 
 InputError key_error(const std::string& json_path, const std::string& key,
                      const std::string& what) {
@@ -80,19 +83,19 @@ std::vector<int> pins(const std::string& json_path, const nlohmann::json& object
   for (std::size_t entry = 0; entry < list.size(); ++entry) {
     const nlohmann::json& value = list[entry];
     const std::string at = "entry " + std::to_string(entry) + " is " + shown(value);
-    if (!value.is_number_integer()) {
-      throw key_error(json_path, "b", at + ", expected an integer vertex index " + range);
+    // Any spelling of a whole number (4, 4.0, 4e0), as a JSON writer may give it.
+    const std::optional<long long> index = whole_number(value, 1, vertex_count);
+    if (!index) {
+      const bool whole =
+          value.is_number_integer() ||
+          (value.is_number() && value.get<double>() == std::floor(value.get<double>()));
+      throw key_error(json_path, "b",
+                      at +
+                          (whole ? ", expected a 1-based vertex index "
+                                 : ", expected an integer vertex index ") +
+                          range);
     }
-    // Unsigned first: a value past the signed range must not wrap into the valid range.
-    const bool in_range = value.is_number_unsigned()
-                              ? value.get<std::uint64_t>() >= 1 &&
-                                    value.get<std::uint64_t>() <= std::uint64_t(vertex_count)
-                              : value.get<std::int64_t>() >= 1 &&
-                                    value.get<std::int64_t>() <= std::int64_t(vertex_count);
-    if (!in_range) {
-      throw key_error(json_path, "b", at + ", expected a 1-based vertex index " + range);
-    }
-    const int vertex = static_cast<int>(value.get<std::int64_t>()) - 1;
+    const int vertex = static_cast<int>(*index) - 1;
     if (std::find(pinned.begin(), pinned.end(), vertex) != pinned.end()) {
       throw key_error(json_path, "b", at + ", a vertex already pinned, expected each once");
     }
@@ -135,6 +138,15 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
   if (object.contains("bc")) {
     throw key_error(json_path, "bc",
                     "boundary conditions are not supported, expected pins in `b` only");
+  }
+  // Any other key is refused too, as in Wobble's own format: a misspelt `m` would otherwise
+  // give area masses without a word, and `colliders` or `self_collision` belong to the other
+  // format.
+  for (const auto& item : object.items()) {
+    if (std::find(course_keys.begin(), course_keys.end(), item.key()) == course_keys.end()) {
+      throw key_error(json_path, item.key(),
+                      "unknown key, a course scene takes only obj, b, k, m and png");
+    }
   }
   if (!object.contains("k")) {
     throw key_error(json_path, "k", "missing, expected the spring stiffness (a positive number)");
@@ -189,7 +201,9 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
 }
 
 Scene load_course_scene(const std::string& json_path) {
-  return load_course_scene(json_path, read_json_file(json_path));
+  nlohmann::json object = read_json_file(json_path);
+  const ReleaseJsonOnExit release(object);
+  return load_course_scene(json_path, object);
 }
 
 }  // namespace wobble

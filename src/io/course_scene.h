@@ -15,12 +15,14 @@ namespace wobble {
 //   "b"    pinned vertices, a list of 1-based indices into the OBJ's vertices (required)
 //   "k"    spring stiffness, a positive number (required)
 //   "m"    one mass for every vertex, a positive number (optional)
-//   "png"  texture image, relative to the JSON file (optional); its header is checked when the
-//          scene loads (see texture_problem), so a bad texture is refused whether or not it is
-//          drawn
+//   "png"  texture image, relative to the JSON file (optional); it is read whole and checked
+//          when the scene loads (see texture_problem), so a bad or damaged texture is refused
+//          whether or not it is drawn
 //   "bc"   boundary conditions: not supported, refused
 //
-// Other keys are ignored. The reference program's rules, which the Scene carries out:
+// Any other key is refused (InputError naming the file and the key). Whole numbers (`b`) may
+// be spelt in any JSON way that is exactly whole: 4, 4.0, 4e0. The reference program's rules, which
+// the Scene carries out:
 //   springs    every pair of vertices of the faces of 3 or more vertices, once; every
 //              two-vertex face as written, a repeated one being a second spring (the course's
 //              E = F); `l` segments like two-vertex faces (see face_springs)

@@ -1,6 +1,7 @@
 #ifndef WOBBLE_IO_INPUT_FILE_LIMITS_H
 #define WOBBLE_IO_INPUT_FILE_LIMITS_H
 
+#include <cstddef>
 #include <cstdint>
 
 #include "io/input_file.h"
@@ -19,6 +20,17 @@ constexpr FileKind medit_file{"a MEDIT .mesh file", 16 * mebibytes};
 constexpr FileKind tetgen_node_file{"a TetGen .node file", 16 * mebibytes};
 constexpr FileKind tetgen_ele_file{"a TetGen .ele file", 16 * mebibytes};
 constexpr FileKind png_file{"a PNG texture", 128 * mebibytes};
+
+// What a scene's JSON may hold, checked while it is parsed and before any of it is kept (see
+// read_json_file): a parsed document takes 16 bytes a value and more for each key, so without
+// these 16 MiB of `0,` or `[]` took 360 to 400 MB just to be refused for a bad value at its end.
+// A scene needs a list item a vertex at most (material.vertex_masses, pins): a million items,
+// all in one list, take 25 MB while they are parsed. A scene has a few dozen keys (64 colliders
+// of 6 keys at most), nests 4 deep, and its longest strings are paths and descriptions.
+constexpr long max_json_list_items = 1'000'000;        // items of all lists together
+constexpr long max_json_keys = 10'000;                 // keys of all objects together
+constexpr long max_json_depth = 64;                    // lists and objects inside each other
+constexpr std::size_t max_json_string_bytes = 65'536;  // each string and each key
 
 // An OBJ face of n corners gives n(n-1)/2 springs, so a few bytes can ask for millions.
 constexpr long max_face_corners = 256;

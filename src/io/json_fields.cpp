@@ -1,6 +1,8 @@
 #include "json_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "sim/input_error.h"
 
@@ -8,14 +10,61 @@ namespace wobble {
 
 namespace {
 
-// A short rendering of a JSON value for error messages.
-std::string shown(const nlohmann::json& value) {
-  std::string text = value.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
+// Appends `value` to `text` until `text` is longer than `max_chars`.
+void append_preview(const nlohmann::json& value, std::size_t max_chars, std::string& text) {
+  if (value.is_array() || value.is_object()) {
+    text += value.is_array() ? '[' : '{';
+    bool first = true;
+    for (auto item = value.begin(); item != value.end() && text.size() <= max_chars; ++item) {
+      if (!first) text += ',';
+      first = false;
+      if (value.is_object()) text += nlohmann::json(item.key()).dump() + ':';
+      append_preview(*item, max_chars, text);
+    }
+    text += value.is_array() ? ']' : '}';
+  } else {
+    text += value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  }
+}
+
+std::string joined(const std::vector<std::string>& keys) {
+  std::string list;
+  for (const std::string& key : keys)
+    list += (list.empty() ? "" : ", ") + key;
+  return list;
 }
 
 }  // namespace
+
+std::string json_preview(const nlohmann::json& value, std::size_t max_chars) {
+  std::string text;
+  append_preview(value, max_chars, text);
+  if (text.size() > max_chars) text = text.substr(0, max_chars - 3) + "...";
+  return text;
+}
+
+std::optional<long long> whole_number(const nlohmann::json& value, long long low, long long high) {
+  if (value.is_number_unsigned()) {
+    const auto n = value.get<std::uint64_t>();
+    if (high < 0 || n > static_cast<std::uint64_t>(high) ||
+        (low > 0 && n < static_cast<std::uint64_t>(low))) {
+      return std::nullopt;
+    }
+    return static_cast<long long>(n);
+  }
+  if (value.is_number_integer()) {
+    const auto n = value.get<std::int64_t>();
+    if (n < low || n > high) return std::nullopt;
+    return static_cast<long long>(n);
+  }
+  if (!value.is_number_float()) return std::nullopt;
+  // 50.0 or 1e1: a double, whole when it has no fraction. The range is checked on the double,
+  // before any conversion, so that 1e300 cannot wrap into range.
+  const double x = value.get<double>();
+  if (!std::isfinite(x) || x != std::floor(x) || std::abs(x) >= 0x1p62) return std::nullopt;
+  if (x < static_cast<double>(low) || x > static_cast<double>(high)) return std::nullopt;
+  return static_cast<long long>(x);
+}
 
 JsonFields::JsonFields(const std::string& file, const nlohmann::json& object, std::string path)
     : file_(file), object_(object), path_(std::move(path)) {}
@@ -31,11 +80,18 @@ std::string JsonFields::where(const std::string& key) const {
 void JsonFields::fail(const std::string& key, const std::string& expected) const {
   const auto found = object_.find(key);
   throw InputError(where(key) + ": expected " + expected +
-                   (found != object_.end() ? ", got " + shown(*found) : ""));
+                   (found != object_.end() ? ", got " + json_preview(*found) : ""));
+}
+
+void JsonFields::allow_only(const std::vector<std::string>& keys, const std::string& what) const {
+  for (const auto& item : object_.items()) {
+    if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
+      throw InputError(where(item.key()) + ": unknown key, " + what + " takes " + joined(keys));
+    }
+  }
 }
 
 const nlohmann::json& JsonFields::raw(const std::string& key) {
-  read_.insert(key);
   return object_.at(key);
 }
 
@@ -67,11 +123,10 @@ std::optional<double> JsonFields::number_in(const std::string& key, const ValueR
 
 std::optional<int> JsonFields::whole(const std::string& key, int low, int high) {
   if (!has(key)) return std::nullopt;
-  const nlohmann::json& value = raw(key);
-  if (!value.is_number_integer() || value.get<long long>() < low || value.get<long long>() > high) {
+  const std::optional<long long> value = whole_number(raw(key), low, high);
+  if (!value)
     fail(key, "a whole number from " + std::to_string(low) + " to " + std::to_string(high));
-  }
-  return static_cast<int>(value.get<long long>());
+  return static_cast<int>(*value);
 }
 
 std::optional<bool> JsonFields::flag(const std::string& key) {
@@ -126,14 +181,6 @@ std::optional<Eigen::Vector3d> JsonFields::color(const std::string& key) {
     fail(key, "a colour [r, g, b] with each in [0, 1]");
   }
   return Eigen::Vector3d(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
-}
-
-std::vector<std::string> JsonFields::unread() const {
-  std::vector<std::string> keys;
-  for (const auto& item : object_.items()) {
-    if (!read_.count(item.key())) keys.push_back((path_.empty() ? "" : path_ + ".") + item.key());
-  }
-  return keys;
 }
 
 }  // namespace wobble

@@ -104,9 +104,11 @@ LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution,
   } else {
     mesh.kind = LoadedMesh::Kind::surface;
     mesh.network.m = voronoi_masses(obj.V, triangles);
+    // Whether that is wrong depends on the scene: a saved scene gives every vertex its mass.
     if (!(mesh.network.m.sum() > 0.0)) {
-      throw InputError(path + ": every face has zero area, so no vertex gets a mass; expected " +
-                       "faces whose corners are not all on one line");
+      mesh.no_area = true;
+      mesh.network.m.setZero();
+      return mesh;
     }
     // A vertex on no face (only on l lines) has no area; give it the mean so it has a mass.
     const double mean = mesh.network.m.sum() / static_cast<double>(mesh.network.m.size());
@@ -118,6 +120,11 @@ LoadedMesh obj_mesh(const std::string& path, bool fill, int fill_resolution,
 }
 
 }  // namespace
+
+std::string no_area_problem(const std::string& path) {
+  return path + ": every face has zero area, so no vertex gets a mass from its area; expected " +
+         "faces whose corners are not all on one line";
+}
 
 std::string extension_of(const std::string& path) {
   const std::size_t dot = path.rfind('.');

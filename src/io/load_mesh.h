@@ -15,7 +15,15 @@ struct LoadedMesh {
   SpringNetwork network;
   Eigen::MatrixXd uv;  // #V by 2 from the OBJ's vt, or empty
   enum class Kind { surface, volume, lines } kind = Kind::surface;
+  // A surface whose every face has zero area: its weights are all 0, so masses must be given
+  // vertex by vertex (a saved scene's material.vertex_masses); see no_area_problem.
+  bool no_area = false;
 };
+
+// "PATH: every face has zero area, so no vertex gets a mass from its area; expected ...": why
+// a mesh with LoadedMesh::no_area cannot take its masses from its area (a density, a total mass,
+// or the defaults).
+std::string no_area_problem(const std::string& path);
 
 // Read a mesh file by its extension:
 //   .obj          springs as face_springs builds them (every two vertices of each larger face
@@ -26,7 +34,9 @@ struct LoadedMesh {
 //   .mesh         MEDIT tetrahedra
 //   .node / .ele  TetGen tetrahedra (either file of the pair)
 // Tetrahedral meshes: springs are the edges, render faces the boundary, weights the lumped
-// volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file.
+// volumes; vertices no tetrahedron uses are dropped. Throws InputError naming the file. An OBJ
+// surface whose faces all have zero area is not refused here (see LoadedMesh::no_area): only
+// masses taken from areas need them.
 // A fill above limits::max_fill_pairs is refused at once, naming `fill_key` (the option or the
 // scene key that asked for it).
 // With `polygon_springs` false (an OBJ only, not filled), faces of three or more vertices are

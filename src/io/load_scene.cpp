@@ -19,6 +19,7 @@ namespace {
 
 Scene bare_mesh_scene(const std::string& path, bool fill) {
   LoadedMesh mesh = load_mesh(path, fill);
+  if (mesh.no_area) throw InputError(no_area_problem(path));
   Scene scene;
   scene.name = std::filesystem::path(path).stem().string();
   const bool volume = mesh.kind == LoadedMesh::Kind::volume;
@@ -64,7 +65,8 @@ Scene load_scene(const std::string& source, bool fill) {
   if (!problem.empty()) throw InputError(source + ": " + problem);
   if (extension_of(source) == ".json") {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled; set it in the scene");
-    const nlohmann::json object = read_json_file(source);
+    nlohmann::json object = read_json_file(source);
+    const ReleaseJsonOnExit release(object);
     if (is_course_scene(object)) return load_course_scene(source, object);
     if (is_wobble_scene(object)) return load_wobble_scene(source, object);
     throw InputError(source +

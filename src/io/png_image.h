@@ -28,18 +28,22 @@ void write_png(const std::string& path, const RgbaImage& image);
 // Read a PNG as 8-bit RGBA with libspng, reading the file once: any bit depth (1, 2, 4, 8, 16;
 // 16-bit samples keep their high byte), grey, palette or colour, with alpha or a tRNS colour,
 // interlaced or not. No gamma or colour profile is applied. The header is read first, and an
-// image wider or taller than `max_side` pixels is refused before any pixel is decoded; the CRC
-// of every chunk read and the pixel data's zlib checksum are checked, and the ancillary chunks
-// Wobble never uses (text, profiles) are held to libspng's chunk limits, set to 1 MiB a chunk
-// and 4 MiB in all, so that compressed text is never inflated past them. Throws InputError naming
-// the file and why it could not be read: not a regular file, larger than png_file.max_bytes
+// image wider or taller than `max_side` pixels is refused before any pixel is decoded. The
+// whole file is read, to its IEND chunk: the CRC of every chunk (critical or ancillary, before
+// or after the pixels) and the pixel data's zlib checksum are checked, and a file that ends
+// inside a chunk or before IEND is refused, naming the chunk: "PATH: the PNG is damaged: chunk
+// IDAT checksum is wrong" (see PngChunks). The ancillary chunks Wobble never uses (text,
+// profiles) are held to libspng's chunk limits, set to 1 MiB a chunk and 4 MiB in all, so that
+// compressed text is never inflated past them. Throws InputError naming the file and why it
+// could not be read: not a regular file, larger than png_file.max_bytes
 // (io/input_file_limits.h), not a PNG, damaged or truncated, or too large.
 RgbaImage read_png(const std::string& path, int max_side = max_texture_side);
 
-// Why the image at `path` cannot be a texture, or "" when it can: the checks of read_png with
-// max_texture_side, made from the file's status and its header only (nothing is decoded), so
-// that a scene with a bad texture is refused when it is loaded, not when it is first drawn. The
-// reason reads after the path ("is a folder, expected a PNG texture").
+// Why the image at `path` cannot be a texture, or "" when it can: every check of read_png with
+// max_texture_side, the whole file decoded row by row into one row's buffer (so it takes little
+// memory), so that a scene with a bad or damaged texture is refused when it is loaded, drawn or
+// not, and a texture it accepts is one read_png reads. The reason reads after the path ("is a
+// folder, expected a PNG texture", "the PNG is damaged: chunk IDAT checksum is wrong").
 std::string texture_problem(const std::string& path);
 
 }  // namespace wobble

@@ -88,26 +88,34 @@ Statements read_statements(const std::string& path, const std::string& text) {
   std::istringstream lines(text);
   std::string line;
   for (int number = 1; std::getline(lines, line); ++number) {
-    const std::vector<std::string> words = split(line, " \t\r");
+    // A comment runs from `#` to the end of the line, after any statement as on a line of its
+    // own; what is left must be the statement and nothing else.
+    const std::vector<std::string> words = split(line.substr(0, line.find('#')), " \t\r");
     const std::string keyword = words.empty() ? "" : words[0];
     const std::string at = path + ": line " + std::to_string(number) + ": ";
     if (keyword == "v" || keyword == "vt") {
       const std::size_t required = keyword == "v" ? 3 : 1;
-      if (words.size() < required + 1) {
+      // `v x y z [w]` or `v x y z r g b` (a colour, as some programs write), `vt u [v [w]]`.
+      const std::size_t most = keyword == "v" ? 6 : 3;
+      if (words.size() < required + 1 || words.size() > most + 1) {
         throw InputError(at + "`" + keyword + "` has " + std::to_string(words.size() - 1) +
-                         " coordinates, expected " + (keyword == "v" ? "x y z" : "u [v]"));
+                         " coordinates, expected " +
+                         (keyword == "v" ? "x y z (or x y z w, or x y z r g b)" : "u [v] [w]") +
+                         ", then at most a # comment");
       }
       // strtod rounds correctly, so a mesh reads back bit for bit what write_obj wrote, and what
-      // the course's reader reads.
+      // the course's reader reads. The numbers past the first three are checked, not kept.
       double values[3] = {0.0, 0.0, 0.0};
-      for (std::size_t w = 1; w < words.size() && w <= 3; ++w) {
-        const NumberWord reading = read_number_word(words[w], values[w - 1]);
+      for (std::size_t w = 1; w < words.size(); ++w) {
+        double value = 0.0;
+        const NumberWord reading = read_number_word(words[w], value);
         if (reading == NumberWord::underflow) {
           throw InputError(at + "coordinate " + underflow_message(words[w]));
         }
         if (reading != NumberWord::finite) {
           throw InputError(at + "coordinate '" + words[w] + "' is not a finite number");
         }
+        if (w <= 3) values[w - 1] = value;
       }
       auto& values_of_kind = keyword == "v" ? statements.positions : statements.texcoords;
       values_of_kind.insert(values_of_kind.end(), values, values + (keyword == "v" ? 3 : 2));

@@ -26,6 +26,10 @@ struct ObjMesh {
 // indices (`v//vn`, `v/vt/vn`) are checked for form only. Coordinates are the correctly rounded
 // doubles of their decimals (strtod), so a file written by write_obj reads back bit for bit.
 //
+// A `#` starts a comment to the end of its line, on a line of its own or after any statement
+// (`f 1 2 3 # the roof`); whatever else a `v`, `vt`, `f` or `l` line holds is refused: `v` takes
+// 3 to 6 numbers (x y z, x y z w, or x y z r g b; only x y z are used), `vt` 1 to 3 (u v used).
+//
 // A UTF-8 byte-order mark before the first line is skipped.
 //
 // Throws InputError, with a one-line message "PATH: line L: what, expected what" where a line

@@ -25,7 +25,7 @@ Eigen::VectorXd vertex_masses(JsonFields& material, Eigen::Index vertex_count) {
     if (!item.is_number() || !limits::vertex_mass.contains(item.get<double>())) {
       throw InputError(material.where("vertex_masses") + "[" + std::to_string(i) +
                        "]: expected a mass " + within_text(limits::vertex_mass) + ", got " +
-                       item.dump());
+                       json_preview(item));
     }
     m(i) = item.get<double>();
   }
@@ -34,7 +34,7 @@ Eigen::VectorXd vertex_masses(JsonFields& material, Eigen::Index vertex_count) {
 
 }  // namespace
 
-void scene_masses(JsonFields& material, LoadedMesh& mesh) {
+void scene_masses(JsonFields& material, LoadedMesh& mesh, const std::string& mesh_name) {
   if (material.has("density") && material.has("mass")) {
     material.fail("mass", "either density or mass, not both");
   }
@@ -44,6 +44,10 @@ void scene_masses(JsonFields& material, LoadedMesh& mesh) {
   if (material.has("vertex_masses")) {
     mesh.network.m = vertex_masses(material, mesh.network.V.rows());
     return;
+  }
+  if (mesh.no_area) {
+    throw InputError(no_area_problem(mesh_name) +
+                     ", or material.vertex_masses giving every vertex its mass");
   }
   const double default_density = mesh.kind == LoadedMesh::Kind::volume    ? 200.0
                                  : mesh.kind == LoadedMesh::Kind::surface ? 0.25

@@ -1,6 +1,8 @@
 #include "scene_pins.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <set>
 
 #include "sim/input_error.h"
@@ -71,24 +73,35 @@ std::vector<int> extreme_vertices(const Eigen::MatrixXd& V, int extreme) {
 
 std::vector<int> scene_pins(JsonFields& fields, const std::string& key, const Eigen::MatrixXd& V,
                             int cloth_resolution) {
-  const nlohmann::json& value = fields.raw(key);
-  const nlohmann::json list = value.is_array() ? value : nlohmann::json::array({value});
   std::set<int> pins;
-  for (const nlohmann::json& item : list) {
+  const auto add = [&](const nlohmann::json& item) {
     if (item.is_string()) {
       add_selection(fields, key, item.get<std::string>(), V, cloth_resolution, pins);
     } else if (item.is_object()) {
       add_band(fields, key, item, V, pins);
-    } else if (item.is_number_integer()) {
-      const long long index = item.get<long long>();
-      if (index < 0 || index >= V.rows()) {
-        throw InputError(fields.where(key) + ": vertex index " + std::to_string(index) +
-                         " is out of range (0 to " + std::to_string(V.rows() - 1) + ")");
+    } else if (item.is_number()) {
+      // Any spelling of a whole number: 3, 3.0, 3e0.
+      const std::optional<long long> index = whole_number(item, 0, V.rows() - 1);
+      if (!index) {
+        const double x = item.get<double>();
+        const bool whole = item.is_number_integer() || x == std::floor(x);
+        throw InputError(
+            fields.where(key) + ": vertex index " + json_preview(item) +
+            (whole ? " is out of range (0 to " : " is not a whole number (expected 0 to ") +
+            std::to_string(V.rows() - 1) + ")");
       }
-      pins.insert(static_cast<int>(index));
+      pins.insert(static_cast<int>(*index));
     } else {
       fields.fail(key, expected_pins);
     }
+  };
+  // The list is read where it is, not copied: it may hold an item for every vertex.
+  const nlohmann::json& value = fields.raw(key);
+  if (value.is_array()) {
+    for (const nlohmann::json& item : value)
+      add(item);
+  } else {
+    add(value);
   }
   return std::vector<int>(pins.begin(), pins.end());
 }

@@ -5,8 +5,7 @@
 
 namespace wobble {
 
-WindParams scene_wind(JsonFields& simulation, const std::string& key,
-                      std::vector<std::string>& unknown) {
+WindParams scene_wind(JsonFields& simulation, const std::string& key) {
   JsonFields fields = simulation.object(key);
   WindParams wind;
   wind.model = WindModel::aerodynamic;
@@ -28,8 +27,6 @@ WindParams scene_wind(JsonFields& simulation, const std::string& key,
   wind.air_density =
       fields.number_in("air_density", limits::air_density).value_or(wind.air_density);
   wind.on = fields.flag("on").value_or(true);
-  for (const std::string& name : fields.unread())
-    unknown.push_back(name);
   return wind;
 }
 

@@ -2,7 +2,6 @@
 #define WOBBLE_IO_SCENE_WIND_H
 
 #include <string>
-#include <vector>
 
 #include "io/json_fields.h"
 #include "sim/forces/wind.h"
@@ -15,10 +14,9 @@ namespace wobble {
 //   "gusts"        relative gust strength in [0, 1] (default 0: steady)
 //   "air_density"  ρ (kg/m³, default 1.2)
 //   "on"           true (default) or false: configured but off until --wind or the W key
-// Keys it does not know are added to `unknown` (full paths), as the loader does elsewhere.
-// Throws InputError naming the file and the key path.
-WindParams scene_wind(JsonFields& simulation, const std::string& key,
-                      std::vector<std::string>& unknown);
+// Other keys are refused by refuse_unknown_scene_keys. Throws InputError naming the file and
+// the key path.
+WindParams scene_wind(JsonFields& simulation, const std::string& key);
 
 }  // namespace wobble
 

@@ -8,6 +8,7 @@
 #include "io/load_mesh.h"
 #include "io/png_image.h"
 #include "io/scene_colliders.h"
+#include "io/scene_keys.h"
 #include "io/scene_masses.h"
 #include "io/scene_pins.h"
 #include "io/scene_self_collision.h"
@@ -27,6 +28,7 @@ struct Shape {
   LoadedMesh mesh;
   int cloth_resolution = 0;  // > 0 for the cloth generator: its grid names pins
   double default_k = 400.0;
+  std::string name;  // how messages name the mesh file, or "" for a generator
 };
 
 std::string relative_to(const std::string& scene_path, const std::string& file) {
@@ -122,6 +124,7 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   }
   Shape shape;
   shape.mesh = load_mesh(file, fill, resolution, mesh.where("fill_resolution"), polygon_springs);
+  shape.name = mesh.where("file") + " '" + file + "'";
   const double scale = mesh.number_in("scale", limits::scale).value_or(1.0);
   const Eigen::Vector3d offset =
       mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());
@@ -144,7 +147,8 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     throw InputError(path + ": not a Wobble scene, expected a JSON object with a \"mesh\"");
   }
   JsonFields top(path, object);
-  std::vector<std::string> unknown;
+  // Unknown keys are refused, at every level, before anything is built.
+  refuse_unknown_scene_keys(path, object);
   Scene scene;
   scene.name = top.text("name").value_or(std::filesystem::path(path).stem().string());
   scene.description = top.text("description").value_or("scene file " + path);
@@ -165,22 +169,18 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
   } else {
     throw InputError(top.where("mesh") + ": expected a \"generator\" or a \"file\"");
   }
-  for (const std::string& key : mesh.unread())
-    unknown.push_back(key);
 
   scene.params.k = shape.default_k;
   if (top.has("material")) {
     JsonFields material = top.object("material");
     scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
-    scene_masses(material, shape.mesh);
+    scene_masses(material, shape.mesh, shape.name);
     scene.params.contact.friction = material.number_in("friction", limits::friction).value_or(0.0);
-    for (const std::string& key : material.unread())
-      unknown.push_back(key);
   } else {
     // JsonFields keeps a reference to its object, so the empty one must outlive it.
     const nlohmann::json empty = nlohmann::json::object();
     JsonFields none(path, empty);
-    scene_masses(none, shape.mesh);
+    scene_masses(none, shape.mesh, shape.name);
   }
   check_shape_limits(path, object, shape.mesh.network);
   scene.network = std::move(shape.mesh.network);
@@ -219,9 +219,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     scene.params.damping = simulation.number_in("damping", limits::damping).value_or(0.0);
     scene.params.contact.offset =
         simulation.number_in("contact_offset", limits::contact_offset).value_or(-1.0);
-    if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind", unknown);
-    for (const std::string& key : simulation.unread())
-      unknown.push_back(key);
+    if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind");
   }
   if (top.has("colliders"))
     scene.params.contact.colliders = scene_colliders(path, top, "colliders");
@@ -242,8 +240,6 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
       const double low = scene.network.V.col(1).minCoeff();
       const double span = std::max(scene.network.V.col(1).maxCoeff() - low, 1e-12);
       scene.initial_velocity.col(0) = top_speed * (scene.network.V.col(1).array() - low) / span;
-      for (const std::string& key : sway.unread())
-        unknown.push_back(key);
     } else {
       scene.initial_velocity.rowwise() =
           top.vector3_in("initial_velocity", limits::speed)->transpose();
@@ -257,8 +253,6 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     if (scene.look.camera_position.has_value() != scene.look.camera_target.has_value()) {
       camera.fail("target", "both a position and a target");
     }
-    for (const std::string& key : camera.unread())
-      unknown.push_back(key);
   }
   if (top.has("appearance")) {
     JsonFields appearance = top.object("appearance");
@@ -277,19 +271,9 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
         scene.notes.push_back(path + ": the mesh has no texture coordinates; texture ignored");
       }
     }
-    for (const std::string& key : appearance.unread())
-      unknown.push_back(key);
   }
   if (shape.mesh.uv.rows() == n) scene.look.uv = shape.mesh.uv;
 
-  for (const std::string& key : top.unread())
-    unknown.push_back(key);
-  if (!unknown.empty()) {
-    std::string list;
-    for (const std::string& key : unknown)
-      list += (list.empty() ? "" : ", ") + key;
-    scene.notes.push_back(path + ": unknown keys ignored: " + list);
-  }
   try {
     validate_spring_network(scene.network);
   } catch (const InputError& error) {

@@ -172,7 +172,11 @@ std::vector<BadInput> catalogue() {
        {tri, {"k.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": -1}"}},
        "{dir}/k.json",
        {"k.json", "`k`", "positive"}},
-      {"course_zero_m", {tri, {"m.json", course(", \"m\": 0")}}, "{dir}/m.json", {"m.json", "`m`"}},
+      // (course() has "m": 1 already, and a key given twice is refused.)
+      {"course_zero_m",
+       {tri, {"m.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 0}"}},
+       "{dir}/m.json",
+       {"m.json", "`m`", "got 0"}},
       {"zero_dt",
        {{"dt.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"simulation\": {\"dt\": 0}}"}},
        "{dir}/dt.json",
@@ -529,9 +533,13 @@ std::vector<BadInput> value_and_output_catalogue() {
       // One line means one line: notes wait for the scene to load, and nothing from a file
       // prints raw.
       {"note_does_not_precede_the_refusal",
-       {{"note.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"unknown\\nkey\": 1}"}},
-       "{dir}/note.json --drag 99999:0,0,1@1",
+       {tri},
+       "{dir}/tri.obj --drag 99999:0,0,1@1",
        {"--drag", "99999"}},
+      {"unknown_key_with_a_line_break",
+       {{"note.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"unknown\\nkey\": 1}"}},
+       "{dir}/note.json",
+       {"note.json", "unknown\\nkey: unknown key, a Wobble scene takes"}},
       {"nul_byte_in_a_coordinate",
        {{"nul.obj", std::string("v 0 0 0\nv 1 0\0 0\nv 0 1 0\nf 1 2 3\n", 33)}},
        "{dir}/nul.obj",
@@ -786,6 +794,87 @@ double children_cpu_seconds() {
          1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
+// A 2 x 2 RGBA PNG of the tests' encoder, with the last byte of its IDAT chunk's CRC flipped
+// (`cut`: cut inside its pixel data instead): every pixel is there, only the checksum says the
+// file is damaged.
+std::string damaged_png(bool cut) {
+  wobble::testing::PngSpec spec;
+  spec.width = spec.height = 2;
+  spec.samples.assign(16, 200);
+  std::string png = wobble::testing::encode_test_png(spec);
+  if (cut) return png.substr(0, png.size() - 20);
+  png[png.size() - 13] ^= 0x01;  // before IEND's 12 bytes
+  return png;
+}
+
+// Issue 28: PNG checksums on every path, JSON keys that appear twice, one rule for unknown keys,
+// OBJ comments, and what a refusal costs.
+std::vector<BadInput> strict_reader_catalogue() {
+  const std::pair<std::string, std::string> tri{"tri.obj", triangle_obj};
+  const std::string texture_scene =
+      "{\"mesh\": {\"generator\": \"cloth\"}, \"appearance\": {\"texture\": \"t.png\"}}";
+  std::string long_list = "{\"mesh\": {\"generator\": \"cloth\"}, \"pins\": [0";
+  for (long i = 0; i < wobble::max_json_list_items; ++i)
+    long_list += ",0";
+  long_list += "], \"simulation\": {\"iterations\": -1}}";
+  return {
+      // The texture is checked whole when the scene loads, so a damaged one is refused though
+      // nothing is drawn.
+      {"texture_idat_checksum_without_screenshot",
+       {{"s.json", texture_scene}, {"t.png", damaged_png(false)}},
+       "{dir}/s.json",
+       {"s.json", "appearance.texture", "t.png",
+        "the PNG is damaged: chunk IDAT checksum is wrong"},
+       {},
+       false},
+      {"texture_cut_in_idat_with_screenshot",
+       {{"s.json", texture_scene}, {"t.png", damaged_png(true)}},
+       "{dir}/s.json",
+       {"s.json", "appearance.texture", "t.png",
+        "the PNG is damaged: the file ends inside chunk IDAT"}},
+      {"course_png_idat_checksum_without_screenshot",
+       {tri, {"c.json", course(", \"png\": \"t.png\"")}, {"t.png", damaged_png(false)}},
+       "{dir}/c.json",
+       {"c.json", "`png`", "t.png", "chunk IDAT checksum is wrong"},
+       {},
+       false},
+      // Keys that appear twice, at the top or in a nested object.
+      {"collider_type_twice",
+       {{"s.json",
+         "{\"mesh\": {\"generator\": \"cloth\"},\n \"colliders\": [{\"type\": \"sphere\",\n"
+         "  \"type\": \"box\", \"center\": [0, 0, 0], \"size\": [1, 1, 1]}]}"}},
+       "{dir}/s.json",
+       {"s.json", "line 3", "key \"type\" appears twice in the same object (colliders[0])"}},
+      {"course_k_twice",
+       {tri, {"c.json", "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"k\": 20}"}},
+       "{dir}/c.json",
+       {"c.json", "line 1", "key \"k\" appears twice"}},
+      // Unknown keys, in either format.
+      {"course_scene_with_colliders",
+       {tri, {"c.json", course(", \"colliders\": [{\"type\": \"ground\"}]")}},
+       "{dir}/c.json",
+       {"c.json", "`colliders`", "unknown key, a course scene takes only obj, b, k, m and png"}},
+      {"course_scene_with_a_typo",
+       {tri, {"c.json", course(", \"pgn\": \"t.png\"")}},
+       "{dir}/c.json",
+       {"c.json", "`pgn`", "unknown key"}},
+      {"scene_material_typo",
+       {{"s.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"densty\": 1}}"}},
+       "{dir}/s.json",
+       {"s.json", "material.densty", "unknown key, material takes k, density"}},
+      // A comment is fine after any OBJ statement; other words after a face are not.
+      {"obj_junk_after_a_face",
+       {{"j.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0 # ok\nf 1 2 3 junk # comment\n"}},
+       "{dir}/j.obj",
+       {"j.obj", "line 4", "'junk' is not a vertex reference"}},
+      // A list above the limit is refused while parsing, before it is kept.
+      {"scene_list_above_the_limit",
+       {{"l.json", long_list}},
+       "{dir}/l.json",
+       {"l.json", "line 1", "more than 1,000,000 items in all lists"}},
+  };
+}
+
 TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   const BadInput& input = GetParam();
   for (const Special& special : input.specials) {
@@ -850,6 +939,10 @@ TEST_P(Catalogue, IsRefusedWithExitCode2OneLineAndNothingWritten) {
   EXPECT_EQ(result.err.rfind("wobble: ", 0), 0u) << result.err;
   for (const std::string& expected : input.expected)
     EXPECT_NE(result.err.find(expected), std::string::npos) << expected << " in " << result.err;
+  // The file named first is named once: the window and --screenshot used to put the scene's
+  // path in front of the scene's own refusals a second time.
+  const std::string first = arguments.substr(0, arguments.find(' '));
+  EXPECT_EQ(result.err.find(first + ": " + first + ":"), std::string::npos) << result.err;
   EXPECT_EQ(result.out, "");
   std::vector<std::string> after = entries();
   std::sort(after.begin(), after.end());
@@ -945,6 +1038,10 @@ INSTANTIATE_TEST_SUITE_P(BadContactInput, Catalogue, ::testing::ValuesIn(contact
                            return std::string(info.param.name);
                          });
 INSTANTIATE_TEST_SUITE_P(RoundTwo, Catalogue, ::testing::ValuesIn(round_two_catalogue()),
+                         [](const ::testing::TestParamInfo<BadInput>& info) {
+                           return std::string(info.param.name);
+                         });
+INSTANTIATE_TEST_SUITE_P(StrictReaders, Catalogue, ::testing::ValuesIn(strict_reader_catalogue()),
                          [](const ::testing::TestParamInfo<BadInput>& info) {
                            return std::string(info.param.name);
                          });

@@ -1,6 +1,6 @@
-// libFuzzer harness: a texture, checked from its header by texture_problem (as a scene is
-// loaded) and decoded by read_png (as it is first drawn). The two must agree: a header that
-// texture_problem refuses is never decoded.
+// libFuzzer harness: a texture, checked whole by texture_problem (as a scene is loaded) and
+// decoded by read_png (as it is first drawn). The two must agree: texture_problem accepts
+// exactly the files read_png decodes.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -23,8 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     decoded = true;
   });
-  if (decoded && !problem.empty()) {
-    std::fprintf(stderr, "wobble fuzz: decoded a texture its header check refused: %s\n",
+  if (decoded != problem.empty()) {
+    std::fprintf(stderr, "wobble fuzz: read_png %s a texture that texture_problem %s: %s\n",
+                 decoded ? "decoded" : "refused", decoded ? "refused" : "accepted",
                  problem.c_str());
     std::abort();
   }

@@ -99,9 +99,9 @@ TEST(ContactKeys, WindObjectTurnsTheAerodynamicWindOn) {
   EXPECT_EQ(wind.gusts, 0.4);
   EXPECT_EQ(wind.air_density, 1.1);
 
-  const wobble::Scene off = load(std::string("{") + cloth +
-                                 R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "on": false,
-                                     "colour": 1}}})");
+  const wobble::Scene off =
+      load(std::string("{") + cloth +
+           R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "on": false}}})");
   const wobble::WindParams defaults;
   EXPECT_FALSE(off.params.wind.on);
   EXPECT_EQ(off.params.wind.velocity, Eigen::Vector3d(0, 0, 3));
@@ -109,9 +109,15 @@ TEST(ContactKeys, WindObjectTurnsTheAerodynamicWindOn) {
   EXPECT_EQ(off.params.wind.lift, defaults.lift);
   EXPECT_EQ(off.params.wind.gusts, defaults.gusts);
   EXPECT_EQ(off.params.wind.air_density, defaults.air_density);
-  // Unknown keys in the wind object are a note, as everywhere outside the colliders.
-  ASSERT_EQ(off.notes.size(), 1u);
-  EXPECT_NE(off.notes[0].find("simulation.wind.colour"), std::string::npos) << off.notes[0];
+  EXPECT_TRUE(off.notes.empty());
+  // An unknown key in the wind object stops loading, as everywhere else.
+  const std::string message =
+      error_of(std::string("{") + cloth +
+               R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "colour": 1}}})");
+  EXPECT_NE(message.find("scene.json: simulation.wind.colour: unknown key, simulation.wind takes "
+                         "velocity, drag, lift, gusts, air_density, on, model"),
+            std::string::npos)
+      << message;
 }
 
 TEST(ContactKeys, CourseScenesGetTheCourseWindOff) {

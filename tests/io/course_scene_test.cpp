@@ -65,8 +65,7 @@ TEST(IsCourseScene, NeedsAnObjectWithObjAndB) {
 
 TEST_F(CourseScene, FollowsTheReferenceProgramsRules) {
   write("sheet.json",
-        R"({"obj": "meshes/sheet.obj", "b": [4, 1], "k": 250.5, "png": "check.png",
-            "comment": "unknown keys are ignored"})");
+        R"({"obj": "meshes/sheet.obj", "b": [4, 1], "k": 250.5, "png": "check.png"})");
   const wobble::Scene scene = wobble::load_course_scene(json_path());
   EXPECT_EQ(scene.name, "sheet");
   EXPECT_EQ(scene.description, "course scene: 5 vertices, 8 springs");
@@ -167,6 +166,35 @@ TEST_F(CourseScene, RefusesBadKeys) {
                    "is a folder, expected a PNG texture");
   expect_key_error("{" + obj + R"(, "b": [1], "k": 1, "png": "meshes/sheet.obj"})", "png",
                    "sheet.obj': is not a readable image");
+}
+
+// Only the course's own keys: anything else (a typo, or a key of Wobble's own format) stops
+// loading, naming the file and the key.
+TEST_F(CourseScene, RefusesKeysTheCourseDoesNotHave) {
+  const std::string obj = R"("obj": "meshes/sheet.obj", "b": [1], "k": 1)";
+  const std::string takes = "unknown key, a course scene takes only obj, b, k, m and png";
+  for (const std::string key : {"colliders", "self_collision", "mass", "comment", "B", "p ng"}) {
+    expect_key_error("{" + obj + ", \"" + key + "\": 1}", key, takes);
+  }
+  // A key that appears twice is refused while the file is parsed, before any key is looked at.
+  const std::string message = error("{" + obj + R"(, "k": 2})");
+  EXPECT_EQ(message, json_path() + R"(: line 1: key "k" appears twice in the same object)");
+}
+
+// `b` takes a whole number in any spelling JSON has for it, and nothing that is not whole.
+TEST_F(CourseScene, PinsAreWholeNumbersHoweverSpelt) {
+  write("sheet.json", R"({"obj": "meshes/sheet.obj", "b": [4.0, 1e0, 20e-1, 0.3e1], "k": 1})");
+  const wobble::Scene scene = wobble::load_course_scene(json_path());
+  EXPECT_EQ(scene.pins, std::vector<int>({3, 0, 1, 2}));
+  const std::string obj = R"("obj": "meshes/sheet.obj", "k": 1)";
+  expect_key_error("{" + obj + R"(, "b": [1.000001]})", "b",
+                   "entry 0 is 1.000001, expected an integer");
+  expect_key_error("{" + obj + R"(, "b": [6.0]})", "b",
+                   "entry 0 is 6.0, expected a 1-based vertex index 1 to 5");
+  expect_key_error("{" + obj + R"(, "b": [0e3]})", "b", "expected a 1-based vertex index 1 to 5");
+  expect_key_error("{" + obj + R"(, "b": [1e300]})", "b", "expected a 1-based vertex index 1 to 5");
+  expect_key_error("{" + obj + R"(, "b": [4, 4.0]})", "b",
+                   "entry 1 is 4.0, a vertex already pinned");
 }
 
 // The course's k and m keep to the limits of --k and of Wobble's own scenes (sim/value_limits.h).

@@ -89,8 +89,33 @@ TEST(LoadScene, ObjWhoseFacesHaveNoAreaIsRefusedByName) {
   TemporaryFolder folder;
   const std::string path = folder.file("line.obj");
   std::ofstream(path) << "f 1 2 3\nv 0 0 8\nv 0 0 5\nv 0 0 5\n";
-  EXPECT_EQ(error_of(path), path + ": every face has zero area, so no vertex gets a mass; " +
-                                "expected faces whose corners are not all on one line");
+  EXPECT_EQ(error_of(path), path + ": every face has zero area, so no vertex gets a mass from " +
+                                "its area; expected faces whose corners are not all on one line");
+}
+
+// Zero-area faces are wrong only where the masses come from areas: a scene that gives every
+// vertex its mass (as a saved scene does) loads, and one that asks for a density or a total
+// mass, or leaves the masses to the default, is refused naming the mesh and the way out.
+TEST(LoadScene, ZeroAreaFacesNeedMassesGivenVertexByVertex) {
+  TemporaryFolder folder;
+  std::ofstream(folder.file("line.obj")) << "v 0 0 0\nv 0 0 1\nv 0 0 2\nf 1 2 3\n";
+  const std::string scene = folder.file("scene.json");
+  std::ofstream(scene) << R"({"mesh": {"file": "line.obj"}, "pins": [0],
+                              "material": {"vertex_masses": [0.5, 0.25, 2]}})";
+  const wobble::Scene loaded = wobble::load_scene(scene);
+  EXPECT_EQ(loaded.network.m, Eigen::Vector3d(0.5, 0.25, 2));
+  EXPECT_EQ(loaded.network.F.rows(), 1);
+  EXPECT_TRUE(loaded.notes.empty());
+
+  const std::string refusal = scene + ": mesh.file '" + folder.file("line.obj") +
+                              "': every face has zero area, so no vertex gets a mass from its " +
+                              "area; expected faces whose corners are not all on one line, or " +
+                              "material.vertex_masses giving every vertex its mass";
+  for (const std::string material :
+       {"", R"(, "material": {"density": 2})", R"(, "material": {"mass": 1, "k": 10})"}) {
+    std::ofstream(scene, std::ios::trunc) << R"({"mesh": {"file": "line.obj"})" + material + "}";
+    EXPECT_EQ(error_of(scene), refusal) << material;
+  }
 }
 
 }  // namespace

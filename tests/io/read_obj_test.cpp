@@ -200,6 +200,39 @@ TEST_F(ReadObj, BadCoordinatesNameTheirLine) {
   expect_error("v 0 0 0\nvt\n", "line 2: ", "expected u [v]");
 }
 
+// A `#` comment may follow any statement, not only `v`: the rest of the line is ignored. What
+// is not a comment is still refused, on every kind of line.
+TEST_F(ReadObj, CommentsAfterAnyStatement) {
+  const wobble::ObjMesh mesh = read(
+      "# a square\n"
+      "v 0 0 0 # origin\nv 1 0 0\t# x\nv 1 1 0 #\nv 0 1 0 1 # with a w\n"
+      "vt 0 0 # first\nvt 1 0 #second\nvt 1 1 0 # with a w\nvt 0#no space\n"
+      "g roof # a group\n"
+      "f 1/1 2/2 3/3 # the first triangle\n"
+      "f 1/1 3/3 4/4 #\n"
+      "l 2 4 # a diagonal spring\n"
+      "f 1 2#touching\n");
+  ASSERT_EQ(mesh.V.rows(), 4);
+  EXPECT_EQ(mesh.V.row(3), Eigen::RowVector3d(0, 1, 0));
+  EXPECT_EQ(mesh.faces, (Faces{{0, 1, 2}, {0, 2, 3}, {0, 1}, {1, 3}}));
+  ASSERT_EQ(mesh.uv.rows(), 4);
+  EXPECT_EQ(mesh.uv.row(2), Eigen::RowVector2d(1, 1));
+  EXPECT_EQ(mesh.uv.row(3), Eigen::RowVector2d(0, 0));
+
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_error(v + "f 1 2 3 note\n", "line 4: ", "'note' is not a vertex reference");
+  expect_error(v + "f 1 2 3 // note\n", "line 4: ", "'//' is not a vertex reference");
+  expect_error(v + "l 1 2 ; note\n", "line 4: ", "';' is not a vertex reference");
+  expect_error(v + "vt 0 0 note\nf 1 2 3\n", "line 4: ", "'note' is not a finite number");
+  expect_error(v + "vt 0 0 0 0\nf 1 2 3\n",
+               "line 4: ", "`vt` has 4 coordinates, expected u [v] [w]");
+  expect_error("v 0 0 0 junk\n", "line 1: ", "'junk' is not a finite number");
+  expect_error("v 0 0 0 1 1 1 1\n", "line 1: ", "`v` has 7 coordinates");
+  // A comment that swallows what a statement needs leaves it short.
+  expect_error(v + "f 1 # 2 3\n", "line 4: ", "`f` lists 1 vertices");
+  expect_error("v 0 0 # 0\n", "line 1: ", "`v` has 2 coordinates");
+}
+
 TEST_F(ReadObj, EmptyMeshesAreRefused) {
   const std::string path = folder_.file("mesh.obj");
   EXPECT_EQ(error(""), path + ": no vertices, expected `v x y z` lines");
