@@ -54,6 +54,8 @@ source "$root/src/check/submission_files.sh"
 source "$root/src/check/stop_on_signal.sh"
 
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/wobble-check"
+# Where the cache folder's name came from, for a message when it cannot be made.
+if [ -n "${XDG_CACHE_HOME:-}" ]; then cache_from=XDG_CACHE_HOME; else cache_from=HOME; fi
 time_limit=10
 memory_mib=2048
 compile_limit=120
@@ -73,7 +75,7 @@ while [ $# -gt 0 ]; do
       --build-step-server | --class | --timing-file)
       [ $# -ge 2 ] || die "$1 needs a value"
       case "$1" in
-        --cache) cache=$2 ;;
+        --cache) cache=$2 cache_from="--cache" ;;
         --time-limit) time_limit=$2 ;;
         --memory-limit) memory_mib=$2 ;;
         --compile-limit) compile_limit=$2 ;;

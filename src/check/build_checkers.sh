@@ -35,8 +35,19 @@ check_toolchain() {
   [ -f "$eigen/Eigen/Core" ] || die "Eigen not found in $eigen (apt-get install libeigen3-dev)"
   [ -f /usr/include/nlohmann/json.hpp ] ||
     die "nlohmann-json not found (apt-get install nlohmann-json3-dev)"
-  mkdir -p "$cache/obj" "$cache/lib" "$cache/bin" 2>/dev/null ||
-    die "$cache: cannot create the cache folder"
+  if ! mkdir -p "$cache/obj" "$cache/lib" "$cache/bin" 2>/dev/null; then
+    # The default comes from XDG_CACHE_HOME (or HOME): say which, and what is in the way.
+    local from="--cache"
+    [ -n "${cache_from:-}" ] && from=$cache_from
+    local blocker=$cache
+    while [ "$blocker" != / ] && [ "$blocker" != . ] && [ ! -e "$blocker" ]; do
+      blocker=$(dirname "$blocker")
+    done
+    if [ -e "$blocker" ] && [ ! -d "$blocker" ]; then
+      die "$cache: cannot create the cache folder: $blocker is a file, not a folder (from $from)"
+    fi
+    die "$cache: cannot create the cache folder (from $from; is it writable?)"
+  fi
   work=$(mktemp -d) || die "cannot create a temporary folder"
   # The compilers' own temporary files (g++'s .s) too, so that one killed at a limit or by a
   # signal leaves nothing outside the folder, which goes at the end whatever happens.

@@ -8,7 +8,13 @@ functions=(
 )
 
 die() {
-  echo "check-assignment: $*" >&2
+  # One line whatever the names in it hold: a line break or a tab (a folder may be named with
+  # one) is written as \n or \t, as wobble writes control characters.
+  local message="check-assignment: $*"
+  message=${message//$'\n'/\\n}
+  message=${message//$'\r'/\\r}
+  message=${message//$'\t'/\\t}
+  printf '%s\n' "$message" >&2
   exit 2
 }
 

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -186,3 +187,33 @@ TEST(StudentBuild, ASignalDuringTheBuildLeavesNothingBehind) {
 }
 
 }  // namespace
+
+// Names that reach the messages are kept on one line, and a cache folder that cannot be made
+// says which variable named it and what is in the way.
+TEST(StudentBuild, RefusalsStayOnOneLineAndNameWhereTheCacheCameFrom) {
+  TemporaryFolder folder;
+  const std::string odd = folder.file("my\nsolution");
+  std::filesystem::create_directories(odd);
+  wobble::testing::Result result =
+      wobble::testing::run_wobble("cloth --headless --frames 1 --screenshot '" +
+                                  folder.file("s.png") + "' --student '" + odd + "'");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("my\\nsolution: missing fast_mass_springs_step_sparse.cpp"),
+            std::string::npos)
+      << result.err;
+
+  std::ofstream(folder.file("not-a-folder")) << "x";
+  write_submission(folder.file("seed"), "");
+  result = wobble::testing::run_wobble(
+      "cloth --headless --frames 1 --screenshot '" + folder.file("s.png") + "' --student '" +
+          folder.file("seed") + "'",
+      "XDG_CACHE_HOME='" + folder.file("not-a-folder") + "'");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("cannot create the cache folder: " + folder.file("not-a-folder") +
+                            " is a file, not a folder (from XDG_CACHE_HOME)"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(std::filesystem::exists(folder.file("s.png")));
+}
