@@ -223,8 +223,9 @@ TEST(EndGroupOnTermination, WithAGraceTheGroupMayCleanUpFirst) {
   const pid_t caller = fork();
   ASSERT_GE(caller, 0);
   if (caller == 0) {
-    const std::string script = "touch '" + file + "'; trap \"sleep 0.3; rm -f '" + file +
-                               "'; exit 0\" TERM; while :; do sleep 0.05; done";
+    // The trap first: the file says the group is ready for the signal.
+    const std::string script = "trap \"sleep 0.3; rm -f '" + file + "'; exit 0\" TERM; touch '" +
+                               file + "'; while :; do sleep 0.05; done";
     const pid_t group = spawn_bounded({"sh", "-c", script}, ProcessLimits{}, ChildStreams{});
     if (group < 0) _exit(10);
     const EndGroupOnTermination end_on_termination(group, 5.0);
