@@ -168,23 +168,13 @@ void write_output_file(const std::string& output, const std::string& contents) {
   if (fd < 0) {
     throw OutputError(path + ": cannot create a temporary file: " + std::strerror(errno));
   }
-  const auto fail = [&](const char* what) {
-    const std::string reason = std::strerror(errno);
+  const auto fail = [&](const std::string& reason) {
     close(fd);
     forget_temporary(temporary, true);
-    throw OutputError(path + ": " + what + ": " + reason);
+    throw OutputError(path + ": " + reason);
   };
-  const char* data = contents.data();
-  std::size_t left = contents.size();
-  while (left > 0) {
-    const ssize_t written = write(fd, data, left);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      fail("write failed");
-    }
-    data += written;
-    left -= static_cast<std::size_t>(written);
-  }
+  const std::string write_failure = write_all(fd, contents);
+  if (!write_failure.empty()) fail(write_failure);
   // mkstemp creates the file 0600. A replaced file keeps its permissions (a shared 0644 image
   // stays readable by others, a private 0600 one stays private); a new file gets those an
   // ordinary new file would get. Set-user and set-group bits are not carried over.
@@ -196,8 +186,8 @@ void write_output_file(const std::string& output, const std::string& contents) {
     umask(mask);
     mode = 0666 & ~mask;
   }
-  if (fchmod(fd, mode) != 0) fail("chmod failed");
-  if (fsync(fd) != 0) fail("fsync failed");
+  if (fchmod(fd, mode) != 0) fail(std::string("chmod failed: ") + std::strerror(errno));
+  if (fsync(fd) != 0) fail(std::string("fsync failed: ") + std::strerror(errno));
   if (close(fd) != 0) {
     const std::string reason = std::strerror(errno);
     forget_temporary(temporary, true);

@@ -134,6 +134,21 @@ std::string shown_output(const std::string& path, const OutputTarget& target) {
   return shown;
 }
 
+std::string write_all(int fd, const std::string& contents) {
+  const char* data = contents.data();
+  std::size_t left = contents.size();
+  while (left > 0) {
+    const ssize_t written = write(fd, data, left);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return std::string("write failed: ") + strerror(errno);
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  return "";
+}
+
 std::string write_in_place(const OutputTarget& target, const std::string& contents,
                            double fifo_wait_seconds) {
   int fd = -1;
@@ -158,19 +173,7 @@ std::string write_in_place(const OutputTarget& target, const std::string& conten
     }
     fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   }
-  std::string failure;
-  const char* data = contents.data();
-  std::size_t left = contents.size();
-  while (left > 0) {
-    const ssize_t written = write(fd, data, left);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      failure = std::string("write failed: ") + strerror(errno);
-      break;
-    }
-    data += written;
-    left -= static_cast<std::size_t>(written);
-  }
+  std::string failure = write_all(fd, contents);
   if (target.kind != OutputTarget::Kind::descriptor && close(fd) != 0 && failure.empty()) {
     failure = std::string("close failed: ") + strerror(errno);
   }

@@ -31,6 +31,10 @@ std::string resolve_output(const std::string& path, OutputTarget& target);
 // "'out.csv' (a link to '/tmp/real.csv')".
 std::string shown_output(const std::string& path, const OutputTarget& target);
 
+// Writes all of `contents` to `fd`, again after interruptions and short writes. Returns "" or
+// "write failed: REASON".
+std::string write_all(int fd, const std::string& contents);
+
 // Writes `contents` in place to a target of kind in_place or descriptor: to the descriptor
 // (standard output and error are flushed first, so the bytes follow what was printed), or to the
 // device or FIFO opened for writing, waiting up to `fifo_wait_seconds` for a FIFO's reader.
