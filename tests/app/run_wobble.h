@@ -2,6 +2,7 @@
 #define WOBBLE_TESTS_APP_RUN_WOBBLE_H
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -49,6 +50,17 @@ inline Result run_wobble(const std::string& arguments, const std::string& enviro
   result.out = read_text(capture.file("out"));
   result.err = read_text(capture.file("err"));
   return result;
+}
+
+// In a forked child whose streams are already set up: becomes the wobble executable
+// (WOBBLE_EXECUTABLE) run with `arguments`; exits with 127 if it cannot be started.
+[[noreturn]] inline void exec_wobble(const std::vector<std::string>& arguments) {
+  std::vector<char*> argv{const_cast<char*>(WOBBLE_EXECUTABLE)};
+  for (const std::string& argument : arguments)
+    argv.push_back(const_cast<char*>(argument.c_str()));
+  argv.push_back(nullptr);
+  execv(WOBBLE_EXECUTABLE, argv.data());
+  _exit(127);
 }
 
 }  // namespace wobble::testing

@@ -66,12 +66,7 @@ struct Surroundings {
       dup2(null, 0);
       dup2(out, 1);
       dup2(err, 2);
-      std::vector<char*> argv{const_cast<char*>(WOBBLE_EXECUTABLE)};
-      for (const std::string& argument : arguments)
-        argv.push_back(const_cast<char*>(argument.c_str()));
-      argv.push_back(nullptr);
-      execv(WOBBLE_EXECUTABLE, argv.data());
-      _exit(127);
+      wobble::testing::exec_wobble(arguments);
     }
     return pid;
   }
@@ -205,10 +200,10 @@ TEST(StudentBuild, RefusalsStayOnOneLineAndNameWhereTheCacheCameFrom) {
 
   std::ofstream(folder.file("not-a-folder")) << "x";
   write_submission(folder.file("seed"), "");
-  result = wobble::testing::run_wobble(
-      "cloth --headless --frames 1 --screenshot '" + folder.file("s.png") + "' --student '" +
-          folder.file("seed") + "'",
-      "XDG_CACHE_HOME='" + folder.file("not-a-folder") + "'");
+  result = wobble::testing::run_wobble("cloth --headless --frames 1 --screenshot '" +
+                                           folder.file("s.png") + "' --student '" +
+                                           folder.file("seed") + "'",
+                                       "XDG_CACHE_HOME='" + folder.file("not-a-folder") + "'");
   EXPECT_EQ(result.exit_code, 2) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
   EXPECT_NE(result.err.find("cannot create the cache folder: " + folder.file("not-a-folder") +

@@ -26,12 +26,7 @@ pid_t start_wobble(const std::vector<std::string>& arguments) {
     dup2(null, 0);
     dup2(null, 1);
     dup2(null, 2);
-    std::vector<char*> argv{const_cast<char*>(WOBBLE_EXECUTABLE)};
-    for (const std::string& argument : arguments)
-      argv.push_back(const_cast<char*>(argument.c_str()));
-    argv.push_back(nullptr);
-    execv(WOBBLE_EXECUTABLE, argv.data());
-    _exit(127);
+    wobble::testing::exec_wobble(arguments);
   }
   return pid;
 }

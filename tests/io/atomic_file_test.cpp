@@ -62,8 +62,7 @@ TEST(AtomicFile, AReplacedFileKeepsItsPermissionsAndANewOneFollowsTheUmask) {
 
 TEST(AtomicFile, FailureThrowsAndLeavesNothingBehind) {
   TemporaryFolder folder;
-  EXPECT_THROW(wobble::write_output_file(folder.file("missing/out.txt"), "x"),
-               wobble::OutputError);
+  EXPECT_THROW(wobble::write_output_file(folder.file("missing/out.txt"), "x"), wobble::OutputError);
   // Renaming a file over a folder fails after the temporary file was written: it must go.
   std::filesystem::create_directory(folder.file("taken"));
   EXPECT_THROW(wobble::write_output_file(folder.file("taken"), "x"), wobble::OutputError);
@@ -107,8 +106,9 @@ TEST(AtomicFile, CheckOutputPathTakesDevicesAndFifosButRefusesLongNamesAndLoops)
   const std::string long_name = folder.file(std::string(250, 'a') + ".obj");
   EXPECT_NE(refusal(long_name).find("File name too long"), std::string::npos) << refusal(long_name);
   std::filesystem::create_symlink("loop", folder.file("loop"));
-  EXPECT_NE(refusal(folder.file("loop")).find("--export-obj: '" + folder.file("loop") +
-                                              "' is a link in a chain of more than 40 links"),
+  EXPECT_NE(refusal(folder.file("loop"))
+                .find("--export-obj: '" + folder.file("loop") +
+                      "' is a link in a chain of more than 40 links"),
             std::string::npos)
       << refusal(folder.file("loop"));
   std::filesystem::create_directory(folder.file("d"));
