@@ -18,6 +18,7 @@ test_packages=(
   libgtest-dev libbenchmark-dev
   xvfb xauth
   strace                                # a test watches the atomic write's system calls
+  python3                               # tests/docs/check_links.py: the docs' links resolve
 )
 
 # What scripts/fuzz.sh needs on top: clang and its libFuzzer and sanitizer runtimes.
