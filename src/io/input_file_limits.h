@@ -10,8 +10,9 @@ namespace wobble {
 
 // The largest input files Wobble reads, one per format, and the limits on what a small file can
 // ask for. Each is refused at once, from the file's size or its header, with the limit in the
-// message. The README's table "Input limits" gives the measurements behind each: a file at the
-// limit still loads and runs on a 2-core machine in seconds and well under the machine's memory.
+// message. docs/scenes.md, "Input files and their limits", gives the measurements behind each: a
+// file at the limit still loads and runs on a 2-core machine in seconds and well under the
+// machine's memory.
 constexpr std::uintmax_t mebibytes = 1024 * 1024;
 
 constexpr FileKind scene_json_file{"a scene (JSON)", 16 * mebibytes};

@@ -11,10 +11,10 @@ namespace wobble {
 // Whether a parsed JSON object is a Wobble scene: it has a "mesh".
 bool is_wobble_scene(const nlohmann::json& object);
 
-// Build the scene a Wobble scene file describes (the README documents the format). `path` names
-// the file in messages and anchors relative paths. Unknown keys do not stop loading: they become
-// a note naming them. Throws InputError naming the file, the key and what was expected (or,
-// when `object` is not a JSON object with a "mesh", saying so).
+// Build the scene a Wobble scene file describes (docs/scenes.md, "Wobble's scene format",
+// documents the format). `path` names the file in messages and anchors relative paths. An
+// unknown key stops loading, as a wrong value does. Throws InputError naming the file, the key
+// and what was expected (or, when `object` is not a JSON object with a "mesh", saying so).
 Scene load_wobble_scene(const std::string& path, const nlohmann::json& object);
 
 }  // namespace wobble

@@ -28,7 +28,7 @@ namespace wobble {
 // cannot be written there (its folder does not exist, it is a folder, ...), when the mesh file
 // would be `json_path` itself (it ends in .obj), or when the scene holds something the format
 // cannot state: an initial velocity that is neither the same for every vertex nor a sway (see
-// README). Throws OutputError when writing fails midway.
+// docs/scenes.md). Throws OutputError when writing fails midway.
 void write_wobble_scene(const std::string& json_path, const Scene& scene);
 
 // The scene's JSON object, naming `mesh_file` as its mesh and `texture` (already made relative
