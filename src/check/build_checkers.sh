@@ -237,6 +237,10 @@ start_prelude() {
         sha256sum | cut -c1-32)
   prelude_folder="$cache/prelude/$key"
   mkdir -p "$prelude_folder" || die "$prelude_folder: cannot create the folder"
+  # Absolute: compile_student links to it from a folder of its own, and a link to a relative
+  # path (a relative --cache) would point nowhere, which read as the student's file including a
+  # check_prelude.h the checker cannot supply.
+  prelude_folder=$(cd "$prelude_folder" && pwd) || die "$prelude_folder: cannot enter the folder"
   if [ ! -f "$prelude_folder/check_prelude.h" ]; then
     cp "$check_sources/check_prelude.h" "$prelude_folder/check_prelude.h.tmp.$$" &&
       mv -f "$prelude_folder/check_prelude.h.tmp.$$" "$prelude_folder/check_prelude.h" ||

@@ -102,6 +102,15 @@ std::string step_hint(const CheckScene& scene, double pin_weight, const Eigen::M
                 });
   if (!fiftieth_agrees) return "";
   if (matched == 0) return "it returns Ucur unchanged, as after 0 local-global iterations";
+  // One too many or too few is almost always the loop's first or last value (<= for <, a start
+  // at 1 or at -1), so the hint points there.
+  if (matched == kAssignmentIterations - 1 || matched == kAssignmentIterations + 1) {
+    const std::string fixed = std::to_string(kAssignmentIterations);
+    return "it matches " + std::to_string(matched) + " local-global iterations from Ucur, one " +
+           (matched < kAssignmentIterations ? "fewer" : "more") + " than the assignment's " +
+           fixed + ": look at the loop's bounds (for (int i = 0; i < " + fixed + "; ++i) runs " +
+           fixed + " times)";
+  }
   if (matched > 0 && matched != kAssignmentIterations)
     return "it matches " + std::to_string(matched) + " local-global iteration" +
            (matched == 1 ? "" : "s") + " from Ucur" +

@@ -25,7 +25,9 @@
 //   tolerance   metres, as the step check's
 //
 // Returns "" when nothing matches, else the hint, e.g. "it matches 51 local-global iterations
-// from Ucur; the assignment's step runs 50".
+// from Ucur, one more than the assignment's 50: look at the loop's bounds (...)", or for a count
+// further off "it matches 60 local-global iterations from Ucur; the assignment's step runs a
+// fixed 50".
 constexpr int kAssignmentIterations = 50;
 constexpr int kMostIterationsTried = 200;
 std::string step_hint(const CheckScene& scene, double pin_weight, const Eigen::MatrixXd& Uprev,

@@ -4,64 +4,33 @@
 
 #include <algorithm>
 
+#include "log_drag.h"
+#include "panel_stats.h"
+
 namespace wobble {
 
 namespace {
 
-// Rows of label and value, aligned.
-void stat_row(const char* label, const char* format, double value) {
-  ImGui::TextUnformatted(label);
-  ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
-  ImGui::Text(format, value);
-}
-
-// A titled divider (ImGui 1.86 has no SeparatorText).
-void section(const char* title) {
-  ImGui::Spacing();
-  ImGui::Separator();
-  ImGui::TextDisabled("%s", title);
-}
-
 const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
 
-// Whether the motion on screen is the simulation's own speed: it runs in slow motion when the
-// steps take longer than they simulate (or, without real time, when a frame does).
-void real_time_rows(const PanelStats& stats, bool paused) {
-  ImGui::TextUnformatted("real time");
-  ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
-  if (paused) {
-    ImGui::TextUnformatted("paused");
-    return;
-  }
-  const bool slow = stats.real_time_factor < 0.95f;
-  // "\xc3\x97" is U+00D7, the multiplication sign: in the default font's Latin-1 range.
-  ImGui::Text("\xc3\x97%.2f%s", stats.real_time_factor, slow ? " (slow motion)" : "");
-  stat_row("steps", "%.0f /s", stats.steps_per_second);
+// A section of the panel that opens and closes; open at first unless told.
+bool section(const char* title, bool open_at_first = true) {
+  return ImGui::CollapsingHeader(title, open_at_first ? ImGuiTreeNodeFlags_DefaultOpen : 0);
 }
 
-}  // namespace
+// Ends the scrolling sections. A section closed near the bottom of a list scrolled down would
+// leave the list shorter than where it is scrolled to, and ImGui would clamp the scroll, so that
+// every header moved under the mouse: a blank at the end, only as tall as that needs, keeps the
+// scroll where it is. It shrinks as the user scrolls back up.
+void hold_scroll() {
+  const float scroll = ImGui::GetScrollY();
+  const float short_by = scroll + ImGui::GetWindowHeight() - ImGui::GetCursorPosY();
+  if (scroll > 0.0f && short_by > 0.0f) ImGui::Dummy(ImVec2(1.0f, short_by));
+}
 
-PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
-                                 const std::vector<std::string>& scene_names, float ui_scale) {
-  PanelRequests requests;
-  ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
-  // As tall as its contents (a warning or the split view's rows add to it), never taller than
-  // the display, where it scrolls; a fixed width, since its widgets take the window's width.
-  const float width = 330.0f * ui_scale;
-  ImGui::SetNextWindowSizeConstraints(
-      ImVec2(width, 0.0f),
-      ImVec2(width, std::max(ImGui::GetIO().DisplaySize.y - 20.0f * ui_scale, 100.0f * ui_scale)));
-  // Begin returns false when the panel is collapsed to its title bar, which covers next to
-  // nothing: the view is then framed as if there were no panel.
-  requests.place.shown = ImGui::Begin("Wobble", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
-  requests.place.x = position.x;
-  requests.place.y = position.y;
-  requests.place.width = size.x;
-  requests.place.height = size.y;
-  // Widgets take what the labels leave.
-  ImGui::PushItemWidth(-120.0f * ui_scale);
-
+// The file row, the play row and what the simulation says about itself.
+void draw_top_rows(PanelSettings& settings, const PanelStats& stats,
+                   const std::vector<std::string>& scene_names, PanelRequests& requests) {
   if (!scene_names.empty()) {
     const char* current = scene_names[settings.scene].c_str();
     if (ImGui::BeginCombo("scene", current)) {
@@ -134,13 +103,24 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     ImGui::TextWrapped("%s", stats.warning.c_str());
     ImGui::PopStyleColor();
   }
+}
 
-  section("simulation");
-  // Stiffness spans six decades, so its slider is logarithmic.
-  ImGui::SliderFloat("k (N/m)", &settings.k, PanelSettings::min_k, PanelSettings::max_k, "%.1f",
-                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-  ImGui::SliderFloat("dt (s)", &settings.dt, PanelSettings::min_dt, PanelSettings::max_dt, "%.4f",
-                     ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+// The tooltip of every drag over decades.
+void log_drag_tooltip() {
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    ImGui::SetTooltip(
+        "Drag: 1%% a pixel (Shift: 10%%, Alt: finer)\n"
+        "Ctrl+click or double-click: type a value");
+  }
+}
+
+void draw_simulation_section(PanelSettings& settings, const PanelStats& stats,
+                             PanelRequests& requests) {
+  // Stiffness spans six decades and dt four: both move by a factor a pixel (log_drag.h).
+  log_drag("k (N/m)", &settings.k, PanelSettings::min_k, PanelSettings::max_k, "%.1f");
+  log_drag_tooltip();
+  log_drag("dt (s)", &settings.dt, PanelSettings::min_dt, PanelSettings::max_dt, "%.5f");
+  log_drag_tooltip();
   ImGui::SliderInt("iterations", &settings.iterations, PanelSettings::min_iterations,
                    PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
   // A course scene reproduces the course's program, which iterates plainly.
@@ -160,10 +140,12 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("The scene as it opened: its settings, pins, colliders and start");
   }
+}
 
-  section("environment");
-  ImGui::SliderFloat("damping (1/s)", &settings.damping, 0.0f, PanelSettings::max_damping, "%.2f",
-                     ImGuiSliderFlags_AlwaysClamp);
+void draw_environment_section(PanelSettings& settings, const PanelStats& stats) {
+  // Damping from a hundredth to ten per second: by a factor a pixel too.
+  log_drag("damping (1/s)", &settings.damping, 0.0f, PanelSettings::max_damping, "%.3f");
+  log_drag_tooltip();
   if (stats.has_colliders) {
     ImGui::SliderFloat("friction", &settings.friction, 0.0f, PanelSettings::max_friction, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
@@ -183,13 +165,14 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
       ImGui::SetTooltip("Keep the surface from passing through itself, a thickness apart");
     }
     if (settings.self_collision) {
-      ImGui::SliderFloat("thickness (mm)", &settings.self_collision_mm,
-                         PanelSettings::min_self_collision_mm, PanelSettings::max_self_collision_mm,
-                         "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+      log_drag("thickness (mm)", &settings.self_collision_mm, PanelSettings::min_self_collision_mm,
+               PanelSettings::max_self_collision_mm, "%.2f");
+      log_drag_tooltip();
     }
   }
+}
 
-  section("view");
+void draw_view_section(PanelSettings& settings) {
   ImGui::Checkbox("surface", &settings.surface);
   ImGui::SameLine();
   ImGui::Checkbox("wireframe", &settings.wireframe);
@@ -200,70 +183,97 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
   ImGui::Checkbox("points", &settings.points);
   const char* const color_names[] = {"material", "strain", "speed", "contacts"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
-
   ImGui::SliderFloat("UI scale", &settings.ui_scale, PanelSettings::min_ui_scale,
                      PanelSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+}
 
-  section("instruments");
-  ImGui::Checkbox("convergence", &settings.show_convergence);
-  ImGui::SameLine();
-  ImGui::Checkbox("energy", &settings.show_energy);
-
-  section("compare");
+void draw_compare_section(PanelSettings& settings, const PanelStats& stats) {
   if (stats.student_side) {
     // wobble --student: the right side is the student's step, with the seed's settings.
     ImGui::TextWrapped(
         "right: the student's fast_mass_springs_step_sparse, coloured by its "
         "distance from Wobble's (left)");
-  } else {
-    ImGui::Checkbox("split view: right side", &settings.split);
+    return;
   }
-  if (settings.split && !stats.student_side) {
-    ImGui::SliderFloat("k right", &settings.right_k, PanelSettings::min_k, PanelSettings::max_k,
-                       "%.1f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderFloat("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt,
-                       "%.4f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderInt("iterations right", &settings.right_iterations, PanelSettings::min_iterations,
-                     PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
-    ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+  ImGui::Checkbox("split view: right side", &settings.split);
+  if (!settings.split) return;
+  log_drag("k right", &settings.right_k, PanelSettings::min_k, PanelSettings::max_k, "%.1f");
+  log_drag_tooltip();
+  log_drag("dt right", &settings.right_dt, PanelSettings::min_dt, PanelSettings::max_dt, "%.5f");
+  log_drag_tooltip();
+  ImGui::SliderInt("iterations right", &settings.right_iterations, PanelSettings::min_iterations,
+                   PanelSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+}
+
+}  // namespace
+
+PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
+                                 const std::vector<std::string>& scene_names, float ui_scale) {
+  PanelRequests requests;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  ImGui::SetNextWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale), ImGuiCond_FirstUseEver);
+  // A fixed width, since its widgets take the window's width; as tall as its contents, never
+  // taller than the display. Where the display is shorter, the sections scroll in a list of
+  // their own and the stats stay pinned under it.
+  const float width = 330.0f * ui_scale;
+  const float tallest =
+      std::max(ImGui::GetIO().DisplaySize.y - 20.0f * ui_scale, 100.0f * ui_scale);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, tallest));
+  // Begin returns false when the panel is collapsed to its title bar, which covers next to
+  // nothing: the view is then framed as if there were no panel.
+  requests.place.shown =
+      ImGui::Begin("Wobble", nullptr,
+                   ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoScrollbar |
+                       ImGuiWindowFlags_NoScrollWithMouse);
+  const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  requests.place.x = position.x;
+  requests.place.y = position.y;
+  requests.place.width = size.x;
+  requests.place.height = size.y;
+  if (!requests.place.shown) {
+    ImGui::End();
+    return requests;
   }
 
-  section("stats");
-  if (stats.show_timings) {
-    // Frames come when there is something new to draw; each takes the UI this long, steps apart.
-    ImGui::TextUnformatted("fps");
-    ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
-    ImGui::Text("%.1f (a frame %.1f ms)", stats.fps, stats.ui_frame_ms);
-    real_time_rows(stats, settings.paused);
-    stat_row("step", "%.2f ms", stats.step_ms);
-    stat_row("  local", "%.2f ms", stats.local_ms);
-    stat_row("  global", "%.2f ms", stats.global_ms);
-    if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
-    if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
-    if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
-    // With the timings: the count depends on the machine, and headless images must not.
-    stat_row("threads", "%.0f", stats.threads);
-  } else {
-    ImGui::TextDisabled("timings hidden (headless)");
+  // The list is as tall as its contents were last frame, or as what the panel leaves it.
+  const float stats_height =
+      static_cast<float>(panel_stats_lines(stats)) * ImGui::GetTextLineHeightWithSpacing();
+  const float list_room = tallest - ImGui::GetCursorPosY() - style.WindowPadding.y -
+                          2.0f * style.ItemSpacing.y - stats_height - 1.0f;
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  const ImGuiID list_height_id = ImGui::GetID("##sections height");
+  const float list_height =
+      std::max(std::min(storage->GetFloat(list_height_id, list_room), list_room), 40.0f * ui_scale);
+  ImGui::BeginChild("sections", ImVec2(0.0f, list_height));
+  // Widgets take what the labels leave.
+  ImGui::PushItemWidth(-120.0f * ui_scale);
+  draw_top_rows(settings, stats, scene_names, requests);
+  if (section("simulation")) draw_simulation_section(settings, stats, requests);
+  if (section("environment")) draw_environment_section(settings, stats);
+  if (section("view")) draw_view_section(settings);
+  if (section("instruments")) {
+    ImGui::Checkbox("convergence", &settings.show_convergence);
+    ImGui::SameLine();
+    ImGui::Checkbox("energy", &settings.show_energy);
   }
-  stat_row("simulated", "%.2f s", stats.simulated_seconds);
-  stat_row("vertices", "%.0f", stats.vertices);
-  stat_row("springs", "%.0f", stats.springs);
-  stat_row("pins", "%.0f", stats.pins);
-  if (stats.has_colliders) stat_row("contacts", "%.0f", stats.contacts);
-  if (stats.self_collision) {
-    ImGui::TextUnformatted("self contacts");
-    ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
-    if (stats.show_timings) {
-      ImGui::Text("%d (detect %.2f ms, respond %.2f ms)", stats.self_contacts,
-                  stats.self_detection_ms, stats.self_response_ms);
-    } else {
-      ImGui::Text("%d", stats.self_contacts);
-    }
+  if (section("compare")) draw_compare_section(settings, stats);
+  if (stats.show_timings && section("timings", false)) draw_panel_timings(stats);
+  if (!stats.notes.empty() && section("scene notes")) {
+    for (const std::string& note : stats.notes)
+      ImGui::TextWrapped("%s", note.c_str());
   }
-  for (const std::string& note : stats.notes)
-    ImGui::TextWrapped("%s", note.c_str());
   ImGui::PopItemWidth();
+  hold_scroll();
+  const float contents = ImGui::GetCursorPosY();
+  ImGui::EndChild();
+  storage->SetFloat(list_height_id, contents);
+
+  ImGui::Separator();
+  ImGui::BeginChild("stats", ImVec2(0.0f, stats_height), false,
+                    ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  draw_panel_stats(stats, settings.paused);
+  ImGui::EndChild();
   ImGui::End();
   return requests;
 }

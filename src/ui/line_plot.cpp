@@ -37,6 +37,30 @@ struct Range {
 
 }  // namespace
 
+float legend_width(float name_width, float line) {
+  return 1.4f * line + name_width;
+}
+
+PlotLayout plot_layout(ImVec2 origin, ImVec2 size, float line,
+                       const std::vector<float>& name_widths) {
+  PlotLayout layout;
+  // Entries flow left to right over the whole width, a line apart, and wrap.
+  const float left = origin.x + 4.5f * line, right = origin.x + size.x - 0.5f * line;
+  ImVec2 at = origin;
+  for (const float width : name_widths) {
+    const float entry = legend_width(width, line);
+    if (at.x > origin.x && at.x + entry > right) at = ImVec2(origin.x, at.y + line);
+    layout.legend.push_back(at);
+    at.x += entry + line;
+  }
+  const float legend_height = name_widths.empty() ? 0.0f : at.y + line - origin.y;
+  // Under the legend, a line for the y axis's label; under the plot, the x axis's ticks and
+  // label; at the left, the y axis's ticks.
+  layout.area_min = ImVec2(left, origin.y + legend_height + 1.2f * line);
+  layout.area_max = ImVec2(right, origin.y + size.y - 2.2f * line);
+  return layout;
+}
+
 void line_plot(const char* id, const std::vector<PlotSeries>& series, const PlotAxes& axes,
                ImVec2 size) {
   ImGui::PushID(id);
@@ -45,9 +69,21 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
   ImGui::Dummy(size);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const float line = ImGui::GetTextLineHeight();
-  // The plotting area leaves room for the y labels on the left and the x labels below.
-  const ImVec2 top_left(origin.x + 4.5f * line, origin.y + 1.2f * line);
-  const ImVec2 bottom_right(origin.x + size.x - 0.5f * line, origin.y + size.y - 2.2f * line);
+  std::vector<const PlotSeries*> named;
+  std::vector<float> name_widths;
+  for (const PlotSeries& s : series) {
+    if (s.name == nullptr || s.name[0] == '\0') continue;
+    named.push_back(&s);
+    name_widths.push_back(ImGui::CalcTextSize(s.name).x);
+  }
+  const PlotLayout layout = plot_layout(origin, size, line, name_widths);
+  for (std::size_t i = 0; i < named.size(); ++i) {
+    const ImVec2 at = layout.legend[i];
+    draw->AddRectFilled(ImVec2(at.x, at.y + 0.45f * line), ImVec2(at.x + line, at.y + 0.6f * line),
+                        named[i]->color);
+    draw->AddText(ImVec2(at.x + 1.4f * line, at.y), named[i]->color, named[i]->name);
+  }
+  const ImVec2 top_left = layout.area_min, bottom_right = layout.area_max;
   draw->AddRectFilled(top_left, bottom_right, IM_COL32(20, 22, 26, 255));
   draw->AddRect(top_left, bottom_right, IM_COL32(90, 90, 100, 255));
 
@@ -61,7 +97,7 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
     }
   }
   const ImU32 label_color = ImGui::GetColorU32(ImGuiCol_TextDisabled);
-  draw->AddText(ImVec2(top_left.x, origin.y), label_color, axes.y_label);
+  draw->AddText(ImVec2(top_left.x, top_left.y - 1.2f * line), label_color, axes.y_label);
   draw->AddText(
       ImVec2(0.5f * (top_left.x + bottom_right.x) - 2.0f * line, bottom_right.y + 1.1f * line),
       label_color, axes.x_label);
@@ -143,30 +179,6 @@ void line_plot(const char* id, const std::vector<PlotSeries>& series, const Plot
   }
   draw->PopClipRect();
 
-  // The legend, top right, one name a line, on a shaded box so that curves do not hide it.
-  float legend_width = 0.0f;
-  int names = 0;
-  for (const PlotSeries& s : series) {
-    if (s.name == nullptr || s.name[0] == '\0') continue;
-    legend_width = std::max(legend_width, ImGui::CalcTextSize(s.name).x);
-    ++names;
-  }
-  if (names > 0) {
-    draw->AddRectFilled(
-        ImVec2(bottom_right.x - legend_width - 1.6f * line, top_left.y + 0.1f * line),
-        ImVec2(bottom_right.x - 0.1f * line, top_left.y + (names + 0.3f) * line),
-        IM_COL32(20, 22, 26, 210));
-  }
-  float y = top_left.y + 0.2f * line;
-  for (const PlotSeries& s : series) {
-    if (s.name == nullptr || s.name[0] == '\0') continue;
-    const float width = ImGui::CalcTextSize(s.name).x;
-    const ImVec2 at(bottom_right.x - width - 0.4f * line, y);
-    draw->AddRectFilled(ImVec2(at.x - 1.1f * line, y + 0.45f * line),
-                        ImVec2(at.x - 0.3f * line, y + 0.6f * line), s.color);
-    draw->AddText(at, s.color, s.name);
-    y += line;
-  }
   ImGui::PopID();
 }
 

@@ -35,10 +35,14 @@ struct PanelFixture {
     viewer.build_ui(wobble::PanelStats(), 1.0f);
     ImGui::EndFrame();
   }
-  // A point on the panel's widget `label`, found by moving the mouse down the panel's left edge
-  // until ImGui says the widget is hovered; nothing when the panel does not draw it.
+  // A point on the panel's widget `label`, found by moving the mouse down the left edge of the
+  // panel's list of sections until ImGui says the widget is hovered; nothing when the panel
+  // does not draw it.
   std::optional<ImVec2> find(const char* label) {
-    ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+    ImGuiWindow* panel = nullptr;
+    for (ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+      if (std::string(window->Name).rfind("Wobble/sections_", 0) == 0) panel = window;
+    }
     if (panel == nullptr) return std::nullopt;
     const ImGuiID id = panel->GetIDNoKeepAlive(label);
     const ImVec2 top = panel->Pos, size = panel->Size;

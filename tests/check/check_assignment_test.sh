@@ -231,10 +231,38 @@ case "$scenario" in
     expect_failures "fast_mass_springs_precomputation_dense=prefactorization.solve|w CᵀC|on a 2-vertex spring written E = [1 0], vertex 0 pinned"
     ;;
   PlantedExtraIteration)
+    # One iteration too many, as <= for < writes it: the hint points at the loop's bounds.
     submission
-    plant fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration < 51'
+    plant fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration <= 50'
     run_check "$dir/submission"
-    expect_failures "fast_mass_springs_step_sparse=Unext (step 1 of 4) vertex|on a stiff 10-vertex chain|; hint: it matches 51 local-global iterations from Ucur; the assignment's step runs a fixed 50"
+    expect_failures "fast_mass_springs_step_sparse=Unext (step 1 of 4) vertex|on a stiff 10-vertex chain|; hint: it matches 51 local-global iterations from Ucur, one more than the assignment's 50: look at the loop's bounds (for (int i = 0; i < 50; ++i) runs 50 times)"
+    ;;
+  PlantedMissingIteration)
+    # One too few, as a loop that starts at 1 writes it.
+    submission
+    plant fast_mass_springs_step_sparse.cpp 'int iteration = 0;' 'int iteration = 1;'
+    run_check "$dir/submission"
+    expect_failures "fast_mass_springs_step_sparse=Unext (step 1 of 4) vertex|on a stiff 10-vertex chain|; hint: it matches 49 local-global iterations from Ucur, one fewer than the assignment's 50: look at the loop's bounds (for (int i = 0; i < 50; ++i) runs 50 times)"
+    ;;
+  RelativeCache)
+    # A cache named relative to the working folder, and a student's file not compiled before
+    # (so the prelude is linked into its folder): a plain FAIL with its hint, not an ERROR.
+    submission
+    plant fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration < 48'
+    # New contents each run, so that the cache holds no object of it.
+    echo "// $WOBBLE_CHECK_TEST $(date +%s%N)" >>"$dir/submission/fast_mass_springs_step_sparse.cpp"
+    pushd "$dir" >/dev/null
+    # The later --cache wins over run_check's own.
+    run_check --cache "$(realpath --relative-to=. "$cache")" "$dir/submission"
+    popd >/dev/null
+    expect_failures "fast_mass_springs_step_sparse=on a stiff 10-vertex chain|; hint: it matches 48 local-global iterations"
+    ;;
+  PlantedIterationsFarOff)
+    # Further off, the hint says how many and what the assignment runs.
+    submission
+    plant fast_mass_springs_step_sparse.cpp 'iteration < 50' 'iteration < 60'
+    run_check "$dir/submission"
+    expect_failures "fast_mass_springs_step_sparse=on a stiff 10-vertex chain|; hint: it matches 60 local-global iterations from Ucur; the assignment's step runs a fixed 50"
     ;;
   PlantedDenseConversion)
     # Right values and no stored zeros (sparseView drops them): only the scale check sees it.
