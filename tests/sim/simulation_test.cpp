@@ -7,6 +7,7 @@
 #include "sim/input_error.h"
 #include "sim/seed/fast_mass_springs_precomputation_sparse.h"
 #include "sim/seed/fast_mass_springs_step_sparse.h"
+#include "sim/solver/solver_registry.h"
 #include "test_meshes.h"
 
 namespace {
@@ -172,6 +173,21 @@ TEST(Simulation, InitialVelocityIsRestoredByReset) {
   simulation.step();
   simulation.reset();
   EXPECT_LE((simulation.velocities() - velocity).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Simulation, SolverIsChosenByItsRegisteredName) {
+  const auto mesh = wobble::testing::chain_mesh(3);
+  SimulationParams params = test_params();
+  EXPECT_EQ(params.solver, "local-global");  // the default, registered first
+  EXPECT_EQ(std::string(wobble::registered_step_solvers().front().name), "local-global");
+  params.solver = "no such solver";
+  try {
+    Simulation simulation(mesh.network, {}, params);
+    FAIL() << "an unknown solver was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("\"local-global\""), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(Simulation, RefusesBadInputWithTypedErrors) {
