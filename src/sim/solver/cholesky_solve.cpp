@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdint>
 
 #include "cholesky_solver.h"
 
@@ -58,7 +59,8 @@ void CholeskySolver::plan_solve(int n) {
   column_values_single_.assign(single_ ? column_rows_.size() : 0, 0.0f);
   block_values_.assign(single_ ? 0 : block_entries, 0.0);
   block_values_single_.assign(single_ ? block_entries : 0, 0.0f);
-  work_.assign(4 * static_cast<std::size_t>(n), 0.0);
+  // Room to start the lanes on a cache line (see solve).
+  work_.assign(4 * static_cast<std::size_t>(n) + 8, 0.0);
 }
 
 template <typename Value>
@@ -85,7 +87,11 @@ void CholeskySolver::copy_for_solve(Value* columns, Value* blocks) const {
 
 void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
   const Eigen::Index n = static_cast<Eigen::Index>(permutation_.size());
-  Lane4* w = reinterpret_cast<Lane4*>(work_.data());
+  // On a 64-byte boundary, so that no lane straddles two cache lines: where the allocator put
+  // work_ otherwise decided it, and the global step of the 128×128 cloth took 4% longer when
+  // it landed 16 bytes off.
+  const std::uintptr_t address = reinterpret_cast<std::uintptr_t>(work_.data());
+  Lane4* w = reinterpret_cast<Lane4*>(work_.data() + ((64 - address % 64) % 64) / sizeof(double));
   for (Eigen::Index i = 0; i < n; ++i)
     w[permutation_[i]] = Lane4{b(i, 0), b(i, 1), b(i, 2), 0.0};
   if (single_) {
