@@ -115,6 +115,9 @@ class Simulation {
       LocalGlobalSolver::chebyshev_calibration_iterations;
   // The spectral radius the acceleration uses; 0 until estimated.
   double chebyshev_spectral_radius() const { return solver_->spectral_radius(); }
+  // The step solver by its registered name (solver/solver_registry.h), taking over from the
+  // next step; the state is kept. Throws InputError for an unknown name.
+  void set_solver(const std::string& name);
   void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
   // Damping c (1/s), within limits::damping: a numeric re-factorization.
   void set_damping(double damping);

@@ -9,6 +9,7 @@
 #include "forces/gravity.h"
 #include "input_error.h"
 #include "simulation.h"
+#include "solver/solver_registry.h"
 
 namespace wobble {
 
@@ -74,6 +75,13 @@ void Simulation::check_step_work(int iterations, bool analyzed) const {
 
 void Simulation::set_chebyshev(bool on) {
   params_.chebyshev = on;
+  prepare_solver();
+}
+
+void Simulation::set_solver(const std::string& name) {
+  std::unique_ptr<StepSolver> solver = make_step_solver(name, network_.V.rows());
+  params_.solver = name;
+  solver_ = std::move(solver);
   prepare_solver();
 }
 

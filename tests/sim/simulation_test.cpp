@@ -188,6 +188,19 @@ TEST(Simulation, SolverIsChosenByItsRegisteredName) {
     EXPECT_NE(std::string(error.what()).find("\"local-global\""), std::string::npos)
         << error.what();
   }
+
+  // Switching solvers keeps the state, and steps on as a fresh solver would.
+  params = test_params();
+  Simulation switched(mesh.network, {0}, params), fresh(mesh.network, {0}, params);
+  switched.step();
+  fresh.step();
+  switched.set_solver("local-global");
+  EXPECT_EQ(switched.positions(), fresh.positions());
+  switched.step();
+  fresh.step();
+  EXPECT_EQ(switched.positions(), fresh.positions());
+  EXPECT_THROW(switched.set_solver("no such solver"), InputError);
+  EXPECT_EQ(switched.params().solver, "local-global");
 }
 
 TEST(Simulation, RefusesBadInputWithTypedErrors) {
