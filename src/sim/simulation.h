@@ -8,75 +8,23 @@
 #include <string>
 #include <vector>
 
+#include "sim/constraints/pins.h"
 #include "sim/contact/collider_contact.h"
-#include "sim/contact/self_collision.h"
-#include "sim/forces/wind.h"
-#include "sim/instruments/convergence_trace.h"
+#include "sim/contact/self_collision_constraint.h"
+#include "sim/instruments/convergence_recorder.h"
+#include "sim/instruments/iteration_callback.h"
 #include "sim/instruments/step_objective.h"
-#include "sim/solver/chebyshev.h"
-#include "sim/solver/cholesky_solver.h"
+#include "sim/instruments/step_observer.h"
+#include "sim/simulation_params.h"
+#include "sim/solver/local_global_solver.h"
 #include "sim/solver/local_step.h"
+#include "sim/solver/step_solver.h"
+#include "sim/solver/system_matrix.h"
+#include "sim/step_terms.h"
 #include "spring_network.h"
 #include "value_limits.h"
 
 namespace wobble {
-
-// How gravity becomes the external force f_ext on vertex i.
-enum class GravityModel {
-  acceleration,      // f_i = m_i g: physical weight (Wobble's built-in scenes)
-  force_per_vertex,  // f_i = g whatever the mass (what the course's reference program applies)
-};
-
-// Where each step's local-global iterations start. They converge to the same positions either
-// way; the inertial prediction starts closer (about ten plain iterations closer on a falling
-// cloth), as projective dynamics and Wang 2015 start.
-enum class FirstIterate {
-  current_positions,    // pᵗ, as the course's seed functions do (course scenes keep it)
-  inertial_prediction,  // 2pᵗ − pᵗ⁻ᐞᵗ: where inertia alone would carry each vertex
-};
-
-struct SimulationParams {
-  double k = 1000.0;       // spring stiffness (N/m), > 0
-  double dt = 1.0 / 60.0;  // time step (s), > 0
-  int iterations = 50;     // local-global iterations per step, 1 to Simulation::max_iterations
-  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s² (or N, see gravity_model)
-  GravityModel gravity_model = GravityModel::acceleration;
-  FirstIterate first_iterate = FirstIterate::inertial_prediction;
-  // Chebyshev semi-iterative acceleration of the iterations (Wang 2015). Off by default, and for
-  // the course's scenes, whose positions must match the reference.
-  bool chebyshev = false;
-  // A Cholesky factor with more nonzeros than this is read in single precision by the solve
-  // (see CholeskySolver::set_single_precision_above): only the largest scenes, whose factor no
-  // longer fits in cache. Course scenes never get near it.
-  long single_precision_solve_above = CholeskySolver::default_single_precision_above;
-  // Mass-proportional damping c (1/s), folded into the inertia term: with no other force every
-  // velocity decays by (1 + cΔt) each step, as exp(−ct) for small Δt. 0: none (course scenes).
-  double damping = 0.0;
-  // Wind, an explicit force each step (see sim/forces/wind.h). Off unless a scene or the user
-  // turns it on.
-  WindParams wind;
-  // Colliders, friction and the contact offset (see sim/contact/collider_contact.h).
-  ContactParams contact;
-  // The surface against itself (see sim/contact/self_collision.h). Off by default.
-  SelfCollisionParams self_collision;
-};
-
-// Throws InputError unless k, dt, iterations and gravity are within the limits of
-// sim/value_limits.h (the same for every way a value comes in).
-void validate_simulation_params(const SimulationParams& params);
-
-// Wall-clock time of the last step, split between the local step (springs) and the global step
-// (the prefactored solve).
-struct StepTiming {
-  double local_ms = 0.0;
-  double global_ms = 0.0;
-  double forces_ms = 0.0;          // wind
-  double contact_ms = 0.0;         // collider projection and friction
-  double self_detection_ms = 0.0;  // self-collision: the spatial grid and the pairs it finds
-  double self_response_ms = 0.0;   // self-collision: pushing pairs apart, friction, the swept check
-  double instruments_ms = 0.0;     // the convergence trace, while it is recorded
-  double total_ms = 0.0;
-};
 
 // What became of a step. Anything but `ok` means the step was rolled back: the positions are
 // those before it, and it does not count in steps_taken().
@@ -101,6 +49,17 @@ enum class StepStatus {
 // ever changes Q). With every pin target at its rest position, no damping, no wind and no
 // collider this is exactly fast_mass_springs_step_sparse.
 //
+// It composes parts, each in files of its own, and calls them in this order each step:
+//   forces       f_ext = gravity (forces/gravity.h) + each registered force
+//                (forces/force_registry.h: wind, ...)
+//   y            the damped inertia (solver/damped_inertia.h), f_ext, the pins
+//                (constraints/pins.h)
+//   solver       the registered StepSolver named by params.solver (solver/step_solver.h;
+//                local-global by default), with Q from solver/system_matrix.h, reporting to the
+//                observers (instruments/step_observer.h: the convergence trace, the callback)
+//   constraints  each PositionConstraint in turn (step_terms.h): the colliders, then
+//                self-collision
+//
 // Cost of each change:
 //   set_pin_target           right-hand side only: no factorization
 //   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
@@ -111,7 +70,7 @@ enum class StepStatus {
 //   set_friction, colliders
 class Simulation {
  public:
-  static constexpr double pin_weight = 1e10;  // w
+  static constexpr double pin_weight = Pins::weight;  // w
   static constexpr int max_iterations = limits::max_iterations;
 
   // Throws InputError when the network, a pin index or a parameter is invalid.
@@ -152,9 +111,13 @@ class Simulation {
   // run of plain iterations from the current state (which it leaves unchanged).
   void set_chebyshev(bool on);
   // The plain iterations of that run; ρ comes from the second half.
-  static constexpr int chebyshev_calibration_iterations = 100;
+  static constexpr int chebyshev_calibration_iterations =
+      LocalGlobalSolver::chebyshev_calibration_iterations;
   // The spectral radius the acceleration uses; 0 until estimated.
-  double chebyshev_spectral_radius() const { return chebyshev_.spectral_radius(); }
+  double chebyshev_spectral_radius() const { return solver_->spectral_radius(); }
+  // The step solver by its registered name (solver/solver_registry.h), taking over from the
+  // next step; the state is kept. Throws InputError for an unknown name.
+  void set_solver(const std::string& name);
   void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
   // Damping c (1/s), within limits::damping: a numeric re-factorization.
   void set_damping(double damping);
@@ -196,7 +159,7 @@ class Simulation {
   bool is_pinned(int i) const;
   // Pinned vertex indices in increasing order.
   std::vector<int> pinned_vertices() const;
-  int pin_count() const { return pin_count_; }
+  int pin_count() const { return pins_.count(); }
   Eigen::Vector3d pin_target(int i) const;
 
   // Called after every global solve of every step with the iteration number (0-based) and the
@@ -211,7 +174,7 @@ class Simulation {
   void set_convergence_recording(bool on);
   bool records_convergence() const { return record_convergence_; }
   // The trace of the last step taken while recording (empty before one).
-  const ConvergenceTrace& last_convergence() const { return trace_; }
+  const ConvergenceTrace& last_convergence() const { return recorder_.trace(); }
 
   const SpringNetwork& rest() const { return network_; }
   const Eigen::VectorXd& rest_lengths() const { return r_; }
@@ -231,83 +194,64 @@ class Simulation {
   // Time spent in the constructor: rest lengths, Q's pattern, analysis and first factorization.
   double precompute_ms() const { return precompute_ms_; }
   // How often Q was analysed symbolically (once, in the constructor) and factorized numerically.
-  int symbolic_analyses() const { return symbolic_analyses_; }
-  int numeric_factorizations() const { return numeric_factorizations_; }
+  int symbolic_analyses() const { return system_.symbolic_analyses(); }
+  int numeric_factorizations() const { return system_.numeric_factorizations(); }
   // Nonzeros of the Cholesky factor L of Q, its diagonal included.
-  long factor_nonzeros() const { return solver_.factor_nonzeros(); }
+  long factor_nonzeros() const { return system_.cholesky().factor_nonzeros(); }
   // The most iterations a step of this mesh may take (limits::max_step_work): its springs and
   // its factor's nonzeros are one iteration's work. At least 1 and at most max_iterations.
   int max_iterations_for_mesh() const;
-  double factorization_work() const { return solver_.factorization_work(); }
+  double factorization_work() const { return system_.cholesky().factorization_work(); }
   // Whether the solve reads the factor's values rounded to float (a large factor).
-  bool solves_in_single_precision() const { return solver_.solves_in_single_precision(); }
+  bool solves_in_single_precision() const {
+    return system_.cholesky().solves_in_single_precision();
+  }
 
  private:
-  void check_vertex(int i, const char* what) const;
-  void update_external_forces();
+  void rebuild_forces();
   // fext_ = gravity plus this step's forces (wind).
   void apply_forces();
-  void rebuild_forces();
+  // y_ = the damped inertia + f_ext + w CᵀC p_target: fixed for the whole step.
+  void compute_y();
+  // next_ = the first iterate of a step, as params_.first_iterate says.
+  void start_iterate();
+  // The solver's prepare() on the step about to be taken (see StepSolver::prepare).
+  void prepare_solver();
   StepContext step_context() const;
-  // Refill Q's values from k, Δt, masses and pins, and factorize numerically.
+  StepProblem step_problem();
   void refactorize();
+  void update_observers();
   // InputError unless `iterations` fit max_iterations_for_mesh; before the analysis
   // (`analyzed` false) the factor is taken as its diagonal alone, a lower bound.
   void check_step_work(int iterations, bool analyzed) const;
-  void calibrate_chebyshev();
-  // next_ = the accelerated iterate from next_ and the plain solve solved_; see step().
-  void accelerate(int iteration, bool restart_on_growth);
-  // next_ = the first iterate of a step, as params_.first_iterate says.
-  void start_iterate();
-  void compute_y();
   StepStatus check_step() const;
-  // Self-collision on next_, then the colliders again for what it pushed into them.
-  void collide_with_itself();
-  StepObjectiveTerms objective_terms() const;
-  // Appends the objective and gradient norm at next_ to trace_, given rhs_ = k Aᵀd(next_) + y
-  // and springs = Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² at next_. `plain_solve`: next_ is the solution of
-  // Q p = previous_rhs_.
-  void record_iterate(double springs, bool plain_solve);
 
   SpringNetwork network_;
   SimulationParams params_;
   Eigen::MatrixXd initial_velocity_;
-  std::vector<int> initial_pins_;
   Eigen::VectorXd r_;
-
-  std::vector<char> pinned_;
-  int pin_count_ = 0;
-  Eigen::MatrixXd targets_;  // #V by 3; meaningful at pinned rows only
+  Pins pins_;
 
   Eigen::MatrixXd previous_, current_, next_;  // pᵗ⁻ᐞᵗ, pᵗ and the iterate, #V by 3
   Eigen::MatrixXd gravity_fext_;               // #V by 3 gravity alone (N)
-  Eigen::MatrixXd fext_, y_, rhs_;             // #V by 3 buffers kept to avoid allocation
+  Eigen::MatrixXd fext_, y_;                   // #V by 3 buffers kept to avoid allocation
   std::vector<std::unique_ptr<ForceTerm>> forces_;
   ColliderContact contact_;
-  std::unique_ptr<SelfCollision> self_collision_;  // made when self-collision is first turned on
-  Eigen::VectorXd inverse_mass_;  // #V: 1/m, or 0 for a pinned vertex or one on a collider
-  double rest_diagonal_ = 0.0;    // of the rest shape's bounding box (m)
+  SelfCollisionConstraint self_collision_{network_, contact_};
+  std::vector<PositionConstraint*> constraints_{&contact_, &self_collision_};  // in step order
+  double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
   double time_ = 0.0;
 
-  Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored
-  Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_
-  std::vector<Eigen::Index> diagonal_slot_;  // index of Q(i,i) in Q_.valuePtr()
-  CholeskySolver solver_;
-  ChebyshevAcceleration chebyshev_{0};
-  bool chebyshev_calibrated_ = false;
-  double last_update_ = 0.0;   // ‖q̂ − q‖² of the last accelerated iteration
-  int restart_iteration_ = 0;  // where the recurrence last restarted in this step
-  Eigen::MatrixXd solved_;     // the plain iterate q̂, when accelerating
+  SystemMatrix system_;  // Q and its factorization
   std::unique_ptr<LocalStep> local_step_;
+  std::unique_ptr<StepSolver> solver_;
 
-  std::function<void(int, const Eigen::MatrixXd&)> observer_;
+  IterationCallback callback_;
   bool record_convergence_ = false;
-  ConvergenceTrace trace_;
-  Eigen::MatrixXd gradient_, previous_rhs_;  // #V by 3, while recording
+  ConvergenceRecorder recorder_;
+  StepObservers observers_;
   StepTiming timing_;
   double precompute_ms_ = 0.0;
-  int symbolic_analyses_ = 0;
-  int numeric_factorizations_ = 0;
   long steps_taken_ = 0;
   double jump_limit_ = 0.0;
   StepStatus last_status_ = StepStatus::ok;

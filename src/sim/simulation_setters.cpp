@@ -6,8 +6,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/gravity.h"
 #include "input_error.h"
 #include "simulation.h"
+#include "solver/solver_registry.h"
 
 namespace wobble {
 
@@ -48,14 +50,14 @@ int most_iterations(double springs, double factor_nonzeros) {
 
 int Simulation::max_iterations_for_mesh() const {
   return most_iterations(static_cast<double>(network_.E.rows()),
-                         static_cast<double>(solver_.factor_nonzeros()));
+                         static_cast<double>(system_.cholesky().factor_nonzeros()));
 }
 
 void Simulation::check_step_work(int iterations, bool analyzed) const {
   const double springs = static_cast<double>(network_.E.rows());
   // Before the analysis, the factor is known to hold at least its diagonal: a step that is
   // too much work with that alone is refused before the analysis takes its memory.
-  const double factor = analyzed ? static_cast<double>(solver_.factor_nonzeros())
+  const double factor = analyzed ? static_cast<double>(system_.cholesky().factor_nonzeros())
                                  : static_cast<double>(network_.V.rows());
   const int most = most_iterations(springs, factor);
   if (iterations <= most) return;
@@ -73,7 +75,14 @@ void Simulation::check_step_work(int iterations, bool analyzed) const {
 
 void Simulation::set_chebyshev(bool on) {
   params_.chebyshev = on;
-  if (on && !chebyshev_calibrated_) calibrate_chebyshev();
+  prepare_solver();
+}
+
+void Simulation::set_solver(const std::string& name) {
+  std::unique_ptr<StepSolver> solver = make_step_solver(name, network_.V.rows());
+  params_.solver = name;
+  solver_ = std::move(solver);
+  prepare_solver();
 }
 
 void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
@@ -82,33 +91,21 @@ void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model)
   validate_simulation_params(changed);
   params_.gravity = gravity;
   params_.gravity_model = model;
-  update_external_forces();
+  gravity_fext_ = wobble::gravity_forces(network_.m, gravity, model);
+  fext_ = gravity_fext_;
 }
 
 void Simulation::pin(int i) {
-  check_vertex(i, "pin");
-  if (pinned_[i]) return;
-  pinned_[i] = 1;
-  ++pin_count_;
-  targets_.row(i) = current_.row(i);
-  refactorize();
+  pins_.check_vertex(i, "pin");
+  if (pins_.pin(i, current_.row(i))) refactorize();
 }
 
 void Simulation::unpin(int i) {
-  check_vertex(i, "unpin");
-  if (!pinned_[i]) return;
-  pinned_[i] = 0;
-  --pin_count_;
-  refactorize();
+  if (pins_.unpin(i)) refactorize();
 }
 
 void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
-  check_vertex(i, "set_pin_target");
-  if (!pinned_[i]) {
-    throw std::invalid_argument("set_pin_target: vertex " + std::to_string(i) + " is not pinned");
-  }
-  if (!target.allFinite()) throw std::invalid_argument("set_pin_target: target is not finite");
-  targets_.row(i) = target.transpose();
+  pins_.set_target(i, target);
 }
 
 void Simulation::set_damping(double damping) {
@@ -145,44 +142,45 @@ void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
   changed.self_collision = self_collision;
   validate_simulation_params(changed);
   params_.self_collision = self_collision;
-  if (!self_collision_ && self_collision.on) {
-    self_collision_ = std::make_unique<SelfCollision>(network_, self_collision);
-  } else if (self_collision_) {
-    self_collision_->set_thickness(self_collision.thickness);
-    if (!self_collision.on) self_collision_->clear();
-  }
+  self_collision_.set(self_collision);
 }
 
 double Simulation::self_collision_thickness_kept() const {
-  return self_collision_ ? self_collision_->thickness() : params_.self_collision.thickness;
+  return self_collision_.thickness_kept(params_.self_collision.thickness);
 }
 
 int Simulation::self_contact_count() const {
-  return params_.self_collision.on && self_collision_ ? self_collision_->contact_count() : 0;
+  return self_collision_.contact_count();
 }
 
 const std::vector<char>& Simulation::self_contact_vertices() const {
-  static const std::vector<char> none;
-  return self_collision_ ? self_collision_->contact_vertices() : none;
+  return self_collision_.contact_vertices();
 }
 
 bool Simulation::is_pinned(int i) const {
-  check_vertex(i, "is_pinned");
-  return pinned_[i] != 0;
+  pins_.check_vertex(i, "is_pinned");
+  return pins_.flags()[i] != 0;
 }
 
 std::vector<int> Simulation::pinned_vertices() const {
-  std::vector<int> result;
-  result.reserve(pin_count_);
-  for (std::size_t i = 0; i < pinned_.size(); ++i) {
-    if (pinned_[i]) result.push_back(static_cast<int>(i));
-  }
-  return result;
+  return pins_.list();
 }
 
 Eigen::Vector3d Simulation::pin_target(int i) const {
-  check_vertex(i, "pin_target");
-  return targets_.row(i).transpose();
+  pins_.check_vertex(i, "pin_target");
+  return pins_.targets().row(i).transpose();
+}
+
+void Simulation::set_iteration_observer(std::function<void(int, const Eigen::MatrixXd&)> observer) {
+  callback_.set(std::move(observer));
+  update_observers();
+}
+
+void Simulation::set_convergence_recording(bool on) {
+  record_convergence_ = on;
+  // Sized once, so that recording allocates nothing per iteration.
+  if (on) recorder_.reserve(max_iterations);
+  update_observers();
 }
 
 }  // namespace wobble

@@ -7,6 +7,7 @@
 #include "sim/input_error.h"
 #include "sim/seed/fast_mass_springs_precomputation_sparse.h"
 #include "sim/seed/fast_mass_springs_step_sparse.h"
+#include "sim/solver/solver_registry.h"
 #include "test_meshes.h"
 
 namespace {
@@ -172,6 +173,34 @@ TEST(Simulation, InitialVelocityIsRestoredByReset) {
   simulation.step();
   simulation.reset();
   EXPECT_LE((simulation.velocities() - velocity).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(Simulation, SolverIsChosenByItsRegisteredName) {
+  const auto mesh = wobble::testing::chain_mesh(3);
+  SimulationParams params = test_params();
+  EXPECT_EQ(params.solver, "local-global");  // the default, registered first
+  EXPECT_EQ(std::string(wobble::registered_step_solvers().front().name), "local-global");
+  params.solver = "no such solver";
+  try {
+    Simulation simulation(mesh.network, {}, params);
+    FAIL() << "an unknown solver was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("\"local-global\""), std::string::npos)
+        << error.what();
+  }
+
+  // Switching solvers keeps the state, and steps on as a fresh solver would.
+  params = test_params();
+  Simulation switched(mesh.network, {0}, params), fresh(mesh.network, {0}, params);
+  switched.step();
+  fresh.step();
+  switched.set_solver("local-global");
+  EXPECT_EQ(switched.positions(), fresh.positions());
+  switched.step();
+  fresh.step();
+  EXPECT_EQ(switched.positions(), fresh.positions());
+  EXPECT_THROW(switched.set_solver("no such solver"), InputError);
+  EXPECT_EQ(switched.params().solver, "local-global");
 }
 
 TEST(Simulation, RefusesBadInputWithTypedErrors) {

@@ -1,9 +1,23 @@
 #include "sim/contact/collider_contact.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
+#include "sim/instruments/stopwatch.h"
+
 namespace wobble {
+
+// Enough to keep the flat triangles between contact vertices out of a curved collider, small
+// enough not to be seen as a gap (a 40×40 cloth of 1 m: 3.6 mm).
+double resolved_contact_offset(double asked, const Eigen::VectorXd& rest_lengths,
+                               double rest_diagonal) {
+  if (asked >= 0.0) return asked;
+  if (rest_lengths.size() == 0) return 0.005 * rest_diagonal;
+  std::vector<double> lengths(rest_lengths.data(), rest_lengths.data() + rest_lengths.size());
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  return 0.1 * lengths[lengths.size() / 2];
+}
 
 ColliderContact::ColliderContact(std::vector<Collider> colliders, double friction, double offset)
     : colliders_(std::move(colliders)),
@@ -12,15 +26,19 @@ ColliderContact::ColliderContact(std::vector<Collider> colliders, double frictio
       offset_(offset) {}
 
 void ColliderContact::project(const StepContext& step, Eigen::MatrixXd& next) {
+  const Stopwatch stopwatch;
   contact_count_ = 0;
-  if (colliders_.empty()) return;
-  touched_.assign(next.rows(), 0);
-  project_vertices(step, next);
+  if (!colliders_.empty()) {
+    touched_.assign(next.rows(), 0);
+    project_vertices(step, next);
+  }
+  milliseconds_ = stopwatch.milliseconds();
 }
 
 void ColliderContact::project_again(const StepContext& step, Eigen::MatrixXd& next) {
-  if (colliders_.empty()) return;
-  project_vertices(step, next);
+  const Stopwatch stopwatch;
+  if (!colliders_.empty()) project_vertices(step, next);
+  milliseconds_ += stopwatch.milliseconds();
 }
 
 void ColliderContact::project_vertices(const StepContext& step, Eigen::MatrixXd& next) {

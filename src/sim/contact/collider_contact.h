@@ -9,6 +9,11 @@
 
 namespace wobble {
 
+// The contact offset a scene asked for (`asked` ≥ 0), or else (negative) a tenth of the median
+// spring rest length (m).  rest_lengths  #E (m);  rest_diagonal  of the rest bounding box (m)
+double resolved_contact_offset(double asked, const Eigen::VectorXd& rest_lengths,
+                               double rest_diagonal);
+
 // Contact as a scene sets it up.
 struct ContactParams {
   std::vector<Collider> colliders;
@@ -46,7 +51,9 @@ class ColliderContact : public PositionConstraint {
   double friction() const { return friction_; }
   double offset() const { return offset_; }
   // Vertices moved out of a collider by the last projection.
-  int contact_count() const { return contact_count_; }
+  int contact_count() const override { return contact_count_; }
+  // contact_ms: the last project() and any project_again() after it.
+  void report_timing(StepTiming& timing) const override { timing.contact_ms = milliseconds_; }
   // The same as #V flags (empty when there is no collider).
   const std::vector<char>& contact_vertices() const { return touched_; }
   bool empty() const { return colliders_.empty(); }
@@ -60,6 +67,7 @@ class ColliderContact : public PositionConstraint {
   double friction_ = 0.0;
   double offset_ = 0.0;
   int contact_count_ = 0;
+  double milliseconds_ = 0.0;
 };
 
 }  // namespace wobble

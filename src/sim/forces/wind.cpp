@@ -5,7 +5,9 @@
 #include <cmath>
 #include <string>
 
+#include "sim/forces/force_registry.h"
 #include "sim/input_error.h"
+#include "sim/simulation_params.h"
 #include "sim/value_limits.h"
 
 namespace wobble {
@@ -97,6 +99,13 @@ void CourseWind::apply_forces(const StepContext& step, Eigen::MatrixXd& fext) co
     fext(i, 2) = std::sin(phi);
     fext(i, 1) += 1.0 + std::cos(0.3 + phi);
   }
+}
+
+std::unique_ptr<ForceTerm> make_wind_force(const ForceSetup& setup) {
+  const WindParams& wind = setup.params.wind;
+  if (!wind.on) return nullptr;
+  if (wind.model == WindModel::course) return std::make_unique<CourseWind>(setup.rest_diagonal);
+  return std::make_unique<AerodynamicWind>(wind);
 }
 
 }  // namespace wobble

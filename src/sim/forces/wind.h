@@ -2,6 +2,7 @@
 #define WOBBLE_SIM_FORCES_WIND_H
 
 #include <Eigen/Core>
+#include <memory>
 
 #include "sim/step_terms.h"
 
@@ -62,6 +63,12 @@ class CourseWind : public ForceTerm {
  private:
   double rest_diagonal_;
 };
+
+struct ForceSetup;
+
+// The registered factory (sim/forces/registered_forces.cpp): the wind of params.wind, course or
+// aerodynamic, or nullptr when it is off.
+std::unique_ptr<ForceTerm> make_wind_force(const ForceSetup& setup);
 
 }  // namespace wobble
 

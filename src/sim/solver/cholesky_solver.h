@@ -21,7 +21,8 @@ namespace wobble {
 // makes one pass in all.
 //
 // analyze once per sparsity pattern, factorize after every change of values, solve as often as
-// needed: solve allocates nothing.
+// needed: solve allocates nothing. Their sources: cholesky_analysis.cpp, cholesky_factorization.cpp
+// and cholesky_solve.cpp.
 class CholeskySolver {
  public:
   // Ordering, elimination tree, the pattern of L and its supernodes, for the pattern of the
@@ -67,6 +68,11 @@ class CholeskySolver {
   static constexpr long parallel_factorization_above = 200'000;
 
  private:
+  // The parts of analyze() after the pattern of L (cholesky_analysis.cpp): the layout of L for
+  // the solve and its scratch (cholesky_solve.cpp), and where Q's values go in the blocks, the
+  // threads' parts and their scratch (cholesky_factorization.cpp). `parent`: the elimination tree.
+  void plan_solve(int n);
+  void plan_factorization(const Eigen::SparseMatrix<double>& Q, const std::vector<int>& parent);
   template <typename Value>
   void copy_for_solve(Value* columns, Value* blocks) const;
   // Fills parts_ from the elimination tree (parent of each column).
