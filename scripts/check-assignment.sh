@@ -40,7 +40,7 @@
 #   --build-step-server DIR
 #                        build the step server of DIR's fast_mass_springs_step_sparse.cpp (the
 #                        reference for every other function) and print its path; it serves
-#                        steps to the viewer (src/app/student_step.h, src/check/step_protocol.h)
+#                        steps to the viewer (src/app/student/student_step.h, src/check/step_protocol.h)
 #   --output FILE        with --build-step-server: copy the server to FILE and print FILE
 #
 # Every compiler and checker runs in a process group of its own, under a launcher

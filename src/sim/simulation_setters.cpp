@@ -1,4 +1,4 @@
-// The Simulation's setters: each changes what it must and no more (see the README's table of
+// The Simulation's setters: each changes what it must and no more (see docs/method.md's table of
 // costs): k and dt re-factorize numerically, pins re-factorize, targets and iterations do not.
 #include <algorithm>
 #include <cmath>

@@ -19,7 +19,7 @@ struct ValueRange {
 // line (--k, --dt, --iterations), a Wobble scene file, a course scene file, and the panel
 // (Simulation's setters check the same ranges). Each keeps the numbers of a step finite and the
 // pins in charge, and each maximum runs on the 2-core development machine in a few seconds
-// (README, "Limits").
+// (docs/scenes.md, "Limits").
 namespace limits {
 
 // k: far below the pin weight w = 1e10, so that a pin still holds against its springs (a pin

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/command_line.h"
-#include "app/scene_catalog.h"
+#include "app/cli/command_line.h"
+#include "app/cli/scene_catalog.h"
 #include "parse_words.h"
 #include "run_wobble.h"
 #include "sim/input_error.h"

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "app/scene_catalog.h"
+#include "app/cli/scene_catalog.h"
 #include "io/load_scene.h"
 #include "io/png_image.h"
 #include "run_wobble.h"

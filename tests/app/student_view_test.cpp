@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "app/viewer.h"
+#include "app/viewer/viewer.h"
 #include "io/load_scene.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "app/viewer.h"
+#include "app/viewer/viewer.h"
 #include "headless_imgui.h"
 #include "io/load_scene.h"
 

@@ -3,8 +3,8 @@
 
 #include <Eigen/Core>
 
-#include "app/picking.h"
-#include "app/viewer.h"
+#include "app/interaction/picking.h"
+#include "app/viewer/viewer.h"
 #include "render/camera.h"
 
 namespace wobble::testing {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <thread>
 
-#include "app/viewer.h"
+#include "app/viewer/viewer.h"
 #include "viewer_screen.h"
 
 namespace {

@@ -7,7 +7,7 @@
 
 #include "median.h"
 
-#include "app/quantity_colors.h"
+#include "app/viewer/quantity_colors.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
 

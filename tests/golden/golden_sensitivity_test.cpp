@@ -5,9 +5,9 @@
 
 #include <sstream>
 
-#include "app/command_line.h"
-#include "app/render_offscreen.h"
-#include "app/viewer.h"
+#include "app/cli/command_line.h"
+#include "app/headless/render_offscreen.h"
+#include "app/viewer/viewer.h"
 #include "golden_cases.h"
 #include "image_compare.h"
 

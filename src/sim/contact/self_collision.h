@@ -29,7 +29,7 @@ void validate_self_collision(const SelfCollisionParams& params);
 double largest_self_collision_thickness(const SpringNetwork& network);
 
 // Keeps a surface (the network's render triangles F) from passing through itself, after the
-// step's iterations, without touching Q. docs: README.md, "Self-collision".
+// step's iterations, without touching Q. docs: docs/method.md, "Contact, damping and wind".
 //
 // Each step: the pairs of features the motion can bring within the thickness are found
 // (SelfContactDetection: a broad phase on the worker pool, bounded per feature), pushed apart

@@ -26,7 +26,7 @@ class LocalStep {
              double* spring_energy = nullptr);
 
   // Below this many springs apply() runs on the calling thread alone: waking a helper costs
-  // more than it saves (measured: see the README's Performance section).
+  // more than it saves (measured: see docs/performance.md, "Threads on a busy machine").
   static constexpr long min_springs_for_threads = 2048;
   static constexpr int pieces_per_thread = 4;
   // How often each of its two loops was shared with the pool's helpers or kept on the caller.

@@ -1,0 +1,80 @@
+#ifndef WOBBLE_APP_CLI_COMMAND_LINE_H
+#define WOBBLE_APP_CLI_COMMAND_LINE_H
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli/compare_settings.h"
+#include "app/interaction/drag_script.h"
+#include "app/viewer/quantity_colors.h"
+#include "sim/simulation.h"
+
+namespace wobble {
+
+// What the user asked for on the command line, already checked for range and sanity.
+struct CommandLine {
+  std::string scene = "cloth";  // a built-in scene's name or a scene or mesh file
+  bool headless = false;
+  std::optional<long> frames;  // steps to run; headless runs default to default_headless_frames
+  std::string export_obj;      // empty: no export
+  std::string export_obj_sequence;  // folder for one OBJ per frame; empty: none
+  std::string convergence_csv;      // every iterate's objective and gradient; empty: none
+  std::string energy_csv;           // every frame's kinetic and potential energy; empty: none
+  std::optional<CompareSettings> compare;  // --compare: the split view's right side
+  std::string student;  // --student DIR: a student's six functions beside Wobble's; empty: none
+  bool fill = false;    // fill a closed OBJ surface with tetrahedra
+  std::optional<double> k;
+  std::optional<double> dt;
+  std::optional<int> iterations;
+  bool stats = false;
+  bool chebyshev = false;           // Chebyshev acceleration of the iterations
+  std::optional<double> damping;    // 1/s, within limits::damping
+  std::optional<double> friction;   // the material's μ against every collider, limits::friction
+  bool wind = false;                // turn the scene's wind on (or the default breeze)
+  std::vector<ScriptedDrag> drags;  // --drag, in the order given
+  // --self-collision: turn self-collision on; --self-collision-thickness (m, within
+  // limits::self_collision_thickness) gives its thickness and implies it.
+  bool self_collision = false;
+  std::optional<double> self_collision_thickness;
+  // --threads: threads the solver may use, 1 to max_setting_threads (sim/solver/worker_pool.h);
+  // unset: OMP_NUM_THREADS, else the processors (at most 4).
+  std::optional<int> threads;
+  // Images (both modes) and what they show.
+  int width = 1280, height = 720;  // window or offscreen image size, pixels
+  std::string screenshot;          // PNG of the frame after the last step; empty: none
+  std::string record;              // folder for one PNG per frame; empty: none
+  bool ui = false;                 // headless: draw the ImGui panel too
+  bool plots = false;              // open the convergence and energy plots
+  bool wireframe = false, springs = false, points = false;
+  std::optional<double> camera_yaw, camera_pitch;    // degrees
+  ColorQuantity color_by = ColorQuantity::material;  // else coloured, with a legend
+
+  bool writes_images() const { return !screenshot.empty() || !record.empty(); }
+
+  static constexpr long default_headless_frames = 120;
+  static constexpr long max_frames = 10'000'000;
+  // Window and image size: each side up to 4096 and at most 4096×2160 pixels in all (DCI 4K),
+  // which render and save in about 1.2 s and 480 MB headless (docs/scenes.md, "Limits").
+  static constexpr long max_image_side = 4096;
+  static constexpr long max_image_pixels = 4096L * 2160L;
+  static constexpr double max_camera_pitch = 89.0;
+};
+
+// Parse argv. Returns nothing when the request was fully answered here (--help, --version,
+// --list-scenes), after writing the answer to `out`. Throws InputError with a one-line message
+// for an unknown option, a malformed value, or a value out of range.
+std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
+
+// Puts the command line's --damping, --friction, --wind and --self-collision into a scene's
+// parameters. --wind turns on the wind the scene has (the course wind for a course scene); a scene
+// whose aerodynamic wind has no velocity gets WindParams::default_breeze(). --self-collision
+// turns self-collision on with the scene's thickness (default 0.01 m) unless
+// --self-collision-thickness gives one. Throws InputError when either self-collision option meets
+// a course scene (params.gravity_model force_per_vertex): those keep the reference's behaviour.
+void apply_scene_overrides(const CommandLine& command, SimulationParams& params);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,115 @@
+#include "app/cli/compare_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include "app/cli/parse_number.h"
+#include "sim/input_error.h"
+#include "sim/value_limits.h"
+
+namespace wobble {
+
+namespace {
+
+std::vector<std::string> split_settings(const std::string& text) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char c : text + ",") {
+    if (c == ',' || c == ' ' || c == '\t') {
+      if (!part.empty()) parts.push_back(part);
+      part.clear();
+    } else {
+      part.push_back(c);
+    }
+  }
+  return parts;
+}
+
+double value_in(const std::string& name, const std::string& text, const ValueRange& range) {
+  const std::optional<double> value = parse_number<double>(text);
+  if (!value || !range.contains(*value)) {
+    throw InputError("--compare: " + name + ": expected " + expected_in(range) + ", got '" + text +
+                     "'");
+  }
+  return *value;
+}
+
+}  // namespace
+
+SimulationParams CompareSettings::applied_to(SimulationParams params) const {
+  if (iterations) params.iterations = *iterations;
+  if (chebyshev) params.chebyshev = *chebyshev;
+  if (dt) params.dt = *dt;
+  if (k) params.k = *k;
+  return params;
+}
+
+CompareSettings parse_compare_settings(const std::string& text) {
+  CompareSettings settings;
+  const std::vector<std::string> parts = split_settings(text);
+  if (parts.empty()) {
+    throw InputError(
+        "--compare: expected settings of the right side such as 'iterations=5', "
+        "got '" +
+        text + "'");
+  }
+  std::vector<std::string> named;
+  for (const std::string& part : parts) {
+    const std::size_t equals = part.find('=');
+    if (equals == std::string::npos) {
+      throw InputError("--compare: expected name=value, got '" + part + "'");
+    }
+    const std::string name = part.substr(0, equals), value = part.substr(equals + 1);
+    // As in a scene file, a setting given twice is refused: which one was meant?
+    if (std::find(named.begin(), named.end(), name) != named.end()) {
+      throw InputError("--compare: " + name + " is given twice in '" + text +
+                       "', expected each setting once");
+    }
+    named.push_back(name);
+    if (name == "iterations") {
+      const std::optional<long> count = parse_number<long>(value);
+      if (!count || *count < 1 || *count > Simulation::max_iterations) {
+        throw InputError("--compare: iterations: expected a whole number from 1 to " +
+                         std::to_string(Simulation::max_iterations) + ", got '" + value + "'");
+      }
+      settings.iterations = static_cast<int>(*count);
+    } else if (name == "chebyshev") {
+      if (value == "on" || value == "true" || value == "1") {
+        settings.chebyshev = true;
+      } else if (value == "off" || value == "false" || value == "0") {
+        settings.chebyshev = false;
+      } else {
+        throw InputError("--compare: chebyshev: expected on or off, got '" + value + "'");
+      }
+    } else if (name == "dt") {
+      settings.dt = value_in(name, value, limits::time_step);
+    } else if (name == "k") {
+      settings.k = value_in(name, value, limits::stiffness);
+    } else {
+      throw InputError("--compare: unknown setting '" + name +
+                       "' (expected iterations, chebyshev, dt or k)");
+    }
+  }
+  return settings;
+}
+
+std::string describe_side(const SimulationParams& params) {
+  char text[160];
+  std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
+                params.iterations == 1 ? "" : "s", params.chebyshev ? "Chebyshev" : "plain",
+                1000.0 * params.dt, params.k);
+  return text;
+}
+
+CompareSettings default_compare_settings(const SimulationParams& left) {
+  CompareSettings settings;
+  settings.iterations = left.iterations >= 10
+                            ? std::max(1, left.iterations / 10)
+                            : std::min(Simulation::max_iterations, 10 * left.iterations);
+  return settings;
+}
+
+}  // namespace wobble

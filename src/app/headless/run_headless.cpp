@@ -1,0 +1,124 @@
+#include "app/headless/run_headless.h"
+
+#include <memory>
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <stdexcept>
+#include <vector>
+
+#include "app/interaction/drag_script.h"
+#include "app/headless/image_outputs.h"
+#include "app/headless/instrument_csv.h"
+#include "io/atomic_file.h"
+#include "io/write_obj.h"
+#include "app/headless/obj_sequence.h"
+#include "app/headless/render_offscreen.h"
+#include "app/headless/run_statistics.h"
+#include "app/cli/scene_catalog.h"
+#include "sim/shapes/builtin_scenes.h"
+#include "sim/simulation.h"
+#include "app/viewer/viewer.h"
+
+namespace wobble {
+
+namespace {
+
+// --headless with --screenshot or --record: the viewer's frame loop in an EGL context.
+int render_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
+  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
+  ImageOutputs outputs(command.screenshot, command.record, frames, progress);
+  if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
+  const ObjSequence obj_sequence(command.export_obj_sequence);
+  Viewer viewer = open_viewer(command);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames,
+                            viewer.simulation().params().iterations);
+  viewer.set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.simulation());
+  print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
+
+  OffscreenOptions options;
+  options.width = command.width;
+  options.height = command.height;
+  options.frames = frames;
+  options.ui = command.ui;
+  options.obj_sequence = &obj_sequence;
+  options.instruments = &instruments;
+  OffscreenReport report;
+  try {
+    render_offscreen(viewer, options, &outputs, &report);
+  } catch (...) {
+    instruments.write();  // the frames before a failure are kept, as the images are
+    throw;
+  }
+  instruments.write();
+
+  const Simulation& simulation = viewer.simulation();
+  if (!command.export_obj.empty()) {
+    write_obj(command.export_obj, simulation.positions(), viewer.scene().network.F,
+              viewer.scene().network.E);
+  }
+  if (command.stats) {
+    nlohmann::ordered_json stats = run_statistics(simulation, viewer.scene(), frames, report.times);
+    stats["render_ms_median"] = median(report.render_ms);
+    stats["width"] = command.width;
+    stats["height"] = command.height;
+    stats["context"] = report.context;
+    out << stats.dump() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_headless(const CommandLine& command, std::ostream& out, std::ostream& progress) {
+  if (command.writes_images()) return render_headless(command, out, progress);
+  if (!command.export_obj.empty()) check_output_path("--export-obj", command.export_obj);
+  const ObjSequence obj_sequence(command.export_obj_sequence);
+
+  Scene scene = open_scene(command);
+  SimulationParams params = scene.params;
+  if (command.k) params.k = *command.k;
+  if (command.dt) params.dt = *command.dt;
+  if (command.iterations) params.iterations = *command.iterations;
+  if (command.chebyshev) params.chebyshev = true;
+  const auto simulation_pointer = naming_scene(command.scene, [&] {
+    return std::make_unique<Simulation>(scene.network, scene.pins, params, scene.initial_velocity);
+  });
+  Simulation& simulation = *simulation_pointer;
+  DragScript drags(command.drags, scene.network.V.rows());
+  const long frames = command.frames.value_or(CommandLine::default_headless_frames);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames, params.iterations);
+  simulation.set_convergence_recording(instruments.wants_convergence());
+  instruments.start(simulation);
+  print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
+
+  StepTimes times;
+  if (command.stats) times.reserve(frames);
+  for (long frame = 0; frame < frames; ++frame) {
+    drags.before_step(simulation, frame + 1);
+    const StepStatus status = simulation.step();
+    if (status != StepStatus::ok) {
+      // The positions are still those of the last good frame, but the run did not finish:
+      // report it, and write no final export. The instruments' rows so far are kept: they show
+      // how the run failed.
+      instruments.write();
+      throw std::runtime_error("frame " + std::to_string(frame + 1) + ": " +
+                               Simulation::describe(status));
+    }
+    obj_sequence.write(frame + 1, simulation.positions(), scene.network);
+    instruments.record(frame + 1, simulation);
+    if (command.stats) times.add(simulation.last_step_timing());
+  }
+
+  instruments.write();
+  if (!command.export_obj.empty()) {
+    write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
+  }
+  if (command.stats) {
+    out << run_statistics(simulation, scene, frames, times).dump() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace wobble

@@ -1,0 +1,67 @@
+#include "app/headless/run_statistics.h"
+
+#include <algorithm>
+
+#include "sim/solver/worker_pool.h"
+
+namespace wobble {
+
+void StepTimes::reserve(long steps) {
+  for (std::vector<double>* times :
+       {&step_ms, &local_ms, &global_ms, &self_detection_ms, &self_response_ms})
+    times->reserve(steps);
+}
+
+void StepTimes::add(const StepTiming& timing) {
+  step_ms.push_back(timing.total_ms);
+  local_ms.push_back(timing.local_ms);
+  global_ms.push_back(timing.global_ms);
+  self_detection_ms.push_back(timing.self_detection_ms);
+  self_response_ms.push_back(timing.self_response_ms);
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const std::size_t middle = values.size() / 2;
+  std::nth_element(values.begin(), values.begin() + middle, values.end());
+  if (values.size() % 2 == 1) return values[middle];
+  const double upper = values[middle];
+  return 0.5 * (upper + *std::max_element(values.begin(), values.begin() + middle));
+}
+
+nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene& scene, long frames,
+                                      const StepTimes& times) {
+  const SimulationParams& params = simulation.params();
+  const std::vector<double>& step_ms = times.step_ms;
+  return {
+      {"scene", scene.name},
+      {"vertices", scene.network.V.rows()},
+      {"springs", scene.network.E.rows()},
+      {"pinned", simulation.pin_count()},
+      {"iterations", params.iterations},
+      {"chebyshev", params.chebyshev},
+      {"chebyshev_rho", simulation.chebyshev_spectral_radius()},
+      {"frames", frames},
+      {"k", params.k},
+      {"dt", params.dt},
+      {"precompute_ms", simulation.precompute_ms()},
+      {"factor_nonzeros", simulation.factor_nonzeros()},
+      {"factorization_work", simulation.factorization_work()},
+      {"single_precision_solve", simulation.solves_in_single_precision()},
+      {"step_ms_median", median(step_ms)},
+      {"step_ms_min", step_ms.empty() ? 0.0 : *std::min_element(step_ms.begin(), step_ms.end())},
+      {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
+      {"local_ms_median", median(times.local_ms)},
+      {"global_ms_median", median(times.global_ms)},
+      {"self_collision", params.self_collision.on},
+      {"self_collision_thickness", params.self_collision.thickness},
+      {"self_collision_thickness_kept", simulation.self_collision_thickness_kept()},
+      {"self_contacts", simulation.self_contact_count()},
+      {"self_detection_ms_median", median(times.self_detection_ms)},
+      {"self_response_ms_median", median(times.self_response_ms)},
+      {"threads", shared_thread_setting().threads},
+      {"threads_from", shared_thread_setting().source},
+  };
+}
+
+}  // namespace wobble

@@ -1,0 +1,28 @@
+#include "app/interaction/view_framing.h"
+
+#include <algorithm>
+
+namespace wobble {
+
+ViewportRegion region_beside_panel(float view_width, float panel_left, float panel_right) {
+  ViewportRegion region;
+  if (view_width <= 0.0f || panel_right <= panel_left) return region;
+  const float left_free = std::clamp(panel_left, 0.0f, view_width);
+  const float right_free = std::clamp(view_width - panel_right, 0.0f, view_width);
+  if (std::max(left_free, right_free) < 0.25f * view_width) return region;
+  if (right_free >= left_free) {
+    region.left = 1.0f - right_free / view_width;
+  } else {
+    region.right = left_free / view_width;
+  }
+  return region;
+}
+
+void add_room_to_move(Eigen::Vector3f& lower, Eigen::Vector3f& upper, float ground_height) {
+  const float room = 0.25f * (upper - lower).maxCoeff();
+  lower -= Eigen::Vector3f(room, 0.0f, room);
+  upper += Eigen::Vector3f(room, 0.0f, room);
+  lower.y() = std::min(lower.y(), ground_height);
+}
+
+}  // namespace wobble

@@ -1,0 +1,26 @@
+#ifndef WOBBLE_APP_INTERACTION_VIEW_FRAMING_H
+#define WOBBLE_APP_INTERACTION_VIEW_FRAMING_H
+
+#include <Eigen/Core>
+
+#include "render/camera.h"
+
+namespace wobble {
+
+// The part of a view the panel leaves free, where F frames the shape: the full height of the
+// wider side beside the panel, as fractions of the view. The whole view when the panel is
+// hidden (panel_right <= panel_left) or leaves neither side a quarter of the view's width,
+// since framing behind the panel then beats framing into a sliver.
+//   view_width               the view's width, in window units
+//   panel_left, panel_right  the panel's left and right edges, in the same units from the
+//                            view's left edge
+ViewportRegion region_beside_panel(float view_width, float panel_left, float panel_right);
+
+// Grow the box [lower, upper] (m, y up) to the room a shape moves in: down to the ground at
+// `ground_height` (m), where hanging cloth falls, and a quarter of the box's largest side to
+// either side in x and z, where it swings.
+void add_room_to_move(Eigen::Vector3f& lower, Eigen::Vector3f& upper, float ground_height);
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,266 @@
+#include "app/viewer/run_window.h"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+#include "app/headless/image_outputs.h"
+#include "app/headless/instrument_csv.h"
+#include "app/viewer/moving_median.h"
+#include "app/headless/obj_sequence.h"
+#include "platform/glfw_window.h"
+#include "app/viewer/real_time_meter.h"
+#include "render/offscreen_target.h"
+#include "app/headless/run_statistics.h"
+#include "app/cli/scene_catalog.h"
+#include "app/viewer/viewer.h"
+#include "app/viewer/window_recorder.h"
+#include "app/viewer/window_saves.h"
+
+namespace wobble {
+
+namespace {
+
+// ImGui with its GLFW and OpenGL 3 backends, scaled for high-DPI screens.
+class WindowUi {
+ public:
+  WindowUi(GlfwWindow& window, float scale) {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini left in whatever folder wobble was started from
+    io.FontGlobalScale = scale;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+    ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);  // chains to the window's callbacks
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+  }
+  ~WindowUi() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  WindowUi(const WindowUi&) = delete;
+  WindowUi& operator=(const WindowUi&) = delete;
+};
+
+// F12: what the window shows, panel included, as the next free wobble-SCENE-NNNN.png.
+void save_screenshot(Viewer& viewer, int width, int height) {
+  RgbaImage shot;
+  shot.width = width;
+  shot.height = height;
+  glReadBuffer(GL_BACK);
+  read_framebuffer_rgba(width, height, shot.pixels);
+  const std::string path = unused_file_name(".", "wobble-" + viewer.scene().name, ".png");
+  try {
+    write_png(path, shot);
+    viewer.saved("saved " + path);
+  } catch (const std::exception& error) {
+    viewer.saved(std::string("screenshot failed: ") + error.what());
+  }
+}
+
+// The panel's record toggle (F9): each new state drawn while it is on, into a folder of its own.
+// `recorded_step` is the step count of the last frame written.
+void record_from_window(Viewer& viewer, WindowRecorder& recorder, long& recorded_step, int width,
+                        int height) {
+  if (viewer.recording() && !recorder.active()) {
+    try {
+      recorder.start(viewer.scene().name);
+    } catch (const std::exception& error) {
+      viewer.saved(std::string("recording failed: ") + error.what());
+      viewer.stop_recording();
+    }
+    recorded_step = -1;
+  }
+  if (!viewer.recording() && recorder.active()) viewer.saved(recorder.stop());
+  const long steps = viewer.shown_steps();
+  if (recorder.active() && steps != recorded_step && width > 0 && height > 0) {
+    RgbaImage image;
+    image.width = width;
+    image.height = height;
+    glReadBuffer(GL_BACK);
+    read_framebuffer_rgba(width, height, image.pixels);
+    try {
+      recorder.write(image);
+    } catch (const std::exception& error) {
+      viewer.saved(recorder.stop());
+      viewer.saved(std::string("recording stopped: ") + error.what());
+      viewer.stop_recording();
+    }
+    recorded_step = steps;
+  }
+  viewer.set_recording_status(recorder.status());
+}
+
+}  // namespace
+
+int run_window(const CommandLine& command, std::ostream& out, std::ostream& progress) {
+  // Everything that can be refused is checked before a window appears.
+  ImageOutputs outputs(command.screenshot, command.record, command.frames, progress);
+  const ObjSequence obj_sequence(command.export_obj_sequence);
+  Viewer viewer = open_viewer(command);
+  InstrumentCsv instruments(command.convergence_csv, command.energy_csv, command.frames.value_or(0),
+                            viewer.simulation().params().iterations);
+  viewer.set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.simulation());
+  // Each step's rows, files and time, on the thread that took it, numbered by the step count.
+  StepTimes step_times;
+  viewer.set_step_observer([&](const Simulation& simulation) {
+    const long step = simulation.steps_taken();
+    obj_sequence.write(step, simulation.positions(), viewer.scene().network);
+    instruments.record(step, simulation);
+    if (command.stats) step_times.add(simulation.last_step_timing());
+  });
+  if (command.frames) viewer.set_step_limit(*command.frames);
+
+  std::string title = "Wobble: " + viewer.scene().name;
+  GlfwWindow window(command.width, command.height, title);
+  const float ui_scale = window.content_scale();
+  WindowUi ui(window, ui_scale);
+  print_notes(viewer.scene(), progress);
+  viewer.attach_renderer();
+  // The simulation steps beside the UI from here on; a finished batch wakes a waiting UI.
+  viewer.step_on_thread(GlfwWindow::wake);
+
+  RgbaImage image;
+  long recorded_steps = 0;
+  WindowRecorder recorder(".", progress);
+  long window_recorded_step = -1;
+  RealTimeMeter real_time;
+  MovingMedian frame_ms;            // the panel's fps: from one frame to the next
+  MovingMedian ui_work_ms;          // the panel's UI frame time: poll to swap
+  std::vector<double> ui_frame_ms;  // --stats: each frame's own time while the simulation plays
+  const auto start = std::chrono::steady_clock::now();
+  const auto seconds_since_start = [&start] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  // The UI draws at most this often where the display does not pace the swaps (Xvfb, a
+  // compositor without vsync): more would only take cores from the steps.
+  constexpr double frame_seconds = 1.0 / 60.0;
+  // With nothing new to draw (paused and untouched, or a batch of steps still running) the
+  // window waits for input or a finished batch instead of redrawing the same picture (88% of a
+  // core under Xvfb before). ImGui settles a click or a hover over a few frames, so it only
+  // waits after a few frames without input, and then at most half a second, which also keeps a
+  // resize or an uncovered window redrawn.
+  constexpr int settle_frames = 3;
+  constexpr double idle_wait_seconds = 0.5;
+  int quiet_frames = 0;
+  double last_frame = -1.0;
+  try {
+    while (!window.should_close() && !viewer.quit_requested()) {
+      // 1. poll
+      const bool nothing_new =
+          quiet_frames >= settle_frames && (viewer.stepping() || !viewer.animating());
+      const double frame_left = last_frame + frame_seconds - seconds_since_start();
+      const std::vector<InputEvent> events =
+          nothing_new
+              ? window.poll_events(idle_wait_seconds)
+              : (frame_left > 0.0 ? window.wait_for_input(frame_left) : window.poll_events());
+      quiet_frames = events.empty() ? quiet_frames + 1 : 0;
+      const double now = seconds_since_start();
+      if (last_frame >= 0.0) frame_ms.add(static_cast<float>(1e3 * (now - last_frame)));
+      last_frame = now;
+      // Files dropped on the window open as the picker's scenes do; the last one stays.
+      for (const std::string& path : window.take_dropped_paths()) {
+        viewer.open_file(path);
+        quiet_frames = 0;
+      }
+      int window_width = 0, window_height = 0, width = 0, height = 0;
+      window.window_size(window_width, window_height);
+      window.framebuffer_size(width, height);
+      const Eigen::Vector2f window_size(static_cast<float>(window_width),
+                                        static_cast<float>(window_height));
+      // 2. new frame
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      const ImGuiIO& io = ImGui::GetIO();
+      viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window_size);
+      // 3. UI
+      PanelStats timings;
+      timings.fps = frame_ms.median() > 0.0f ? 1e3f / frame_ms.median() : 0.0f;
+      timings.ui_frame_ms = ui_work_ms.median();
+      timings.real_time_factor = static_cast<float>(real_time.real_time_factor());
+      timings.steps_per_second = static_cast<float>(real_time.steps_per_second());
+      viewer.build_ui(timings, ui_scale);
+      // 4. hand the changes to the simulation and take the latest state (between its batches)
+      const bool new_state = viewer.exchange(now, frame_seconds);
+      const PanelStats shown = viewer.stats();
+      if (new_state) real_time.record(now, shown.simulated_seconds, shown.steps);
+      if (command.frames && !viewer.step_warning().empty()) {
+        // A scripted run stops where a step failed, as headless does.
+        throw std::runtime_error("step " + std::to_string(shown.steps + 1) + ": " +
+                                 viewer.step_warning());
+      }
+      viewer.build_legend(ui_scale);
+      // The title names the scene on show, also after the picker changed it.
+      if ("Wobble: " + viewer.scene().name != title) {
+        title = "Wobble: " + viewer.scene().name;
+        window.set_title(title);
+      }
+      // 5. render
+      ImGui::Render();
+      if (width > 0 && height > 0) {  // a minimized window has no pixels
+        glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        viewer.render(width, height, window_size, window_width > 0 ? width / window_size.x() : 1);
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      }
+      if (viewer.take_screenshot_request() && width > 0 && height > 0) {
+        save_screenshot(viewer, width, height);
+      }
+      record_from_window(viewer, recorder, window_recorded_step, width, height);
+      // --record: each step's state once, numbered by the step; --frames ends once step N is
+      // drawn, and --screenshot is that picture.
+      const bool last = command.frames && shown.steps >= *command.frames;
+      const bool new_step = shown.steps != recorded_steps;
+      const bool keep =
+          (new_step && outputs.wants(last)) || (!command.frames && !command.screenshot.empty());
+      if (keep && width > 0 && height > 0) {
+        glReadBuffer(GL_BACK);
+        image.width = width;
+        image.height = height;
+        read_framebuffer_rgba(width, height, image.pixels);
+        if (new_step && outputs.wants(last)) outputs.write(shown.steps, last, image);
+      }
+      recorded_steps = shown.steps;
+      // 6. swap
+      window.swap_buffers();
+      // The UI's own time for a frame, from input to a picture, while the simulation plays:
+      // what a drag or a click waits for, and never a step.
+      ui_work_ms.add(static_cast<float>(1e3 * (seconds_since_start() - now)));
+      if (command.stats && !viewer.paused()) {
+        ui_frame_ms.push_back(1e3 * (seconds_since_start() - now));
+      }
+      if (last) break;
+    }
+    viewer.finish_steps();
+  } catch (...) {
+    // The rows and files of the steps so far are kept, as headless keeps them.
+    viewer.stop_stepping();
+    instruments.write();
+    throw;
+  }
+  if (!command.frames && !command.screenshot.empty() && !image.pixels.empty()) {
+    outputs.write(recorded_steps, /*last=*/true, image);
+  }
+  viewer.detach_renderer();
+  instruments.write();
+  if (command.stats) {
+    nlohmann::ordered_json stats =
+        run_statistics(viewer.simulation(), viewer.scene(), viewer.stats().steps, step_times);
+    stats["ui_frame_ms_median"] = median(ui_frame_ms);
+    stats["ui_frames"] = ui_frame_ms.size();
+    stats["real_time"] = viewer.real_time();
+    stats["width"] = command.width;
+    stats["height"] = command.height;
+    out << stats.dump() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace wobble

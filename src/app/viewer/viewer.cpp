@@ -1,0 +1,441 @@
+#include "app/viewer/viewer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <optional>
+#include <utility>
+
+#include <imgui.h>
+
+#include "app/interaction/environment_controls.h"
+#include "io/load_scene.h"
+#include "render/vertex_normals.h"
+#include "app/cli/scene_catalog.h"
+#include "sim/solver/worker_pool.h"
+#include "app/viewer/step_advice.h"
+#include "app/student/student_server.h"
+
+namespace wobble {
+
+namespace {
+
+constexpr float degrees = 3.14159265358979f / 180.0f;
+// The view a scene opens with: from the front right, a little above.
+constexpr float default_yaw = 30.0f * degrees;
+constexpr float default_pitch = 20.0f * degrees;
+
+// Cloth is orange in front and blue behind; a solid shows only its outside. A scene may choose.
+SurfaceColors colors_for(const Scene& scene) {
+  SurfaceColors colors;
+  if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.45f, 0.76f, 0.34f);
+  if (scene.look.front_color) colors.front = scene.look.front_color->cast<float>();
+  if (scene.look.back_color) colors.back = scene.look.back_color->cast<float>();
+  return colors;
+}
+
+}  // namespace
+
+Viewer open_viewer(const CommandLine& command) {
+  // The student's code is built first: a compile error is the user's to fix before any window.
+  ViewerSettings settings = viewer_settings(command);
+  if (!command.student.empty()) {
+    settings.student_server = build_student_step_server(command.student);
+  }
+  Scene scene = open_scene(command);  // its refusals name the file already: not inside
+  return naming_scene(command.scene,
+                      [&] { return Viewer(std::move(scene), settings, scene_catalog()); });
+}
+
+ViewerSettings viewer_settings(const CommandLine& command) {
+  ViewerSettings settings;
+  settings.k = command.k;
+  settings.dt = command.dt;
+  settings.iterations = command.iterations;
+  settings.chebyshev = command.chebyshev;
+  settings.layers.wireframe = command.wireframe;
+  settings.layers.springs = command.springs;
+  settings.layers.points = command.points;
+  settings.drags = command.drags;
+  settings.color_by = command.color_by;
+  settings.compare = command.compare;
+  settings.plots = command.plots;
+  if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
+  if (command.camera_pitch) {
+    settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
+  }
+  return settings;
+}
+
+Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources)
+    : scene_sources_(std::move(scene_sources)) {
+  for (const std::string& source : scene_sources_)
+    scene_labels_.push_back(scene_label(source));
+  if (settings.k) scene.params.k = *settings.k;
+  if (settings.dt) scene.params.dt = *settings.dt;
+  if (settings.iterations) scene.params.iterations = *settings.iterations;
+  if (settings.chebyshev) scene.params.chebyshev = true;
+  panel_.surface = settings.layers.surface;
+  panel_.wireframe = settings.layers.wireframe;
+  panel_.springs = settings.layers.springs;
+  panel_.points = settings.layers.points;
+  panel_.ground = settings.layers.ground;
+  panel_.color_by = static_cast<int>(settings.color_by);
+  panel_.show_convergence = panel_.show_energy = settings.plots;
+  if (settings.camera_yaw_degrees) settings_yaw_ = *settings.camera_yaw_degrees * degrees;
+  if (settings.camera_pitch_degrees) {
+    settings_pitch_ = std::clamp(*settings.camera_pitch_degrees * degrees, -OrbitCamera::max_pitch,
+                                 OrbitCamera::max_pitch);
+  }
+  camera_.yaw = settings_yaw_.value_or(default_yaw);
+  camera_.pitch = settings_pitch_.value_or(default_pitch);
+  student_server_ = settings.student_server;
+  load(std::move(scene));
+  drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
+  if (settings.compare && !student_) start_split(*settings.compare);
+}
+
+Viewer::~Viewer() = default;
+
+bool Viewer::open_file(const std::string& path) {
+  try {
+    load(load_scene(path));
+    return true;
+  } catch (const std::exception& error) {
+    scene_.notes.push_back(error.what());
+    return false;
+  }
+}
+
+void Viewer::restore_defaults() {
+  // scene_ is the scene as it opened: the panel's changes went to the simulation only.
+  if (batch_started_) finish_steps();
+  Scene opened = scene_;
+  load(std::move(opened));
+}
+
+void Viewer::load(Scene scene) {
+  // A running batch finishes first and what the user did before is handed over, so that the new
+  // scene's settings come after it (loading takes longer than a step anyway).
+  if (batch_started_) finish_steps();
+  // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
+  // was.
+  RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
+  if (!student_server_.empty()) {
+    scene.params = seed_method(scene.params);
+    const std::string note =
+        "student mode: Wobble's side (left) takes the seed's step, 50 plain "
+        "iterations from the current positions with gravity and the pins only, "
+        "so that both sides compute the same step; pins cannot be dragged";
+    // Restore defaults reloads a scene that already says so.
+    if (std::find(scene.notes.begin(), scene.notes.end(), note) == scene.notes.end()) {
+      scene.notes.push_back(note);
+    }
+  }
+  auto simulation =
+      std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
+  // A split view stays split, its right side keeping its own settings on the new scene.
+  std::optional<CompareSettings> split;
+  if (twin_ && !student_) split = twin_settings();
+  twin_.reset();
+  student_.reset();
+  drag_.cancel();
+  collider_drag_.cancel();
+  mouse_holds_ = false;
+  pacer_.restart();
+  drag_script_ = DragScript();  // its vertex numbers belong to the first scene
+  step_warning_.clear();
+  mode_ = Mode::idle;
+  scene_ = std::move(scene);
+  simulation_ = std::move(simulation);
+  clear_instruments();
+  update_recording();
+  // The picker shows the scene as current; a scene from elsewhere joins the list.
+  const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
+  if (found == scene_labels_.end()) {
+    scene_labels_.push_back(scene_.name);
+    scene_sources_.push_back(scene_.name);
+  }
+  panel_.scene = static_cast<int>(
+      std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) - scene_labels_.begin());
+  panel_.k = static_cast<float>(scene_.params.k);
+  panel_.dt = static_cast<float>(scene_.params.dt);
+  panel_.iterations = scene_.params.iterations;
+  panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
+  panel_.chebyshev = scene_.params.chebyshev;
+  show_environment_in_panel();
+
+  const SpringNetwork& network = scene_.network;
+  // Springs without faces (a chain, a net) draw no surface, so without their springs and
+  // vertices the view would show only the pins: they are shown as the course's viewer shows
+  // them, and the user can still turn them off. What was chosen for meshes with faces is kept
+  // for the next one.
+  if (!faceless_) {
+    chosen_springs_ = panel_.springs;
+    chosen_points_ = panel_.points;
+  }
+  faceless_ = network.F.rows() == 0;
+  panel_.springs = faceless_ || chosen_springs_;
+  panel_.points = faceless_ || chosen_points_;
+  triangles_.resize(3 * network.F.rows());
+  for (Eigen::Index f = 0; f < network.F.rows(); ++f) {
+    for (int k = 0; k < 3; ++k)
+      triangles_[3 * f + k] = static_cast<unsigned>(network.F(f, k));
+  }
+  springs_.resize(2 * network.E.rows());
+  for (Eigen::Index e = 0; e < network.E.rows(); ++e) {
+    for (int k = 0; k < 2; ++k)
+      springs_[2 * e + k] = static_cast<unsigned>(network.E(e, k));
+  }
+  const int n = static_cast<int>(network.V.rows());
+  positions_.resize(3 * n);
+  normals_.resize(3 * n);
+  marks_.resize(n);
+  pinned_flags_.resize(n);
+  update_vertex_arrays();
+  place_ground();
+  open_view();
+  const SceneLook& look = scene_.look;
+  uv_.clear();
+  if (look.uv.rows() == n && look.uv.cols() == 2) {
+    uv_.resize(2 * n);
+    for (int i = 0; i < n; ++i) {
+      uv_[2 * i] = static_cast<float>(look.uv(i, 0));
+      uv_[2 * i + 1] = static_cast<float>(look.uv(i, 1));
+    }
+  }
+  texture_ = std::move(texture);
+  if (split) start_split(*split);
+  if (!student_server_.empty()) start_student();
+  arrays_stale_ = true;  // the split view's side, if any, is drawn from the next render
+  copy_shown_figures();
+  if (renderer_) attach_renderer();
+}
+
+void Viewer::attach_renderer() {
+  if (!renderer_) renderer_ = std::make_unique<Renderer>();
+  MeshTopology topology;
+  topology.vertex_count = static_cast<int>(scene_.network.V.rows());
+  topology.triangles = triangles_.data();
+  topology.triangle_count = static_cast<int>(triangles_.size() / 3);
+  topology.springs = springs_.data();
+  topology.spring_count = static_cast<int>(springs_.size() / 2);
+  topology.uv = uv_.empty() ? nullptr : uv_.data();
+  renderer_->set_topology(topology);
+  renderer_->set_colors(colors_for(scene_));
+  TextureImage texture;
+  if (!texture_.pixels.empty()) {
+    texture.rgba = texture_.pixels.data();
+    texture.width = texture_.width;
+    texture.height = texture_.height;
+  }
+  renderer_->set_texture(texture);
+
+  renderer_->set_ground(ground_);
+}
+
+void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
+  PanelStats stats = this->stats();
+  stats.show_timings = timings.show_timings;
+  stats.fps = timings.fps;
+  stats.ui_frame_ms = timings.ui_frame_ms;
+  stats.real_time_factor = timings.real_time_factor;
+  stats.steps_per_second = timings.steps_per_second;
+  stats.recording = recording_status_;
+  const StepTiming& step = last_timing_;
+  stats.step_ms = step_ms_.median();
+  stats.local_ms = local_ms_.median();
+  stats.global_ms = global_ms_.median();
+  stats.forces_ms = static_cast<float>(step.forces_ms);
+  stats.instruments_ms = static_cast<float>(step.instruments_ms);
+  stats.contact_ms = static_cast<float>(step.contact_ms);
+  stats.self_detection_ms = static_cast<float>(step.self_detection_ms);
+  stats.self_response_ms = static_cast<float>(step.self_response_ms);
+
+  // The panel's UI scale (for projectors) multiplies the screen's.
+  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
+  ui_scale *= panel_.ui_scale;
+  const PanelRequests requests = panel_.show_panel
+                                     ? draw_control_panel(panel_, stats, scene_labels_, ui_scale)
+                                     : PanelRequests();
+  // A hidden panel covers nothing: F then frames in the whole window.
+  panel_place_ = requests.place;
+  std::vector<std::pair<std::string, std::string>> help;
+  for (const Binding& binding : viewer_bindings())
+    help.emplace_back(binding.input, binding.action);
+  draw_help_overlay(help, panel_.show_help);
+  draw_step_warning(step_warning_, ui_scale);
+  draw_overlays(ui_scale);
+
+  // A new scene (or the same one afresh) waits for a running batch (see load).
+  if (requests.scene_changed) {
+    // A scene file that fails to load leaves the current scene running, the picker showing it.
+    if (!open_file(scene_sources_[panel_.scene])) {
+      panel_.scene =
+          static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
+                           scene_labels_.begin());
+    }
+    return;
+  }
+  if (!requests.open_path.empty()) {
+    open_file(requests.open_path);
+    return;
+  }
+  if (requests.restore_defaults) {
+    restore_defaults();
+    return;
+  }
+  // The sliders' values stay in the panel until the simulation takes them (hand_over_changes
+  // applies them again after a batch).
+  if (!batch_started_) apply_panel_settings();
+  if (requests.step_once) apply(ViewerCommand::step_once);
+  if (requests.reset) apply(ViewerCommand::reset);
+  if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
+  if (requests.save_scene) apply(ViewerCommand::save_scene);
+  if (requests.export_obj) apply(ViewerCommand::export_obj);
+  if (requests.screenshot) apply(ViewerCommand::screenshot);
+  if (requests.default_view) apply(ViewerCommand::default_view);
+}
+
+void Viewer::apply_panel_settings() {
+  // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
+  const SimulationParams& params = simulation_->params();
+  if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
+  if (static_cast<float>(params.dt) != panel_.dt) {
+    simulation_->set_dt(panel_.dt);
+    pacer_.restart();
+  }
+  // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
+  panel_.iterations = std::min(panel_.iterations, simulation_->max_iterations_for_mesh());
+  if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
+  if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
+  // The slider is gravity's strength: the scene's direction stays, sideways part included.
+  if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
+    simulation_->set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
+                             params.gravity_model);
+  }
+  apply_environment_settings();
+  apply_split_settings();
+}
+
+PanelStats Viewer::stats() const {
+  if (batch_started_) return shown_stats_;
+  return simulation_stats();
+}
+
+PanelStats Viewer::simulation_stats() const {
+  PanelStats stats;
+  stats.vertices = static_cast<int>(scene_.network.V.rows());
+  stats.springs = static_cast<int>(scene_.network.E.rows());
+  // A free vertex held by the mouse is pinned only for the drag: it is not one of the pins.
+  stats.pins = simulation_->pin_count() - (drag_.holds_free_vertex() ? 1 : 0);
+  stats.threads = shared_thread_setting().threads;
+  stats.steps = simulation_->steps_taken();
+  stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
+  stats.notes = scene_.notes;
+  stats.has_colliders = !simulation_->colliders().empty();
+  stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
+  stats.contacts = simulation_->contact_count();
+  stats.self_collision = simulation_->params().self_collision.on;
+  stats.self_contacts = simulation_->self_contact_count();
+  stats.student_side = student_ != nullptr;
+  stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
+  stats.warning = step_warning_;
+  return stats;
+}
+
+void Viewer::update_vertex_arrays() {
+  arrays_stale_ = false;
+  const Eigen::MatrixXd& p = simulation_->positions();
+  const int n = static_cast<int>(p.rows());
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * i + k] = static_cast<float>(p(i, k));
+    pinned_flags_[i] = simulation_->is_pinned(i) ? 1 : 0;
+  }
+  // Paused, a drag moves only the pin's target: the held vertex is drawn there, its triangles
+  // stretching towards it, so the user sees where the shape will be pulled (Step takes one step
+  // towards it). The simulation's positions are untouched.
+  if (panel_.paused && drag_.active()) {
+    const Eigen::Vector3d target = simulation_->pin_target(drag_.vertex());
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * drag_.vertex() + k] = static_cast<float>(target(k));
+  }
+  compute_vertex_normals(positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), normals_.data());
+  if (!twin_) return;
+  const Eigen::MatrixXd& q = twin_->positions();
+  twin_positions_.resize(3 * n);
+  twin_normals_.resize(3 * n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      twin_positions_[3 * i + k] = static_cast<float>(q(i, k));
+  }
+  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
+}
+
+void Viewer::render(int framebuffer_width, int framebuffer_height,
+                    const Eigen::Vector2f& window_size, float pixel_ratio) {
+  // Split, each side gets half the width, under the same camera.
+  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
+  const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
+  // Between batches a change made since the last refresh is read afresh (a paused drag moves
+  // the drawn pin); while a batch runs, the state it started from is drawn.
+  if (!batch_started_ && arrays_stale_) update_vertex_arrays();
+  const int n = static_cast<int>(positions_.size() / 3);
+  const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
+  if (frame_on_next_render_) frame_camera(aspect);
+  view_ = view_matrix(camera_);
+  projection_ = projection_matrix(camera_, aspect);
+
+  // The pin under the cursor and the vertex being held are highlighted.
+  hovered_pin_ = (mode_ == Mode::idle && !mouse_holds_ && !cursor_over_ui_)
+                     ? pick(cursor_, /*pinned_only=*/true)
+                     : -1;
+  for (int i = 0; i < n; ++i)
+    marks_[i] = pinned_flags_[i];
+  if (hovered_pin_ >= 0) marks_[hovered_pin_] = 2;
+  if (drag_.active()) marks_[drag_.vertex()] = 2;
+
+  update_collider_mesh();
+  if (!renderer_) return;
+  SolidMesh solids;
+  solids.positions = collider_mesh_.positions.data();
+  solids.normals = collider_mesh_.normals.data();
+  solids.vertex_count = collider_mesh_.vertex_count();
+  solids.triangles = collider_mesh_.triangles.data();
+  solids.triangle_count = collider_mesh_.triangle_count();
+  renderer_->set_solids(solids);
+  MeshFrame frame;
+  frame.positions = positions_.data();
+  frame.normals = normals_.data();
+  frame.marks = marks_.data();
+  add_quantity_colors(quantity_colors_, frame);
+  renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), left_width, framebuffer_height,
+                  pixel_ratio);
+  if (!twin_) return;
+  frame.positions = twin_positions_.data();
+  frame.normals = twin_normals_.data();
+  add_quantity_colors(twin_colors_, frame);
+  if (student_ && shown_student_colors_.size() == twin_positions_.size()) {
+    frame.vertex_colors = shown_student_colors_.data();
+  }
+  renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width - left_width,
+                  framebuffer_height, pixel_ratio, left_width);
+}
+
+ViewLayers Viewer::layers() const {
+  ViewLayers layers;
+  layers.surface = panel_.surface;
+  layers.wireframe = panel_.wireframe;
+  layers.springs = panel_.springs;
+  layers.points = panel_.points;
+  layers.ground = panel_.ground;
+  layers.solids = panel_.colliders;
+  return layers;
+}
+
+}  // namespace wobble

@@ -1,0 +1,377 @@
+#ifndef WOBBLE_APP_VIEWER_VIEWER_H
+#define WOBBLE_APP_VIEWER_VIEWER_H
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/interaction/collider_drag.h"
+#include "app/interaction/collider_mesh.h"
+#include "app/cli/command_line.h"
+#include "app/cli/compare_settings.h"
+#include "app/interaction/drag_script.h"
+#include "app/interaction/input_mapping.h"
+#include "io/png_image.h"
+#include "app/viewer/moving_median.h"
+#include "platform/input_event.h"
+#include "app/viewer/quantity_colors.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "sim/instruments/frame_energy.h"
+#include "sim/shapes/builtin_scenes.h"
+#include "sim/simulation.h"
+#include "app/viewer/step_pacer.h"
+#include "app/viewer/step_thread.h"
+#include "app/student/student_step.h"
+#include "ui/control_panel.h"
+#include "app/interaction/vertex_drag.h"
+
+namespace wobble {
+
+// The energy plot's samples, one a step, over the last seconds of simulated time.
+struct EnergyHistory {
+  std::vector<double> time, kinetic, spring, gravity, total;  // s, J
+  void add(double time, const FrameEnergy& energy);
+  void clear();
+};
+
+// How the viewer starts: overrides of the scene's parameters, and what to show.
+struct ViewerSettings {
+  std::optional<double> k, dt;
+  std::optional<int> iterations;
+  bool chebyshev = false;  // turn Chebyshev acceleration on
+  ViewLayers layers;
+  std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
+  std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
+  ColorQuantity color_by = ColorQuantity::material;
+  std::optional<CompareSettings> compare;  // open in the split view with this right side
+  bool plots = false;                      // open the convergence and energy plots
+  // wobble --student: the step server built from the student's folder (student_server.h), or
+  // empty. The split view then shows the student's sparse step on the right.
+  std::string student_server;
+};
+
+// The parameters under which Wobble's step is the seed's fast_mass_springs_step_sparse: 50 plain
+// iterations from pᵗ, no damping, wind or colliders (the left side of wobble --student).
+SimulationParams seed_method(SimulationParams params);
+
+// The start-up settings a command line asks for.
+ViewerSettings viewer_settings(const CommandLine& command);
+
+// Everything the window and the headless mode share: the scene and its simulation, the camera,
+// the mouse and keys, the ImGui panel, and the renderer. Only the GL context and the frame loop
+// around it differ between the two modes. One frame is, in this order:
+//   handle_events → build_ui → advance (headless) or exchange (window) → build_legend → render
+//
+// The simulation's side and the UI's: the simulation, the split view's right side, the student's
+// step and the scripted drags are touched by one batch of steps at a time. In the window a batch
+// runs on a thread of its own (step_on_thread) while the UI goes on drawing the state the last
+// batch left, at the display's rate; what the user does meanwhile (drags, clicks, slider
+// changes, Reset, a new scene) is kept, in order, and handed to the simulation once the batch
+// finished, before the next one starts. Each step still has its fixed dt, so the results do not
+// depend on the thread: N steps give the same positions as headless.
+class Viewer {
+ public:
+  // `scene_sources` are what the scene picker offers (built-in names and scene files, as
+  // load_scene takes them); `scene` is already built. No GL needed yet.
+  Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources);
+  ~Viewer();
+
+  // Replace the scene (what the scene picker does), once a running batch of steps finished.
+  // Throws, leaving the viewer as it was, when
+  // the scene's texture cannot be read or its simulation cannot be built. A mesh without faces
+  // starts with its springs and vertices shown, since there is no surface to see; the layers
+  // chosen for meshes with faces come back with the next mesh that has them.
+  void load(Scene scene);
+  // The scene as it opened (with the command line's settings): k, dt, iterations, gravity,
+  // environment, pins, colliders, the start and the split view's right side. The panel's
+  // "Restore defaults", and the picker choosing the current scene again.
+  void restore_defaults();
+  // Open a scene or mesh file (dropped on the window, or typed into the panel's "open" field),
+  // as load_scene reads it. A file that does not load leaves the current scene running, the
+  // reason shown in the panel's notes; returns whether it loaded.
+  bool open_file(const std::string& path);
+  // F12 asked for a screenshot since the last call (the window loop reads the pixels after
+  // drawing and calls saved()).
+  bool take_screenshot_request() {
+    const bool asked = screenshot_requested_;
+    screenshot_requested_ = false;
+    return asked;
+  }
+  // Tell the user, among the panel's notes, that a file was written or why not.
+  void saved(const std::string& what) { scene_.notes.push_back(what); }
+  // Whether the window is to write each new state drawn as a PNG (the panel's "record", F9),
+  // and what the panel says about it meanwhile ("DIR/ (N frames)"; empty when not recording).
+  bool recording() const { return panel_.recording; }
+  void stop_recording() { panel_.recording = false; }
+  void set_recording_status(std::string status) { recording_status_ = std::move(status); }
+
+  // Create the renderer. Needs the GL context current until detach_renderer or destruction.
+  void attach_renderer();
+  // Free the renderer's GL objects while their context is still current.
+  void detach_renderer() { renderer_.reset(); }
+
+  // Mouse and keys since the last frame. `ui_wants_mouse`/`ui_wants_keyboard` are ImGui's
+  // io.WantCaptureMouse/WantCaptureKeyboard: what the panel takes, the 3-D view ignores.
+  void handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
+                     bool ui_wants_keyboard, const Eigen::Vector2f& window_size);
+  // The panel and the help overlay (ImGui, between NewFrame and Render). Applies what changed.
+  void build_ui(const PanelStats& timings, float ui_scale);
+  // One time step, unless paused, finished before it returns (headless, tests). A step the
+  // simulation rolls back pauses the viewer and sets step_warning(). Then, paused or not, the
+  // state to be drawn, with the colours of color_by().
+  void advance();
+  // The window's frame: if a batch of steps still runs, nothing (the UI draws the last state;
+  // returns false). Otherwise take the finished batch's results, hand over what the user did
+  // since, in order, take the state to be drawn, and start the next batch: one step if one was
+  // asked for; while playing, in real-time mode as many as keep up with the wall clock `now`
+  // (s) but fit in `frame_seconds` (StepPacer), otherwise one. Returns true.
+  bool exchange(double now, double frame_seconds);
+  // Run batches on a thread of their own from now on (the window). `wake` runs on that thread
+  // after each batch.
+  void step_on_thread(std::function<void()> wake);
+  // Wait for a running batch and take its results (before the window closes, and at the end of
+  // a --frames run).
+  void finish_steps();
+  // Wait for a running batch and drop its results and any error it met (a run that failed
+  // elsewhere, before it writes what it has).
+  void stop_stepping() noexcept;
+  // Whether a batch of steps runs on the stepping thread now.
+  bool stepping() const { return batch_started_ && step_thread_ && step_thread_->running(); }
+  // Never step beyond this many steps in all (the window's --frames).
+  void set_step_limit(long steps) { step_limit_ = steps; }
+  // Called after each good step, on the thread that took it, with the simulation (the CSV rows
+  // and OBJ sequences of the window).
+  void set_step_observer(std::function<void(const Simulation&)> observer) {
+    step_observer_ = std::move(observer);
+  }
+  // The steps taken as of the state drawn.
+  long shown_steps() const { return shown_stats_.steps; }
+  // viewer_colors.cpp: the colour bar of color_by() (ImGui, after advance so that it shows the
+  // range this frame is drawn with, and before ImGui::Render); nothing for material.
+  void build_legend(float ui_scale);
+  ColorQuantity color_by() const { return static_cast<ColorQuantity>(panel_.color_by); }
+  // The colours the last advance() computed (empty while coloured by material).
+  const QuantityColors& quantity_colors() const { return quantity_colors_; }
+  // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
+  // `pixel_ratio` is framebuffer pixels per window unit.
+  void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
+              float pixel_ratio);
+
+  // Keep the simulation recording its convergence whether or not the plot shows it (for
+  // --convergence-csv), through scene changes too.
+  void set_convergence_required(bool required);
+
+  // What ImGui draws besides the panel: the convergence and energy plots when open, the split
+  // view's corner labels. build_ui draws them too; headless images without the panel draw only
+  // these. Between ImGui's NewFrame and Render.
+  void draw_overlays(float ui_scale);
+  // Whether draw_overlays has anything to draw.
+  bool has_overlays() const { return twin_ || panel_.show_convergence || panel_.show_energy; }
+  // The split view's right side, or null when the view is not split.
+  const Simulation* right_side() const { return twin_.get(); }
+  // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.
+  const std::string& right_side_warning() const { return shown_twin_warning_; }
+  // With a student's step on the right: its largest distance from Wobble's positions after the
+  // last step (m).
+  double student_distance() const { return shown_student_distance_; }
+
+  bool quit_requested() const { return quit_; }
+  bool real_time() const { return panel_.real_time; }
+  bool paused() const { return panel_.paused; }
+  bool help_shown() const { return panel_.show_help; }
+  bool panel_shown() const { return panel_.show_panel; }
+  // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
+  // target).
+  const std::vector<float>& drawn_positions() const { return positions_; }
+  // Whether the next frames change without input: playing, a step asked for, or the mouse
+  // holding something or turning the camera. A paused viewer with none of these can wait for
+  // input instead of redrawing the same picture.
+  bool animating() const {
+    return !panel_.paused || step_requested_ || mouse_holds_ || mode_ != Mode::idle ||
+           batch_started_ || !pending_.empty();
+  }
+  // Why the last step was rolled back (shown in the view until the next good step), or empty.
+  const std::string& step_warning() const { return step_warning_; }
+  const Simulation& simulation() const { return *simulation_; }
+  const Scene& scene() const { return scene_; }
+  const OrbitCamera& camera() const { return camera_; }
+  // How far the mouse may take the camera, for this scene's shape and ground.
+  const CameraLimits& camera_limits() const { return camera_limits_; }
+  // Panel figures that do not come from the wall clock, as of the state drawn.
+  PanelStats stats() const;
+  // The layers render() draws, as the panel's checkboxes show them.
+  ViewLayers layers() const;
+  // The ground grid under the scene (see ground_grid_height), set when a scene loads.
+  const GroundGrid& ground() const { return ground_; }
+  // The colliders' triangles as the last render() drew them (empty while they are hidden).
+  const ColliderTriangles& collider_mesh() const { return collider_mesh_; }
+
+ private:
+  // The simulation's side (see the class comment).
+  // Do `what` now when no batch runs, else once the running batch finished, after what was
+  // asked before it.
+  void change(std::function<void()> what);
+  void hand_over_changes();
+  // Headless (no `now`): one step, unless paused.
+  int steps_to_start(std::optional<double> now, double frame_seconds);
+  void start_batch(int steps);
+  void run_batch();  // on the thread that takes the steps
+  void finish_batch();
+  // Copy what the UI draws and shows out of the simulation's side.
+  void refresh_shown_state();
+  // The panel's figures, the right side's warning and the student's distance and colours.
+  void copy_shown_figures();
+  PanelStats simulation_stats() const;
+
+  void apply(ViewerCommand command);
+  // Ctrl+S: the scene with its pins and settings as wobble-SCENE-scene-NNNN.json (scene_save.h).
+  void save_scene();
+  void apply_panel_settings();
+  // viewer_environment.cpp: damping, friction, wind and colliders.
+  void show_environment_in_panel();
+  void apply_environment_settings();
+  // viewer_instruments.cpp: the convergence and energy plots.
+  void update_recording();
+  void clear_instruments();
+  void show_instruments(float ui_scale);
+  // viewer_compare.cpp: the split view.
+  void start_split(const CompareSettings& settings);
+  void stop_split();
+  void show_twin_in_panel();
+  CompareSettings twin_settings() const;
+  void apply_split_settings();
+  void sync_twin();
+  void advance_twin(double seconds);
+  void reset_twin();
+  // The split view's corner labels for the state drawn.
+  void describe_sides();
+  // viewer_student.cpp: a student's step on the right.
+  void start_student();
+  void advance_student();
+  void restart_student();
+  void draw_student_legend(float ui_scale);
+  void place_ground();
+  // viewer_camera.cpp: the scene's opening view (its own camera, or a framing at the next
+  // render), the view O restores, and framing with room to move beside the panel.
+  void open_view();
+  void restore_opening_view();
+  void frame_camera(float aspect);
+  void update_collider_mesh();
+  void update_vertex_arrays();
+  // viewer_colors.cpp
+  void update_quantity_colors();
+  void add_quantity_colors(const QuantityColors& colors, MeshFrame& frame) const;
+  int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
+  Ray ray_at(const Eigen::Vector2f& cursor) const;
+
+  Scene scene_;
+  std::unique_ptr<Simulation> simulation_;
+  std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
+  PanelSettings panel_;
+  // Whether the scene has no faces, and the springs and points layers chosen for scenes with
+  // faces while such a scene shows both.
+  bool faceless_ = false;
+  bool chosen_springs_ = false, chosen_points_ = false;
+  OrbitCamera camera_;
+  std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line
+  bool frame_on_next_render_ = true;
+  // The view the scene opened with: its own camera, or the angles it was framed from (radians).
+  std::optional<OrbitCamera> scene_camera_;
+  float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
+  CameraLimits camera_limits_;
+  PanelPlace panel_place_;  // where build_ui last drew the panel; not shown without a panel
+  // One batch of steps: what it was asked for, and what it left for finish_batch.
+  struct Batch {
+    int steps = 0;
+    bool record_trace = false, record_energy = false;  // as the plots were open at its start
+    int steps_taken = 0;
+    std::vector<StepTiming> timings;  // of each good step
+    ConvergenceTrace trace;           // the last step's, when recorded
+    long trace_step = 0;
+    std::vector<std::pair<double, FrameEnergy>> energy;  // (time, energy) after each step
+    StepStatus status = StepStatus::ok;                  // the step that failed, if one did
+    long failed_step = 0;
+    bool scripted_drag = false;  // a scripted drag held a vertex at the failure
+    double stiffness_ratio = 0.0;
+  };
+  Batch batch_;
+  bool batch_started_ = false;  // a batch started whose results finish_batch has not taken
+  std::unique_ptr<StepThread> step_thread_;     // null: batches run on the caller
+  std::vector<std::function<void()>> pending_;  // the user's changes while a batch ran
+  std::function<void(const Simulation&)> step_observer_;
+  StepPacer pacer_;
+  long step_limit_ = -1;  // < 0: none
+  // What the UI shows of the simulation's side, as of the last refresh_shown_state.
+  PanelStats shown_stats_;
+  std::string shown_twin_warning_;
+  std::string shown_left_label_, shown_right_label_;  // the split view's settings
+  double shown_student_distance_ = 0.0;
+  std::vector<float> shown_student_colors_;
+  // A vertex or collider is held by the mouse (its grab may still wait for the batch).
+  bool mouse_holds_ = false;
+  bool quit_ = false;
+  bool screenshot_requested_ = false;
+  std::string recording_status_;
+  MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
+  StepTiming last_timing_;                       // the last good step's
+  bool step_requested_ = false;
+  std::string step_warning_;
+  DragScript drag_script_;
+  bool convergence_required_ = false;
+  ConvergenceTrace shown_trace_;  // what the convergence window shows
+  long shown_trace_step_ = 0;
+  EnergyHistory energy_history_;
+  // The split view's right side: its simulation, how much simulated time it is behind the
+  // left, why it stopped (empty while it runs), and its vertex arrays.
+  std::unique_ptr<Simulation> twin_;
+  double twin_behind_ = 0.0;
+  std::string twin_warning_;
+  std::vector<float> twin_positions_, twin_normals_;
+  // wobble --student: the server's path, the student's step, its largest distance from the left
+  // side's positions after the last step (m), and its vertices' colours by that distance.
+  std::string student_server_;
+  std::unique_ptr<StudentStep> student_;
+  double student_distance_ = 0.0;
+  std::vector<float> student_colors_;
+
+  // Mouse state.
+  enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
+  VertexDrag drag_;
+  ColliderDrag collider_drag_;
+  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);      // in the half under it when split
+  Eigen::Vector2f raw_cursor_ = Eigen::Vector2f(-1e9f, -1e9f);  // in the window
+  Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
+  bool cursor_over_ui_ = false;
+  int hovered_pin_ = -1;
+
+  // What the renderer draws, as plain arrays refreshed between batches. Stale after a change
+  // the last refresh did not see (render then refreshes them).
+  bool arrays_stale_ = false;
+  std::vector<unsigned> triangles_, springs_;
+  std::vector<float> positions_, normals_;
+  std::vector<unsigned char> marks_, pinned_flags_;
+  std::vector<float> uv_;  // #V by 2, or empty
+  RgbaImage texture_;
+  GroundGrid ground_;
+  ColliderTriangles collider_mesh_;
+  QuantityColors quantity_colors_;  // empty while coloured by material
+  QuantityColors twin_colors_;      // the split view's right side, in the same range
+  // The wind's speed and heading as the panel last showed them, so that only a slider the user
+  // moved changes the wind.
+  float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;
+  Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
+  Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
+  std::unique_ptr<Renderer> renderer_;
+};
+
+// The viewer of the scene the command line names, with its start-up settings and the scene
+// picker's catalogue. An InputError from starting its simulation names the scene.
+Viewer open_viewer(const CommandLine& command);
+
+}  // namespace wobble
+
+#endif

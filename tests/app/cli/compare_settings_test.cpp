@@ -1,0 +1,73 @@
+// --compare's settings: what they parse to, what they refuse, and the right side they make.
+#include "app/cli/compare_settings.h"
+
+#include <gtest/gtest.h>
+
+#include "sim/input_error.h"
+
+namespace {
+
+using wobble::CompareSettings;
+using wobble::parse_compare_settings;
+
+TEST(CompareSettings, ParsesEachSettingSeparatedByCommasOrSpaces) {
+  const CompareSettings settings =
+      parse_compare_settings("iterations=5, chebyshev=on dt=0.01,k=2e4");
+  EXPECT_EQ(settings.iterations, 5);
+  EXPECT_EQ(settings.chebyshev, true);
+  EXPECT_DOUBLE_EQ(*settings.dt, 0.01);
+  EXPECT_DOUBLE_EQ(*settings.k, 2e4);
+  EXPECT_EQ(parse_compare_settings("chebyshev=off").chebyshev, false);
+  EXPECT_FALSE(parse_compare_settings("k=10").iterations.has_value());
+}
+
+TEST(CompareSettings, AppliesOnlyWhatItNames) {
+  wobble::SimulationParams left;
+  left.iterations = 50;
+  left.k = 400.0;
+  left.damping = 0.5;
+  const wobble::SimulationParams right = parse_compare_settings("iterations=5").applied_to(left);
+  EXPECT_EQ(right.iterations, 5);
+  EXPECT_EQ(right.k, 400.0);
+  EXPECT_EQ(right.damping, 0.5);
+  EXPECT_EQ(right.chebyshev, left.chebyshev);
+}
+
+TEST(CompareSettings, RefusesWithTheSettingNamed) {
+  const auto message = [](const std::string& text) {
+    try {
+      parse_compare_settings(text);
+    } catch (const wobble::InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(message("iterations=0").find("--compare: iterations: expected a whole number"),
+            std::string::npos);
+  EXPECT_NE(message("iterations=5.5").find("iterations"), std::string::npos);
+  EXPECT_NE(message("chebyshev=maybe").find("chebyshev: expected on or off"), std::string::npos);
+  EXPECT_NE(message("dt=-1").find("--compare: dt: expected"), std::string::npos);
+  EXPECT_NE(message("k=nan").find("--compare: k: expected"), std::string::npos);
+  EXPECT_NE(message("stiffness=3").find("unknown setting 'stiffness'"), std::string::npos);
+  EXPECT_NE(message("iterations").find("expected name=value"), std::string::npos);
+  EXPECT_NE(message(" , ").find("expected settings"), std::string::npos);
+}
+
+TEST(CompareSettings, DefaultRightSideIsATenthOrTenTimesTheIterations) {
+  wobble::SimulationParams left;
+  left.iterations = 50;
+  EXPECT_EQ(wobble::default_compare_settings(left).iterations, 5);
+  left.iterations = 3;
+  EXPECT_EQ(wobble::default_compare_settings(left).iterations, 30);
+}
+
+TEST(CompareSettings, DescribesASideOnTwoLines) {
+  wobble::SimulationParams params;
+  params.iterations = 1;
+  params.chebyshev = true;
+  params.dt = 0.01;
+  params.k = 400.0;
+  EXPECT_EQ(wobble::describe_side(params), "1 iteration, Chebyshev\ndt 10 ms, k 400 N/m");
+}
+
+}  // namespace

@@ -1,0 +1,44 @@
+#include "app/interaction/view_framing.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+TEST(ViewFraming, ThePartRightOfAPanelOnTheLeft) {
+  const wobble::ViewportRegion region = wobble::region_beside_panel(1280.0f, 10.0f, 340.0f);
+  EXPECT_FLOAT_EQ(region.left, 340.0f / 1280.0f);
+  EXPECT_FLOAT_EQ(region.right, 1.0f);
+  EXPECT_FLOAT_EQ(region.top, 0.0f);
+  EXPECT_FLOAT_EQ(region.bottom, 1.0f);
+}
+
+TEST(ViewFraming, ThePartLeftOfAPanelMovedToTheRight) {
+  const wobble::ViewportRegion region = wobble::region_beside_panel(1280.0f, 900.0f, 1230.0f);
+  EXPECT_FLOAT_EQ(region.left, 0.0f);
+  EXPECT_FLOAT_EQ(region.right, 900.0f / 1280.0f);
+}
+
+TEST(ViewFraming, TheWholeViewWithoutAPanelOrWhenItLeavesOnlyASliver) {
+  const auto whole = [](const wobble::ViewportRegion& region) {
+    return region.left == 0.0f && region.right == 1.0f && region.top == 0.0f &&
+           region.bottom == 1.0f;
+  };
+  EXPECT_TRUE(whole(wobble::region_beside_panel(1280.0f, 0.0f, 0.0f)));
+  // 400 px wide: the panel leaves 60 px, less than a quarter.
+  EXPECT_TRUE(whole(wobble::region_beside_panel(400.0f, 10.0f, 340.0f)));
+  EXPECT_FALSE(whole(wobble::region_beside_panel(640.0f, 10.0f, 340.0f)));
+}
+
+TEST(ViewFraming, RoomToMoveReachesTheGroundAndAQuarterToEachSide) {
+  Eigen::Vector3f lower(-0.5f, 1.0f, -0.5f), upper(0.5f, 1.0f, 0.5f);  // a flat cloth
+  wobble::add_room_to_move(lower, upper, -0.2f);
+  EXPECT_TRUE(lower.isApprox(Eigen::Vector3f(-0.75f, -0.2f, -0.75f)));
+  EXPECT_TRUE(upper.isApprox(Eigen::Vector3f(0.75f, 1.0f, 0.75f)));
+  // A shape under the ground (fallen through, or the grid placed above it) keeps its own bottom.
+  lower = Eigen::Vector3f(0, -1, 0);
+  upper = Eigen::Vector3f(1, 0, 1);
+  wobble::add_room_to_move(lower, upper, 0.5f);
+  EXPECT_FLOAT_EQ(lower.y(), -1.0f);
+}
+
+}  // namespace

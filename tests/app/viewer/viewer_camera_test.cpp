@@ -1,0 +1,200 @@
+// The viewer's camera through its real input path, without GL: framing beside the panel (F),
+// room for the motion after a reset, the opening view (O), and the limits on orbit and zoom.
+// The panel is real ImGui with its fonts built on the CPU, so nothing is drawn.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/interaction/picking.h"
+#include "app/viewer/viewer.h"
+#include "../headless_imgui.h"
+#include "../viewer_screen.h"
+
+namespace {
+
+using wobble::InputEvent;
+
+const Eigen::Vector2f window(1280.0f, 720.0f);
+// The panel at ui_scale 2, a high-DPI laptop's, is 660 units wide and 20 in: its right edge.
+constexpr float ui_scale = 2.0f;
+constexpr float panel_right = 680.0f;
+
+// An ImGui context with no backend: enough for build_ui to lay the panel out.
+struct HeadlessImGui : wobble::testing::HeadlessImGui {
+  HeadlessImGui() : wobble::testing::HeadlessImGui(window.x(), window.y()) {}
+};
+
+struct CameraFixture {
+  explicit CameraFixture(wobble::Scene scene = wobble::make_builtin_scene("cloth"))
+      : viewer(std::move(scene), wobble::ViewerSettings(), wobble::builtin_scene_names()) {}
+  // One frame as the window runs it, with the panel when `panel` is set.
+  void frame(bool panel = false, bool collapsed = false) {
+    if (panel) {
+      ImGui::NewFrame();
+      if (collapsed) ImGui::SetNextWindowCollapsed(true);
+      viewer.build_ui(wobble::PanelStats(), ui_scale);
+      ImGui::EndFrame();
+    }
+    viewer.advance();
+    viewer.render(1280, 720, window, 1.0f);
+  }
+  void send(const InputEvent& event) { viewer.handle_events({event}, false, false, window); }
+  void press_key(int key) {
+    InputEvent event;
+    event.type = InputEvent::Type::key_press;
+    event.code = key;
+    send(event);
+  }
+  void drag(const Eigen::Vector2f& from, const Eigen::Vector2f& by) {
+    InputEvent event;
+    event.type = InputEvent::Type::cursor_move;
+    event.x = from.x();
+    event.y = from.y();
+    send(event);
+    event.type = InputEvent::Type::button_press;
+    event.code = GLFW_MOUSE_BUTTON_LEFT;
+    send(event);
+    event.type = InputEvent::Type::cursor_move;
+    event.x += by.x();
+    event.y += by.y();
+    send(event);
+    event.type = InputEvent::Type::button_release;
+    send(event);
+  }
+  void wheel(double steps) {
+    InputEvent event;
+    event.type = InputEvent::Type::scroll;
+    event.y = steps;
+    send(event);
+  }
+  // Where vertex i is drawn, in window coordinates.
+  Eigen::Vector2f on_screen(int i) const {
+    return wobble::testing::vertex_on_screen(viewer, i, window);
+  }
+  wobble::Viewer viewer;
+};
+
+TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
+  HeadlessImGui imgui;
+  CameraFixture f;
+  f.frame();  // framed with no panel: the whole window
+  const int left_pin =
+      f.on_screen(f.viewer.scene().pins[0]).x() < f.on_screen(f.viewer.scene().pins[1]).x()
+          ? f.viewer.scene().pins[0]
+          : f.viewer.scene().pins[1];
+  ASSERT_LT(f.on_screen(left_pin).x(), panel_right) << "the pin starts behind the panel";
+  f.frame(/*panel=*/true);
+  f.press_key(GLFW_KEY_F);
+  f.frame(/*panel=*/true);
+  for (const int pin : f.viewer.scene().pins) {
+    const Eigen::Vector2f at = f.on_screen(pin);
+    EXPECT_GT(at.x(), panel_right + 20.0f) << "pin " << pin;
+    EXPECT_LT(at.x(), window.x()) << "pin " << pin;
+    EXPECT_GT(at.y(), 0.0f) << "pin " << pin;
+    EXPECT_LT(at.y(), window.y()) << "pin " << pin;
+  }
+  // The shape sits in the middle of what the panel leaves free.
+  const Eigen::Vector2f middle =
+      0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
+  EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x());
+}
+
+TEST(ViewerCamera, ACollapsedPanelCoversNothing) {
+  HeadlessImGui imgui;
+  CameraFixture f;
+  f.frame(/*panel=*/true, /*collapsed=*/true);
+  f.press_key(GLFW_KEY_F);
+  f.frame(/*panel=*/true, /*collapsed=*/true);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+}
+
+TEST(ViewerCamera, TheSplitViewCentresTheShapeInEachHalf) {
+  HeadlessImGui imgui;
+  CameraFixture f;
+  f.frame(/*panel=*/true);
+  ASSERT_GT(f.viewer.camera().lens_shift.x(), 0.1f) << "framed beside the panel";
+  f.press_key(GLFW_KEY_2);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+  f.press_key(GLFW_KEY_F);
+  f.frame(/*panel=*/true);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero()) << "F frames each half whole";
+}
+
+TEST(ViewerCamera, FRightAfterResetKeepsTheFallingClothInView) {
+  CameraFixture f;
+  for (int i = 0; i < 90; ++i)
+    f.frame();
+  f.press_key(GLFW_KEY_R);  // flat again, about to fall
+  f.press_key(GLFW_KEY_F);
+  f.frame();
+  // Over the fall and the first swings, every vertex stays in the window.
+  const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+  for (int step = 0; step < 120; ++step) {
+    f.frame();
+    for (int i = 0; i < n; i += 7) {
+      const Eigen::Vector2f at = f.on_screen(i);
+      ASSERT_TRUE(at.x() >= 0 && at.x() <= window.x() && at.y() >= 0 && at.y() <= window.y())
+          << "vertex " << i << " left the view at step " << step << ": " << at.transpose();
+    }
+  }
+}
+
+TEST(ViewerCamera, OGoesBackToTheOpeningView) {
+  CameraFixture f;
+  f.frame();
+  const wobble::OrbitCamera opening = f.viewer.camera();
+  f.drag(Eigen::Vector2f(20, 700), Eigen::Vector2f(200, -150));  // orbit
+  f.wheel(3.0);
+  ASSERT_GT(std::abs(f.viewer.camera().yaw - opening.yaw), 0.5f);
+  f.press_key(GLFW_KEY_O);
+  f.frame();
+  EXPECT_NEAR(f.viewer.camera().yaw, opening.yaw, 1e-6f);
+  EXPECT_NEAR(f.viewer.camera().pitch, opening.pitch, 1e-6f);
+  // Framed with room to move around the shape as it is now, which has fallen a little.
+  EXPECT_GT(f.viewer.camera().distance, 0.9f * opening.distance);
+  EXPECT_LT(f.viewer.camera().distance, 1.5f * opening.distance);
+}
+
+TEST(ViewerCamera, OGoesBackToASceneOwnCamera) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  scene.look.camera_position = Eigen::Vector3d(0.0, 1.0, 4.0);
+  scene.look.camera_target = Eigen::Vector3d(0.0, 1.0, 0.0);
+  CameraFixture f(scene);
+  f.frame();
+  f.drag(Eigen::Vector2f(20, 700), Eigen::Vector2f(200, -150));
+  f.press_key(GLFW_KEY_F);
+  f.frame();
+  f.press_key(GLFW_KEY_O);
+  f.frame();
+  EXPECT_TRUE(f.viewer.camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
+  EXPECT_NEAR(f.viewer.camera().distance, 4.0f, 1e-5f);
+  EXPECT_NEAR(f.viewer.camera().yaw, 0.0f, 1e-6f);
+  EXPECT_NEAR(f.viewer.camera().pitch, 0.0f, 1e-6f);
+  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+}
+
+TEST(ViewerCamera, OrbitKeepsTheEyeAboveTheGround) {
+  CameraFixture f;
+  f.frame();
+  // Drag up across the window many times over: the camera would go round under the cloth.
+  for (int i = 0; i < 5; ++i)
+    f.drag(Eigen::Vector2f(20, 700), Eigen::Vector2f(0, -700));
+  EXPECT_GE(wobble::camera_eye(f.viewer.camera()).y(), f.viewer.ground().height);
+  EXPECT_LT(f.viewer.camera().pitch, 0.2f) << "it does get down near the ground";
+}
+
+TEST(ViewerCamera, ZoomStopsOutsideTheShapeAndBeforeItIsADot) {
+  CameraFixture f;
+  f.frame();
+  const Eigen::MatrixXd& V = f.viewer.scene().network.V;
+  const float radius =
+      0.5f * static_cast<float>((V.colwise().maxCoeff() - V.colwise().minCoeff()).norm());
+  f.wheel(100.0);
+  EXPECT_NEAR(f.viewer.camera().distance, 0.6f * radius, 1e-4f);
+  f.wheel(-200.0);
+  EXPECT_NEAR(f.viewer.camera().distance, 20.0f * radius, 1e-3f);
+}
+
+}  // namespace
