@@ -1,5 +1,7 @@
 #include "app/viewer/scene_save.h"
 
+#include <filesystem>
+
 #include "io/write_wobble_scene.h"
 
 namespace wobble {
@@ -29,7 +31,10 @@ Scene scene_to_save(
 void save_current_scene(
     const std::string& json_path, const Scene& opened, const Simulation& simulation,
     const std::optional<std::pair<Eigen::Vector3d, Eigen::Vector3d>>& camera_position_target) {
-  write_wobble_scene(json_path, scene_to_save(opened, simulation, camera_position_target));
+  Scene scene = scene_to_save(opened, simulation, camera_position_target);
+  // A saved scene is a scene of its own: the picker and the outputs name it as its file.
+  scene.name = std::filesystem::path(json_path).stem().string();
+  write_wobble_scene(json_path, scene);
 }
 
 }  // namespace wobble

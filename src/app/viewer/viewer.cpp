@@ -8,13 +8,13 @@
 
 #include <imgui.h>
 
+#include "app/cli/scene_catalog.h"
 #include "app/interaction/environment_controls.h"
+#include "app/student/student_server.h"
+#include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
 #include "render/vertex_normals.h"
-#include "app/cli/scene_catalog.h"
 #include "sim/solver/worker_pool.h"
-#include "app/viewer/step_advice.h"
-#include "app/student/student_server.h"
 
 namespace wobble {
 
@@ -266,6 +266,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_help_overlay(help, panel_.show_help);
   draw_step_warning(step_warning_, ui_scale);
   draw_overlays(ui_scale);
+  notices_.draw(notice_clock(), panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f,
+                ui_scale);
 
   // A new scene (or the same one afresh) waits for a running batch (see load).
   if (requests.scene_changed) {

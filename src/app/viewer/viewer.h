@@ -8,26 +8,27 @@
 #include <string>
 #include <vector>
 
-#include "app/interaction/collider_drag.h"
-#include "app/interaction/collider_mesh.h"
 #include "app/cli/command_line.h"
 #include "app/cli/compare_settings.h"
+#include "app/interaction/collider_drag.h"
+#include "app/interaction/collider_mesh.h"
 #include "app/interaction/drag_script.h"
 #include "app/interaction/input_mapping.h"
-#include "io/png_image.h"
+#include "app/interaction/vertex_drag.h"
+#include "app/student/student_step.h"
 #include "app/viewer/moving_median.h"
-#include "platform/input_event.h"
+#include "app/viewer/notices.h"
 #include "app/viewer/quantity_colors.h"
+#include "app/viewer/step_pacer.h"
+#include "app/viewer/step_thread.h"
+#include "io/png_image.h"
+#include "platform/input_event.h"
 #include "render/camera.h"
 #include "render/renderer.h"
 #include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "app/viewer/step_pacer.h"
-#include "app/viewer/step_thread.h"
-#include "app/student/student_step.h"
 #include "ui/control_panel.h"
-#include "app/interaction/vertex_drag.h"
 
 namespace wobble {
 
@@ -101,8 +102,16 @@ class Viewer {
     screenshot_requested_ = false;
     return asked;
   }
-  // Tell the user, among the panel's notes, that a file was written or why not.
-  void saved(const std::string& what) { scene_.notes.push_back(what); }
+  // Tell the user that a file was written or why not: on screen for a few seconds (Notices),
+  // and among the panel's notes.
+  void saved(const std::string& what) {
+    scene_.notes.push_back(what);
+    notices_.post(what, notice_clock());
+  }
+  // The on-screen confirmations of what was written.
+  const Notices& notices() const { return notices_; }
+  // What the scene picker lists, in its order.
+  const std::vector<std::string>& scene_labels() const { return scene_labels_; }
   // Whether the window is to write each new state drawn as a PNG (the panel's "record", F9),
   // and what the panel says about it meanwhile ("DIR/ (N frames)"; empty when not recording).
   bool recording() const { return panel_.recording; }
@@ -315,6 +324,7 @@ class Viewer {
   bool mouse_holds_ = false;
   bool quit_ = false;
   bool screenshot_requested_ = false;
+  Notices notices_;
   std::string recording_status_;
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
   StepTiming last_timing_;                       // the last good step's

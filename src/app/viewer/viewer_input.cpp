@@ -1,11 +1,13 @@
 // The viewer's mouse and keys: what each event does to the camera, the pins and the playback.
-#include "app/viewer/viewer.h"
+#include <algorithm>
 
+#include "app/cli/scene_catalog.h"
 #include "app/interaction/collider_picking.h"
 #include "app/interaction/environment_controls.h"
-#include "io/write_obj.h"
 #include "app/viewer/scene_save.h"
+#include "app/viewer/viewer.h"
 #include "app/viewer/window_saves.h"
+#include "io/write_obj.h"
 
 namespace wobble {
 
@@ -135,7 +137,13 @@ void Viewer::save_scene() {
     const Eigen::Vector3d eye = camera_eye(camera_).cast<double>();
     save_current_scene(path, scene_, *simulation_,
                        std::make_pair(eye, Eigen::Vector3d(camera_.target.cast<double>())));
-    saved("saved the scene as " + path + " (wobble " + path + " opens it)");
+    // The picker offers it from now on, under its own name.
+    if (std::find(scene_sources_.begin(), scene_sources_.end(), path) == scene_sources_.end()) {
+      scene_sources_.push_back(path);
+      scene_labels_.push_back(scene_label(path));
+    }
+    saved("saved the scene as " + path + " (wobble " + path +
+          " opens it; the scene picker lists it as " + scene_label(path) + ")");
   } catch (const std::exception& error) {
     saved(std::string("saving the scene failed: ") + error.what());
   }

@@ -1,4 +1,5 @@
 #include "app/viewer/scene_save.h"
+#include <filesystem>
 
 #include <gtest/gtest.h>
 
@@ -90,7 +91,11 @@ TEST(SaveCurrentScene, KeepsEverySettingChangedSinceTheSceneOpened) {
   EXPECT_EQ(saved.look.camera_target, camera.second);
 
   // Everything else, field by field, against what was meant to be saved, and the stepping.
-  const Scene meant = scene_to_save(opened, simulation, camera);
+  Scene meant = scene_to_save(opened, simulation, camera);
+  // Saved, it is a scene of its own, named as its file (the picker lists it so).
+  EXPECT_EQ(saved.name, std::filesystem::path(path).stem().string());
+  EXPECT_NE(saved.name, opened.name);
+  meant.name = saved.name;
   testing::expect_same_scene(meant, saved);
   testing::expect_same_steps(meant, saved, 20);
 }

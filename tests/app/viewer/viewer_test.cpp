@@ -586,7 +586,15 @@ TEST(Viewer, CtrlSSavesTheSceneWithItsPinsAndSettingsAndItOpensSo) {
     EXPECT_NE(f.viewer.scene().notes.back().find("saved the scene as ./wobble-cloth-scene-0002"),
               std::string::npos)
         << f.viewer.scene().notes.back();
+    // It says so on screen for a while, and the picker offers it under its own name.
+    const std::vector<std::string> shown = f.viewer.notices().shown(wobble::notice_clock());
+    ASSERT_EQ(shown.size(), 2u);
+    EXPECT_NE(shown.back().find("wobble-cloth-scene-0002.json"), std::string::npos) << shown.back();
+    EXPECT_TRUE(f.viewer.notices().shown(wobble::notice_clock() + 60.0).empty());
+    const std::vector<std::string>& labels = f.viewer.scene_labels();
+    EXPECT_NE(std::find(labels.begin(), labels.end(), "wobble-cloth-scene-0001"), labels.end());
     const wobble::Scene saved = wobble::load_scene("wobble-cloth-scene-0001.json");
+    EXPECT_EQ(saved.name, "wobble-cloth-scene-0001");
     std::vector<int> pins = saved.pins;
     std::sort(pins.begin(), pins.end());
     EXPECT_EQ(pins, f.viewer.simulation().pinned_vertices());
