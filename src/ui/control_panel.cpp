@@ -150,7 +150,7 @@ void draw_environment_section(PanelSettings& settings, const PanelStats& stats) 
     ImGui::SliderFloat("friction", &settings.friction, 0.0f, PanelSettings::max_friction, "%.2f",
                        ImGuiSliderFlags_AlwaysClamp);
   }
-  ImGui::Checkbox("wind", &settings.wind);
+  ImGui::Checkbox("wind (W)", &settings.wind);
   if (stats.aerodynamic_wind) {
     ImGui::SliderFloat("wind (m/s)", &settings.wind_speed, 0.0f, PanelSettings::max_wind_speed,
                        "%.1f", ImGuiSliderFlags_AlwaysClamp);

@@ -9,6 +9,9 @@ namespace wobble {
 struct SideLabels {
   std::string left, right;    // each side's settings
   std::string right_warning;  // why the right side stopped, or empty
+  // The part of the window the two sides share, in ImGui's units: from `left`, two halves of
+  // `half` each (what the panel and the plots leave). half <= 0: the whole window.
+  float area_left = 0.0f, half = 0.0f;
 };
 
 // Writes each half's settings in its bottom-right corner and draws the line between the halves,

@@ -19,9 +19,10 @@ class Notices {
   void post(std::string text, double now);
   // The notices still shown at `now`, oldest first (at most most_shown).
   std::vector<std::string> shown(double now) const;
-  // ImGui, between NewFrame and Render: the box at the bottom of the view. `left` is where the
-  // view begins (the panel's right edge, in pixels); nothing when no notice is shown.
-  void draw(double now, float left, float ui_scale) const;
+  // ImGui, between NewFrame and Render: the box at the top of the view, between `left` and
+  // `right` (ImGui's units: the panel's right edge and the plots' left one), clear of the split
+  // view's labels at the bottom; nothing when no notice is shown.
+  void draw(double now, float left, float right, float ui_scale) const;
 
  private:
   struct Notice {

@@ -10,18 +10,18 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "app/cli/scene_catalog.h"
 #include "app/headless/image_outputs.h"
 #include "app/headless/instrument_csv.h"
-#include "app/viewer/moving_median.h"
 #include "app/headless/obj_sequence.h"
-#include "platform/glfw_window.h"
-#include "app/viewer/real_time_meter.h"
-#include "render/offscreen_target.h"
 #include "app/headless/run_statistics.h"
-#include "app/cli/scene_catalog.h"
+#include "app/viewer/moving_median.h"
+#include "app/viewer/real_time_meter.h"
 #include "app/viewer/viewer.h"
 #include "app/viewer/window_recorder.h"
 #include "app/viewer/window_saves.h"
+#include "platform/glfw_window.h"
+#include "render/offscreen_target.h"
 
 namespace wobble {
 
@@ -107,6 +107,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
   InstrumentCsv instruments(command.convergence_csv, command.energy_csv, command.frames.value_or(0),
                             viewer.simulation().params().iterations);
   viewer.set_convergence_required(instruments.wants_convergence());
+  viewer.show_notices(true);
   instruments.start(viewer.simulation());
   // Each step's rows, files and time, on the thread that took it, numbered by the step count.
   StepTimes step_times;

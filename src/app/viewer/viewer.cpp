@@ -150,6 +150,9 @@ void Viewer::load(Scene scene) {
   simulation_ = std::move(simulation);
   clear_instruments();
   update_recording();
+  if (scene_.params.wind.on) {
+    notices_.post("the wind blows in " + scene_.name + ": W turns it off and on", notice_clock());
+  }
   // The picker shows the scene as current; a scene from elsewhere joins the list.
   const auto found = std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name);
   if (found == scene_labels_.end()) {
@@ -266,8 +269,11 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_help_overlay(help, panel_.show_help);
   draw_step_warning(step_warning_, ui_scale);
   draw_overlays(ui_scale);
-  notices_.draw(notice_clock(), panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f,
-                ui_scale);
+  if (show_notices_) {
+    const float display = ImGui::GetIO().DisplaySize.x;
+    notices_.draw(notice_clock(), panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f,
+                  instruments_left_ >= 0.0f ? instruments_left_ : display, ui_scale);
+  }
 
   // A new scene (or the same one afresh) waits for a running batch (see load).
   if (requests.scene_changed) {
@@ -379,9 +385,12 @@ void Viewer::update_vertex_arrays() {
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio) {
-  // Split, each side gets half the width, under the same camera.
-  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
-  const int left_width = twin_ ? framebuffer_width / 2 : framebuffer_width;
+  // Split, each side gets half of what the panel and the plots leave, under the same camera.
+  const SplitArea area = split_area(window_size.x());
+  window_size_ = twin_ ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
+  const int left_x = twin_ ? static_cast<int>(std::lround(area.left * pixel_ratio)) : 0;
+  const int left_width =
+      twin_ ? static_cast<int>(std::lround(area.half * pixel_ratio)) : framebuffer_width;
   // Between batches a change made since the last refresh is read afresh (a paused drag moves
   // the drawn pin); while a batch runs, the state it started from is drawn.
   if (!batch_started_ && arrays_stale_) update_vertex_arrays();
@@ -415,8 +424,14 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.marks = marks_.data();
   add_quantity_colors(quantity_colors_, frame);
   renderer_->update(frame);
+  if (twin_ && area.left > 0.0f) {
+    // The strips the two sides leave (under the panel and the plots) get the background alone.
+    renderer_->draw(view_, projection_, camera_eye(camera_),
+                    ViewLayers{false, false, false, false, false, false}, framebuffer_width,
+                    framebuffer_height, pixel_ratio);
+  }
   renderer_->draw(view_, projection_, camera_eye(camera_), layers(), left_width, framebuffer_height,
-                  pixel_ratio);
+                  pixel_ratio, left_x);
   if (!twin_) return;
   frame.positions = twin_positions_.data();
   frame.normals = twin_normals_.data();
@@ -425,8 +440,9 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
     frame.vertex_colors = shown_student_colors_.data();
   }
   renderer_->update(frame);
-  renderer_->draw(view_, projection_, camera_eye(camera_), layers(), framebuffer_width - left_width,
-                  framebuffer_height, pixel_ratio, left_width);
+  renderer_->draw(view_, projection_, camera_eye(camera_), layers(),
+                  std::min(left_width, framebuffer_width - left_x - left_width), framebuffer_height,
+                  pixel_ratio, left_x + left_width);
 }
 
 ViewLayers Viewer::layers() const {

@@ -108,8 +108,12 @@ class Viewer {
     scene_.notes.push_back(what);
     notices_.post(what, notice_clock());
   }
-  // The on-screen confirmations of what was written.
+  // The on-screen confirmations of what was written, and what a scene does as it opens (its
+  // wind blowing, and the key that turns it off).
   const Notices& notices() const { return notices_; }
+  // Draw the notices (the window); headless images never show them, so that they do not
+  // depend on the wall clock.
+  void show_notices(bool on) { show_notices_ = on; }
   // What the scene picker lists, in its order.
   const std::vector<std::string>& scene_labels() const { return scene_labels_; }
   // Whether the window is to write each new state drawn as a PNG (the panel's "record", F9),
@@ -263,6 +267,13 @@ class Viewer {
   void advance_student();
   void restart_student();
   void draw_student_legend(float ui_scale);
+  // Split, the part of a window `window` wide that the two sides share (window units): what
+  // the panel and the plots leave, in two halves of `half` from `left`; the whole window when
+  // that part is too narrow to see anything in.
+  struct SplitArea {
+    float left = 0.0f, half = 0.0f;
+  };
+  SplitArea split_area(float window) const;
   void place_ground();
   // viewer_camera.cpp: the scene's opening view (its own camera, or a framing at the next
   // render), the view O restores, and framing with room to move beside the panel.
@@ -292,7 +303,8 @@ class Viewer {
   std::optional<OrbitCamera> scene_camera_;
   float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
   CameraLimits camera_limits_;
-  PanelPlace panel_place_;  // where build_ui last drew the panel; not shown without a panel
+  PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
+  float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
   // One batch of steps: what it was asked for, and what it left for finish_batch.
   struct Batch {
     int steps = 0;
@@ -325,6 +337,7 @@ class Viewer {
   bool quit_ = false;
   bool screenshot_requested_ = false;
   Notices notices_;
+  bool show_notices_ = false;
   std::string recording_status_;
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
   StepTiming last_timing_;                       // the last good step's

@@ -1,8 +1,8 @@
 // The viewer's colouring by a quantity (spring strain, vertex speed, contacts) and its legend.
 #include <algorithm>
 
-#include "ui/color_legend.h"
 #include "app/viewer/viewer.h"
+#include "ui/color_legend.h"
 
 namespace wobble {
 

@@ -5,8 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "ui/side_labels.h"
 #include "app/viewer/viewer.h"
+#include "ui/side_labels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
 
 namespace wobble {
 
@@ -29,9 +33,11 @@ void Viewer::start_split(const CompareSettings& settings) {
   sync_twin();
   show_twin_in_panel();
   panel_.split = true;
-  // A shape framed beside the panel would sit off centre in both halves, the right one too,
-  // which the panel does not cover: each half shows it in its middle.
+  // A shape framed beside the panel (or by the scene's own camera, made for the whole window)
+  // would sit off centre in both halves: each half frames it in its middle, from the same
+  // direction.
   camera_.lens_shift.setZero();
+  frame_on_next_render_ = true;
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
   arrays_stale_ = true;  // the right side's arrays fill at the next refresh or render
@@ -39,6 +45,7 @@ void Viewer::start_split(const CompareSettings& settings) {
 
 void Viewer::stop_split() {
   twin_.reset();
+  frame_on_next_render_ = true;  // the whole window again, beside the panel
   twin_warning_.clear();
   panel_.split = false;
 }
@@ -161,7 +168,22 @@ void Viewer::draw_overlays(float ui_scale) {
   labels.left = shown_left_label_;
   labels.right = shown_right_label_;
   labels.right_warning = shown_twin_warning_;
+  const SplitArea area = split_area(ImGui::GetIO().DisplaySize.x);
+  labels.area_left = area.left;
+  labels.half = area.half;
   draw_side_labels(labels, ui_scale);
+}
+
+Viewer::SplitArea Viewer::split_area(float window) const {
+  float left = panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f;
+  float right = instruments_left_ >= 0.0f ? std::min(window, instruments_left_) : window;
+  // Two halves narrower than a sixth of the window each show too little: then the whole
+  // window, the panel and plots over it as before.
+  if (right - left < window / 3.0f) {
+    left = 0.0f;
+    right = window;
+  }
+  return SplitArea{left, 0.5f * (right - left)};
 }
 
 void Viewer::describe_sides() {

@@ -5,8 +5,8 @@
 
 #include "app/interaction/environment_controls.h"
 #include "app/interaction/ground_placement.h"
-#include "sim/value_limits.h"
 #include "app/viewer/viewer.h"
+#include "sim/value_limits.h"
 
 namespace wobble {
 

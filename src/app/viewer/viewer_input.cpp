@@ -32,12 +32,16 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
                            bool ui_wants_keyboard, const Eigen::Vector2f& window_size) {
   // Split, each half is a view of its own under the same camera: a cursor in the right half
   // picks and drags as at the same place in the left (pins and drags are shared).
-  window_size_ = twin_ ? Eigen::Vector2f(0.5f * window_size.x(), window_size.y()) : window_size;
+  const SplitArea area = split_area(window_size.x());
+  window_size_ = twin_ ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
   cursor_over_ui_ = ui_wants_mouse;
   for (const InputEvent& event : events) {
     const Eigen::Vector2f raw(static_cast<float>(event.x), static_cast<float>(event.y));
     Eigen::Vector2f at = raw;
-    if (twin_ && at.x() >= window_size_.x()) at.x() -= window_size_.x();
+    if (twin_) {
+      at.x() -= area.left;
+      if (at.x() >= area.half) at.x() -= area.half;
+    }
     switch (event.type) {
       case InputEvent::Type::key_press:
         if (!ui_wants_keyboard) apply(command_for_key(event.code, event.control));

@@ -2,9 +2,11 @@
 // recorded only while their windows are open (or a CSV asks for them).
 #include <algorithm>
 
+#include "app/viewer/viewer.h"
 #include "sim/instruments/frame_energy.h"
 #include "ui/instrument_windows.h"
-#include "app/viewer/viewer.h"
+
+#include <imgui.h>
 
 namespace wobble {
 
@@ -64,6 +66,12 @@ void Viewer::clear_instruments() {
 }
 
 void Viewer::show_instruments(float ui_scale) {
+  // The plots stand in a column at the window's right (instrument_windows.h); a split view
+  // keeps left of it.
+  const float display = ImGui::GetIO().DisplaySize.x;
+  instruments_left_ = panel_.show_convergence || panel_.show_energy
+                          ? display - instrument_column_width(display, ui_scale) - 10.0f * ui_scale
+                          : -1.0f;
   if (panel_.show_convergence) {
     ConvergencePlotData data;
     data.energy = &shown_trace_.energy;

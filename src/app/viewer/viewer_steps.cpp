@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <utility>
 
-#include "sim/instruments/frame_energy.h"
 #include "app/viewer/step_advice.h"
 #include "app/viewer/viewer.h"
+#include "sim/instruments/frame_energy.h"
 
 namespace wobble {
 

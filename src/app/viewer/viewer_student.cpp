@@ -5,8 +5,8 @@
 #include <algorithm>
 
 #include "app/viewer/quantity_colors.h"
-#include "ui/color_legend.h"
 #include "app/viewer/viewer.h"
+#include "ui/color_legend.h"
 
 namespace wobble {
 
