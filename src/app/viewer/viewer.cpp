@@ -148,7 +148,7 @@ void Viewer::load(Scene scene) {
   mode_ = Mode::idle;
   scene_ = std::move(scene);
   simulation_ = std::move(simulation);
-  clear_instruments();
+  instruments_.clear();
   update_recording();
   if (scene_.params.wind.on) {
     notices_.post("the wind blows in " + scene_.name + ": W turns it off and on", notice_clock());

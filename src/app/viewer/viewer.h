@@ -16,6 +16,7 @@
 #include "app/interaction/input_mapping.h"
 #include "app/interaction/vertex_drag.h"
 #include "app/student/student_step.h"
+#include "app/viewer/instruments.h"
 #include "app/viewer/moving_median.h"
 #include "app/viewer/notices.h"
 #include "app/viewer/quantity_colors.h"
@@ -31,13 +32,6 @@
 #include "ui/control_panel.h"
 
 namespace wobble {
-
-// The energy plot's samples, one a step, over the last seconds of simulated time.
-struct EnergyHistory {
-  std::vector<double> time, kinetic, spring, gravity, total;  // s, J
-  void add(double time, const FrameEnergy& energy);
-  void clear();
-};
 
 // How the viewer starts: overrides of the scene's parameters, and what to show.
 struct ViewerSettings {
@@ -249,7 +243,6 @@ class Viewer {
   void apply_environment_settings();
   // viewer_instruments.cpp: the convergence and energy plots.
   void update_recording();
-  void clear_instruments();
   void show_instruments(float ui_scale);
   // viewer_compare.cpp: the split view.
   void start_split(const CompareSettings& settings);
@@ -344,10 +337,7 @@ class Viewer {
   bool step_requested_ = false;
   std::string step_warning_;
   DragScript drag_script_;
-  bool convergence_required_ = false;
-  ConvergenceTrace shown_trace_;  // what the convergence window shows
-  long shown_trace_step_ = 0;
-  EnergyHistory energy_history_;
+  Instruments instruments_;  // the convergence and energy plots (a component)
   // The split view's right side: its simulation, how much simulated time it is behind the
   // left, why it stopped (empty while it runs), and its vertex arrays.
   std::unique_ptr<Simulation> twin_;

@@ -168,7 +168,7 @@ void Viewer::apply(ViewerCommand command) {
         collider_drag_.cancel();  // reset puts the colliders back
         simulation_->reset();
         reset_twin();
-        clear_instruments();
+        instruments_.clear();
         drag_script_.restart();
         step_warning_.clear();
       });

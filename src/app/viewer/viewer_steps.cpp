@@ -101,12 +101,7 @@ void Viewer::finish_batch() {
     global_ms_.add(static_cast<float>(timing.global_ms));
   }
   if (!batch_.timings.empty()) last_timing_ = batch_.timings.back();
-  if (batch_.trace_step > 0) {
-    std::swap(shown_trace_, batch_.trace);
-    shown_trace_step_ = batch_.trace_step;
-  }
-  for (const auto& [time, energy] : batch_.energy)
-    energy_history_.add(time, energy);
+  instruments_.take(batch_.trace, batch_.trace_step, batch_.energy);
   if (batch_.steps_taken > 0) step_warning_.clear();
   if (batch_.status != StepStatus::ok) {
     panel_.paused = true;
