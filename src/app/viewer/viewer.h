@@ -22,6 +22,7 @@
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/step_pacer.h"
 #include "app/viewer/step_thread.h"
+#include "app/viewer/view_camera.h"
 #include "io/png_image.h"
 #include "platform/input_event.h"
 #include "render/camera.h"
@@ -205,9 +206,9 @@ class Viewer {
   const std::string& step_warning() const { return step_warning_; }
   const Simulation& simulation() const { return *simulation_; }
   const Scene& scene() const { return scene_; }
-  const OrbitCamera& camera() const { return camera_; }
+  const OrbitCamera& camera() const { return view_camera_.camera(); }
   // How far the mouse may take the camera, for this scene's shape and ground.
-  const CameraLimits& camera_limits() const { return camera_limits_; }
+  const CameraLimits& camera_limits() const { return view_camera_.limits(); }
   // Panel figures that do not come from the wall clock, as of the state drawn.
   PanelStats stats() const;
   // The layers render() draws, as the panel's checkboxes show them.
@@ -268,11 +269,6 @@ class Viewer {
   };
   SplitArea split_area(float window) const;
   void place_ground();
-  // viewer_camera.cpp: the scene's opening view (its own camera, or a framing at the next
-  // render), the view O restores, and framing with room to move beside the panel.
-  void open_view();
-  void restore_opening_view();
-  void frame_camera(float aspect);
   void update_collider_mesh();
   void update_vertex_arrays();
   // viewer_colors.cpp
@@ -289,13 +285,7 @@ class Viewer {
   // faces while such a scene shows both.
   bool faceless_ = false;
   bool chosen_springs_ = false, chosen_points_ = false;
-  OrbitCamera camera_;
-  std::optional<float> settings_yaw_, settings_pitch_;  // radians, from the command line
-  bool frame_on_next_render_ = true;
-  // The view the scene opened with: its own camera, or the angles it was framed from (radians).
-  std::optional<OrbitCamera> scene_camera_;
-  float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
-  CameraLimits camera_limits_;
+  ViewCamera view_camera_;          // the camera, its opening view and framing (a component)
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
   // One batch of steps: what it was asked for, and what it left for finish_batch.

@@ -36,8 +36,8 @@ void Viewer::start_split(const CompareSettings& settings) {
   // A shape framed beside the panel (or by the scene's own camera, made for the whole window)
   // would sit off centre in both halves: each half frames it in its middle, from the same
   // direction.
-  camera_.lens_shift.setZero();
-  frame_on_next_render_ = true;
+  view_camera_.centre();
+  view_camera_.frame_next();
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
   arrays_stale_ = true;  // the right side's arrays fill at the next refresh or render
@@ -45,7 +45,7 @@ void Viewer::start_split(const CompareSettings& settings) {
 
 void Viewer::stop_split() {
   twin_.reset();
-  frame_on_next_render_ = true;  // the whole window again, beside the panel
+  view_camera_.frame_next();  // the whole window again, beside the panel
   twin_warning_.clear();
   panel_.split = false;
 }

@@ -66,7 +66,7 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
         // What the gesture does to the simulation waits for a running batch; the camera and
         // what the mouse holds are decided now, on the state drawn.
         const Ray ray = ray_at(at);
-        const Eigen::Vector3f forward = camera_forward(camera_);
+        const Eigen::Vector3f forward = camera_forward(view_camera_.camera());
         switch (gesture) {
           case MouseGesture::grab_collider:
             mouse_holds_ = true;
@@ -120,16 +120,16 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
           });
         }
         if (mode_ == Mode::orbit) {
-          orbit_camera(camera_, delta.x(), delta.y(), window_size_.y(), camera_limits_);
+          view_camera_.orbit(delta.x(), delta.y(), window_size_.y());
         }
         if (mode_ == Mode::pan) {
-          pan_camera(camera_, delta.x(), delta.y(), window_size_.y(), camera_limits_);
+          view_camera_.pan(delta.x(), delta.y(), window_size_.y());
         }
         cursor_ = at;
         break;
       }
       case InputEvent::Type::scroll:
-        if (!ui_wants_mouse) zoom_camera(camera_, static_cast<float>(event.y), camera_limits_);
+        if (!ui_wants_mouse) view_camera_.zoom(static_cast<float>(event.y));
         break;
     }
   }
@@ -138,9 +138,10 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
 void Viewer::save_scene() {
   const std::string path = unused_file_name(".", "wobble-" + scene_.name + "-scene", ".json");
   try {
-    const Eigen::Vector3d eye = camera_eye(camera_).cast<double>();
-    save_current_scene(path, scene_, *simulation_,
-                       std::make_pair(eye, Eigen::Vector3d(camera_.target.cast<double>())));
+    const Eigen::Vector3d eye = camera_eye(view_camera_.camera()).cast<double>();
+    save_current_scene(
+        path, scene_, *simulation_,
+        std::make_pair(eye, Eigen::Vector3d(view_camera_.camera().target.cast<double>())));
     // The picker offers it from now on, under its own name.
     if (std::find(scene_sources_.begin(), scene_sources_.end(), path) == scene_sources_.end()) {
       scene_sources_.push_back(path);
@@ -210,10 +211,10 @@ void Viewer::apply(ViewerCommand command) {
       panel_.show_help = !panel_.show_help;
       break;
     case ViewerCommand::frame_mesh:
-      frame_on_next_render_ = true;
+      view_camera_.frame_next();
       break;
     case ViewerCommand::default_view:
-      restore_opening_view();
+      view_camera_.restore_opening_view();
       break;
     case ViewerCommand::quit:
       quit_ = true;

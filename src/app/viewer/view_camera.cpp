@@ -1,14 +1,20 @@
 // The viewer's camera: the view a scene opens with, framing (on load, F and O), and the limits
 // that keep the mouse from taking the camera under the ground, into the shape or far away.
+#include "app/viewer/view_camera.h"
+
 #include <algorithm>
 #include <cmath>
 
 #include "app/interaction/view_framing.h"
-#include "app/viewer/viewer.h"
 
 namespace wobble {
 
 namespace {
+
+constexpr float degrees = 3.14159265358979f / 180.0f;
+// The view a scene opens with: from the front right, a little above.
+constexpr float default_yaw = 30.0f * degrees;
+constexpr float default_pitch = 20.0f * degrees;
 
 void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Vector3f& upper) {
   lower = upper = Eigen::Vector3f::Zero();
@@ -21,10 +27,15 @@ void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Ve
 
 }  // namespace
 
-void Viewer::open_view() {
-  frame_on_next_render_ = true;
+ViewCamera::ViewCamera(std::optional<float> yaw, std::optional<float> pitch) : start_yaw_(yaw) {
+  if (pitch) start_pitch_ = std::clamp(*pitch, -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
+  camera_.yaw = start_yaw_.value_or(default_yaw);
+  camera_.pitch = start_pitch_.value_or(default_pitch);
+}
+
+void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float ground_height) {
+  frame_pending_ = true;
   scene_camera_.reset();
-  const SceneLook& look = scene_.look;
   if (look.camera_position && look.camera_target) {
     // The scene's own view replaces the framing; --camera-yaw/--camera-pitch still turn it.
     const Eigen::Vector3f eye = look.camera_position->cast<float>();
@@ -36,50 +47,58 @@ void Viewer::open_view() {
     camera_.pitch = std::clamp(std::asin(std::clamp(back.y() / camera_.distance, -1.0f, 1.0f)),
                                -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
     camera_.lens_shift.setZero();
-    if (settings_yaw_) camera_.yaw = *settings_yaw_;
-    if (settings_pitch_) camera_.pitch = *settings_pitch_;
+    if (start_yaw_) camera_.yaw = *start_yaw_;
+    if (start_pitch_) camera_.pitch = *start_pitch_;
     scene_camera_ = camera_;
-    frame_on_next_render_ = false;
+    frame_pending_ = false;
   }
   opening_yaw_ = camera_.yaw;
   opening_pitch_ = camera_.pitch;
   // The limits scale with the shape at rest, which is what the opening view frames; a shape
   // stretched far later still gets the same room to zoom.
-  const Eigen::MatrixXd& V = scene_.network.V;
   const float radius =
-      V.rows() > 0
-          ? 0.5f * static_cast<float>((V.colwise().maxCoeff() - V.colwise().minCoeff()).norm())
+      rest.rows() > 0
+          ? 0.5f *
+                static_cast<float>((rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm())
           : 1.0f;
-  camera_limits_ = camera_limits_for(radius, ground_.height);
+  limits_ = camera_limits_for(radius, ground_height);
 }
 
-void Viewer::restore_opening_view() {
+void ViewCamera::restore_opening_view() {
   if (scene_camera_) {
     camera_ = *scene_camera_;
-    frame_on_next_render_ = false;
+    frame_pending_ = false;
     return;
   }
   camera_.yaw = opening_yaw_;
   camera_.pitch = opening_pitch_;
-  frame_on_next_render_ = true;
+  frame_pending_ = true;
 }
 
-void Viewer::frame_camera(float aspect) {
+void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
+                       const ViewportRegion& region, float aspect) {
+  if (!frame_pending_) return;
   Eigen::Vector3f lower, upper;
-  bounds(positions_.data(), static_cast<int>(positions_.size() / 3), lower, upper);
+  bounds(positions.data(), static_cast<int>(positions.size() / 3), lower, upper);
   // Always with room to move, on load and on F alike: F right after R sees the flat cloth it
   // is about to drop, and a tight frame around it loses the cloth within a second. Where a
   // shape will go is known only roughly, but the ground bounds it below, and the box still
   // holds the shape wherever it is now (thrown high, the frame only grows).
-  add_room_to_move(lower, upper, ground_.height);
-  // Split, the panel covers only the left side, but both sides share one camera: each is framed
-  // whole.
-  const ViewportRegion region = panel_place_.shown && !twin_
-                                    ? region_beside_panel(window_size_.x(), panel_place_.x,
-                                                          panel_place_.x + panel_place_.width)
-                                    : ViewportRegion();
+  add_room_to_move(lower, upper, ground_height);
   frame_box(camera_, lower, upper, aspect, region);
-  frame_on_next_render_ = false;
+  frame_pending_ = false;
+}
+
+void ViewCamera::orbit(float dx, float dy, float view_height) {
+  orbit_camera(camera_, dx, dy, view_height, limits_);
+}
+
+void ViewCamera::pan(float dx, float dy, float view_height) {
+  pan_camera(camera_, dx, dy, view_height, limits_);
+}
+
+void ViewCamera::zoom(float wheel) {
+  zoom_camera(camera_, wheel, limits_);
 }
 
 }  // namespace wobble

@@ -1,0 +1,57 @@
+#ifndef WOBBLE_APP_VIEWER_VIEW_CAMERA_H
+#define WOBBLE_APP_VIEWER_VIEW_CAMERA_H
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "render/camera.h"
+#include "sim/scene.h"
+
+namespace wobble {
+
+// The viewer's camera, a component of the viewer: the view a scene opens with (its own camera,
+// or a framing from the command line's angles or the default ones), framing on load, F and O,
+// and the limits that keep the mouse from taking the camera under the ground, into the shape
+// or far away. It owns its state; the viewer asks it to open a scene, to frame, and to move.
+class ViewCamera {
+ public:
+  // The angles every scene opens from (radians), from --camera-yaw and --camera-pitch; unset,
+  // from the front right, a little above.
+  ViewCamera(std::optional<float> yaw, std::optional<float> pitch);
+
+  // A scene opens: its own view if it has one (the angles above still turn it), else a framing
+  // at the next frame(). `rest` is #V by 3 (m); `ground_height` (m) bounds the limits.
+  void open(const SceneLook& look, const Eigen::MatrixXd& rest, float ground_height);
+  // O: the view the scene opened with.
+  void restore_opening_view();
+  // F, a new split or its end: frame at the next frame().
+  void frame_next() { frame_pending_ = true; }
+  // Centre the view on the shape (a split view's halves), keeping the direction.
+  void centre() { camera_.lens_shift.setZero(); }
+  // If a framing is pending: the shape at `positions` (#V by 3 floats, m) with room to move
+  // down to `ground_height`, in `region` of a view of `aspect` (width / height).
+  void frame(const std::vector<float>& positions, float ground_height, const ViewportRegion& region,
+             float aspect);
+
+  // The mouse: deltas in window units, over a view `view_height` tall.
+  void orbit(float dx, float dy, float view_height);
+  void pan(float dx, float dy, float view_height);
+  void zoom(float wheel);
+
+  const OrbitCamera& camera() const { return camera_; }
+  const CameraLimits& limits() const { return limits_; }
+
+ private:
+  OrbitCamera camera_;
+  std::optional<float> start_yaw_, start_pitch_;  // radians, from the command line
+  bool frame_pending_ = true;
+  // The view the scene opened with: its own camera, or the angles it was framed from.
+  std::optional<OrbitCamera> scene_camera_;
+  float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;
+  CameraLimits limits_;
+};
+
+}  // namespace wobble
+
+#endif

@@ -1,0 +1,158 @@
+// The viewer's drawing: the renderer's topology and colours for a scene, the plain arrays it
+// draws from, and the frame, whole or split into two sides beside the panel and the plots.
+#include <algorithm>
+#include <cmath>
+
+#include "app/interaction/view_framing.h"
+#include "app/viewer/viewer.h"
+#include "render/vertex_normals.h"
+
+namespace wobble {
+
+namespace {
+
+// Cloth is orange in front and blue behind; a solid shows only its outside. A scene may choose.
+SurfaceColors colors_for(const Scene& scene) {
+  SurfaceColors colors;
+  if (scene.name == "jelly") colors.front = Eigen::Vector3f(0.45f, 0.76f, 0.34f);
+  if (scene.look.front_color) colors.front = scene.look.front_color->cast<float>();
+  if (scene.look.back_color) colors.back = scene.look.back_color->cast<float>();
+  return colors;
+}
+
+}  // namespace
+
+void Viewer::attach_renderer() {
+  if (!renderer_) renderer_ = std::make_unique<Renderer>();
+  MeshTopology topology;
+  topology.vertex_count = static_cast<int>(scene_.network.V.rows());
+  topology.triangles = triangles_.data();
+  topology.triangle_count = static_cast<int>(triangles_.size() / 3);
+  topology.springs = springs_.data();
+  topology.spring_count = static_cast<int>(springs_.size() / 2);
+  topology.uv = uv_.empty() ? nullptr : uv_.data();
+  renderer_->set_topology(topology);
+  renderer_->set_colors(colors_for(scene_));
+  TextureImage texture;
+  if (!texture_.pixels.empty()) {
+    texture.rgba = texture_.pixels.data();
+    texture.width = texture_.width;
+    texture.height = texture_.height;
+  }
+  renderer_->set_texture(texture);
+
+  renderer_->set_ground(ground_);
+}
+
+void Viewer::update_vertex_arrays() {
+  arrays_stale_ = false;
+  const Eigen::MatrixXd& p = simulation_->positions();
+  const int n = static_cast<int>(p.rows());
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * i + k] = static_cast<float>(p(i, k));
+    pinned_flags_[i] = simulation_->is_pinned(i) ? 1 : 0;
+  }
+  // Paused, a drag moves only the pin's target: the held vertex is drawn there, its triangles
+  // stretching towards it, so the user sees where the shape will be pulled (Step takes one step
+  // towards it). The simulation's positions are untouched.
+  if (panel_.paused && drag_.active()) {
+    const Eigen::Vector3d target = simulation_->pin_target(drag_.vertex());
+    for (int k = 0; k < 3; ++k)
+      positions_[3 * drag_.vertex() + k] = static_cast<float>(target(k));
+  }
+  compute_vertex_normals(positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), normals_.data());
+  if (!twin_) return;
+  const Eigen::MatrixXd& q = twin_->positions();
+  twin_positions_.resize(3 * n);
+  twin_normals_.resize(3 * n);
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < 3; ++k)
+      twin_positions_[3 * i + k] = static_cast<float>(q(i, k));
+  }
+  compute_vertex_normals(twin_positions_.data(), n, triangles_.data(),
+                         static_cast<int>(triangles_.size() / 3), twin_normals_.data());
+}
+
+void Viewer::render(int framebuffer_width, int framebuffer_height,
+                    const Eigen::Vector2f& window_size, float pixel_ratio) {
+  // Split, each side gets half of what the panel and the plots leave, under the same camera.
+  const SplitArea area = split_area(window_size.x());
+  window_size_ = twin_ ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
+  const int left_x = twin_ ? static_cast<int>(std::lround(area.left * pixel_ratio)) : 0;
+  const int left_width =
+      twin_ ? static_cast<int>(std::lround(area.half * pixel_ratio)) : framebuffer_width;
+  // Between batches a change made since the last refresh is read afresh (a paused drag moves
+  // the drawn pin); while a batch runs, the state it started from is drawn.
+  if (!batch_started_ && arrays_stale_) update_vertex_arrays();
+  const int n = static_cast<int>(positions_.size() / 3);
+  const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
+  // Split, both sides share one camera and each is framed whole; else the shape is framed
+  // beside the panel.
+  const ViewportRegion region = panel_place_.shown && !twin_
+                                    ? region_beside_panel(window_size_.x(), panel_place_.x,
+                                                          panel_place_.x + panel_place_.width)
+                                    : ViewportRegion();
+  view_camera_.frame(positions_, ground_.height, region, aspect);
+  const OrbitCamera& camera = view_camera_.camera();
+  view_ = view_matrix(camera);
+  projection_ = projection_matrix(camera, aspect);
+
+  // The pin under the cursor and the vertex being held are highlighted.
+  hovered_pin_ = (mode_ == Mode::idle && !mouse_holds_ && !cursor_over_ui_)
+                     ? pick(cursor_, /*pinned_only=*/true)
+                     : -1;
+  for (int i = 0; i < n; ++i)
+    marks_[i] = pinned_flags_[i];
+  if (hovered_pin_ >= 0) marks_[hovered_pin_] = 2;
+  if (drag_.active()) marks_[drag_.vertex()] = 2;
+
+  update_collider_mesh();
+  if (!renderer_) return;
+  SolidMesh solids;
+  solids.positions = collider_mesh_.positions.data();
+  solids.normals = collider_mesh_.normals.data();
+  solids.vertex_count = collider_mesh_.vertex_count();
+  solids.triangles = collider_mesh_.triangles.data();
+  solids.triangle_count = collider_mesh_.triangle_count();
+  renderer_->set_solids(solids);
+  MeshFrame frame;
+  frame.positions = positions_.data();
+  frame.normals = normals_.data();
+  frame.marks = marks_.data();
+  add_quantity_colors(quantity_colors_, frame);
+  renderer_->update(frame);
+  if (twin_ && area.left > 0.0f) {
+    // The strips the two sides leave (under the panel and the plots) get the background alone.
+    renderer_->draw(view_, projection_, camera_eye(camera),
+                    ViewLayers{false, false, false, false, false, false}, framebuffer_width,
+                    framebuffer_height, pixel_ratio);
+  }
+  renderer_->draw(view_, projection_, camera_eye(camera), layers(), left_width, framebuffer_height,
+                  pixel_ratio, left_x);
+  if (!twin_) return;
+  frame.positions = twin_positions_.data();
+  frame.normals = twin_normals_.data();
+  add_quantity_colors(twin_colors_, frame);
+  if (student_ && shown_student_colors_.size() == twin_positions_.size()) {
+    frame.vertex_colors = shown_student_colors_.data();
+  }
+  renderer_->update(frame);
+  renderer_->draw(view_, projection_, camera_eye(camera), layers(),
+                  std::min(left_width, framebuffer_width - left_x - left_width), framebuffer_height,
+                  pixel_ratio, left_x + left_width);
+}
+
+ViewLayers Viewer::layers() const {
+  ViewLayers layers;
+  layers.surface = panel_.surface;
+  layers.wireframe = panel_.wireframe;
+  layers.springs = panel_.springs;
+  layers.points = panel_.points;
+  layers.ground = panel_.ground;
+  layers.solids = panel_.colliders;
+  return layers;
+}
+
+}  // namespace wobble
