@@ -251,3 +251,38 @@ TEST(HeadlessRender, WithoutEglItExitsWithOneLineSayingWhatToInstall) {
 }
 
 }  // namespace
+
+// The split view shares what the panel leaves: the left side's cloth shows beside the panel as
+// whole as the right side's, not under it (at 1280x720 the panel took most of the left half).
+TEST(HeadlessRender, SplitViewSidesShowBesideThePanel) {
+  TemporaryFolder folder;
+  const auto run = run_wobble(
+      "cloth --headless --frames 2 --ui --compare iterations=5 --width "
+      "1280 --height 720 --screenshot '" +
+          folder.file("split.png") + "'",
+      no_display);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const wobble::RgbaImage image = wobble::read_png(folder.file("split.png"));
+  // The line between the sides: the column that is light grey from top to bottom.
+  int divider = -1;
+  for (int x = 0; x < image.width && divider < 0; ++x) {
+    int light = 0;
+    for (int y = 0; y < image.height; ++y) {
+      const unsigned char* p = image.pixel(x, y);
+      if (p[0] > 200 && p[1] > 200 && p[2] > 200) ++light;
+    }
+    if (light > image.height * 9 / 10) divider = x;
+  }
+  ASSERT_GT(divider, 0) << "no line between the sides";
+  // Right of the middle: the panel (about 340 wide) leaves [340, 1280), split at 810.
+  EXPECT_GT(divider, image.width / 2 + 80);
+  long left = 0, right = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      if (!wobble::testing::is_cloth_front(image.pixel(x, y))) continue;
+      (x < divider ? left : right) += 1;
+    }
+  }
+  EXPECT_GT(right, 2000);
+  EXPECT_GT(left, right * 7 / 10) << "left " << left << ", right " << right;
+}
