@@ -31,8 +31,8 @@ EXTERNAL = re.compile(r"^(?:[a-zA-Z][a-zA-Z0-9+.-]*:|//)")  # http:, https:, mai
 LINE_ANCHOR = re.compile(r"^L\d+(?:-L\d+)?$")  # GitHub's line anchors in a source file
 
 
-def prose_lines(text):
-    """Yield (line number, line) outside fenced code blocks, with inline code blanked."""
+def outside_fences(text):
+    """Yield (line number, line) for the lines outside fenced code blocks."""
     fence = None
     for number, line in enumerate(text.splitlines(), start=1):
         match = FENCE.match(line)
@@ -43,6 +43,12 @@ def prose_lines(text):
             if match and match.group(1)[0] == fence[0] and len(match.group(1)) >= len(fence):
                 fence = None
             continue
+        yield number, line
+
+
+def prose_lines(text):
+    """Yield (line number, line) outside fenced code blocks, with inline code blanked."""
+    for number, line in outside_fences(text):
         yield number, INLINE_CODE.sub(lambda m: " " * len(m.group(0)), line)
 
 
@@ -68,16 +74,7 @@ def anchors_of(path):
             text = file.read()
         found = set()
         counts = {}
-        fence = None
-        for line in text.splitlines():
-            match = FENCE.match(line)
-            if fence is None and match:
-                fence = match.group(1)
-                continue
-            if fence is not None:
-                if match and match.group(1)[0] == fence[0] and len(match.group(1)) >= len(fence):
-                    fence = None
-                continue
+        for _, line in outside_fences(text):
             heading = HEADING.match(line)
             if heading:
                 base = anchor(heading.group(2))
