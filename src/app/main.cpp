@@ -4,11 +4,11 @@
 #include <iostream>
 
 #include "app/cli/command_line.h"
-#include "io/atomic_file.h"
+#include "app/cli/thread_setting.h"
 #include "app/headless/run_headless.h"
 #include "app/viewer/run_window.h"
+#include "io/atomic_file.h"
 #include "sim/input_error.h"
-#include "app/cli/thread_setting.h"
 
 int main(int argc, char** argv) {
   // A run ended by SIGTERM or Ctrl+C leaves no half-written *.tmp-XXXXXX file behind.

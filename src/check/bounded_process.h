@@ -13,8 +13,8 @@
 //
 // Who uses it: bounded_run.h (the launcher, bounded_main.cpp, that scripts/check-assignment.sh
 // puts in front of every compiler and checker it runs), child_process.cpp (each check),
-// src/app/student/student_step.cpp (the step server) and src/app/student/student_server.cpp (the script itself,
-// from wobble --student).
+// src/app/student/student_step.cpp (the step server) and src/app/student/student_server.cpp (the
+// script itself, from wobble --student).
 
 // Limits of one process and each process it starts (they inherit them). 0: no limit.
 struct ProcessLimits {

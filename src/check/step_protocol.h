@@ -3,8 +3,8 @@
 
 #include <cstdint>
 
-// The messages between the viewer (wobble::StudentStep, src/app/student/student_step.h) and the step
-// server (step_server_main.cpp, built by scripts/check-assignment.sh --build-step-server) over
+// The messages between the viewer (wobble::StudentStep, src/app/student/student_step.h) and the
+// step server (step_server_main.cpp, built by scripts/check-assignment.sh --build-step-server) over
 // the server's stdin and stdout. Every number is little-endian: int32 counts and indices,
 // IEEE doubles; matrices go row by row (x, y, z of vertex 0, then of vertex 1, ...).
 //

@@ -6,9 +6,9 @@
 #include <ostream>
 #include <sstream>
 
-#include "io/output_target.h"
 #include "app/cli/parse_number.h"
 #include "app/cli/scene_catalog.h"
+#include "io/output_target.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
 #include "sim/shapes/builtin_scenes.h"

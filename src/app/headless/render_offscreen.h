@@ -5,10 +5,10 @@
 
 #include "app/headless/image_outputs.h"
 #include "app/headless/instrument_csv.h"
-#include "io/png_image.h"
 #include "app/headless/obj_sequence.h"
 #include "app/headless/run_statistics.h"
 #include "app/viewer/viewer.h"
+#include "io/png_image.h"
 
 namespace wobble {
 

@@ -7,18 +7,18 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/interaction/drag_script.h"
+#include "app/cli/scene_catalog.h"
 #include "app/headless/image_outputs.h"
 #include "app/headless/instrument_csv.h"
-#include "io/atomic_file.h"
-#include "io/write_obj.h"
 #include "app/headless/obj_sequence.h"
 #include "app/headless/render_offscreen.h"
 #include "app/headless/run_statistics.h"
-#include "app/cli/scene_catalog.h"
+#include "app/interaction/drag_script.h"
+#include "app/viewer/viewer.h"
+#include "io/atomic_file.h"
+#include "io/write_obj.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "app/viewer/viewer.h"
 
 namespace wobble {
 

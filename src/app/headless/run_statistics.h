@@ -21,9 +21,9 @@ struct StepTimes {
 double median(std::vector<double> values);
 
 // --stats: the scene, the simulation's settings and factor, and the step times' medians (the
-// docs/command-line.md lists the keys under --stats), with self-collision's: whether it is on, its thickness (m), the last
-// step's self contacts and the medians of its detection and response times. Headless adds the
-// render time, the window the UI's frame time.
+// docs/command-line.md lists the keys under --stats), with self-collision's: whether it is on, its
+// thickness (m), the last step's self contacts and the medians of its detection and response times.
+// Headless adds the render time, the window the UI's frame time.
 nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene& scene, long frames,
                                       const StepTimes& times);
 

@@ -54,7 +54,8 @@ enum class MouseGesture {
 MouseGesture gesture_for_press(int button, bool control, bool shift, bool over_ui, bool over_pin,
                                bool over_vertex, bool alt = false, bool over_collider = false);
 
-// Every key and mouse action, for the help overlay and docs/viewer.md ("Mouse and keys"): {input, what it does}.
+// Every key and mouse action, for the help overlay and docs/viewer.md ("Mouse and keys"): {input,
+// what it does}.
 struct Binding {
   std::string input;
   std::string action;

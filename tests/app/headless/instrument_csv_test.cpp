@@ -6,9 +6,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "../run_wobble.h"
 #include "io/load_scene.h"
 #include "io/read_obj.h"
-#include "../run_wobble.h"
 
 namespace {
 

@@ -7,10 +7,10 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
-#include "app/interaction/picking.h"
-#include "app/viewer/viewer.h"
 #include "../headless_imgui.h"
 #include "../viewer_screen.h"
+#include "app/interaction/picking.h"
+#include "app/viewer/viewer.h"
 
 namespace {
 
