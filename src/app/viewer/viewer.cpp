@@ -60,7 +60,8 @@ ViewerSettings viewer_settings(const CommandLine& command) {
 
 Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources)
     : scene_sources_(std::move(scene_sources)),
-      view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees)) {
+      view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees)),
+      right_(settings.student_server) {
   for (const std::string& source : scene_sources_)
     scene_labels_.push_back(scene_label(source));
   if (settings.k) scene.params.k = *settings.k;
@@ -74,10 +75,9 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.ground = settings.layers.ground;
   panel_.color_by = static_cast<int>(settings.color_by);
   panel_.show_convergence = panel_.show_energy = settings.plots;
-  student_server_ = settings.student_server;
   load(std::move(scene));
   drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
-  if (settings.compare && !student_) start_split(*settings.compare);
+  if (settings.compare && !right_.student()) start_split(*settings.compare);
 }
 
 Viewer::~Viewer() = default;
@@ -106,7 +106,7 @@ void Viewer::load(Scene scene) {
   // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
   // was.
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
-  if (!student_server_.empty()) {
+  if (right_.wants_student()) {
     scene.params = seed_method(scene.params);
     const std::string note =
         "student mode: Wobble's side (left) takes the seed's step, 50 plain "
@@ -121,9 +121,8 @@ void Viewer::load(Scene scene) {
       std::make_unique<Simulation>(scene.network, scene.pins, scene.params, scene.initial_velocity);
   // A split view stays split, its right side keeping its own settings on the new scene.
   std::optional<CompareSettings> split;
-  if (twin_ && !student_) split = twin_settings();
-  twin_.reset();
-  student_.reset();
+  if (right_.simulation() && !right_.student()) split = right_.settings();
+  right_.stop();
   drag_.cancel();
   collider_drag_.cancel();
   mouse_holds_ = false;
@@ -194,7 +193,7 @@ void Viewer::load(Scene scene) {
   }
   texture_ = std::move(texture);
   if (split) start_split(*split);
-  if (!student_server_.empty()) start_student();
+  if (right_.wants_student()) start_student();
   arrays_stale_ = true;  // the split view's side, if any, is drawn from the next render
   copy_shown_figures();
   if (renderer_) attach_renderer();
@@ -309,7 +308,7 @@ PanelStats Viewer::simulation_stats() const {
   stats.contacts = simulation_->contact_count();
   stats.self_collision = simulation_->params().self_collision.on;
   stats.self_contacts = simulation_->self_contact_count();
-  stats.student_side = student_ != nullptr;
+  stats.student_side = right_.student();
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
   stats.warning = step_warning_;
   return stats;

@@ -20,6 +20,7 @@
 #include "app/viewer/moving_median.h"
 #include "app/viewer/notices.h"
 #include "app/viewer/quantity_colors.h"
+#include "app/viewer/right_side.h"
 #include "app/viewer/step_pacer.h"
 #include "app/viewer/step_thread.h"
 #include "app/viewer/view_camera.h"
@@ -49,10 +50,6 @@ struct ViewerSettings {
   // empty. The split view then shows the student's sparse step on the right.
   std::string student_server;
 };
-
-// The parameters under which Wobble's step is the seed's fast_mass_springs_step_sparse: 50 plain
-// iterations from pᵗ, no damping, wind or colliders (the left side of wobble --student).
-SimulationParams seed_method(SimulationParams params);
 
 // The start-up settings a command line asks for.
 ViewerSettings viewer_settings(const CommandLine& command);
@@ -178,9 +175,11 @@ class Viewer {
   // these. Between ImGui's NewFrame and Render.
   void draw_overlays(float ui_scale);
   // Whether draw_overlays has anything to draw.
-  bool has_overlays() const { return twin_ || panel_.show_convergence || panel_.show_energy; }
+  bool has_overlays() const {
+    return right_.simulation() || panel_.show_convergence || panel_.show_energy;
+  }
   // The split view's right side, or null when the view is not split.
-  const Simulation* right_side() const { return twin_.get(); }
+  const Simulation* right_side() const { return right_.simulation(); }
   // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.
   const std::string& right_side_warning() const { return shown_twin_warning_; }
   // With a student's step on the right: its largest distance from Wobble's positions after the
@@ -248,18 +247,11 @@ class Viewer {
   // viewer_compare.cpp: the split view.
   void start_split(const CompareSettings& settings);
   void stop_split();
-  void show_twin_in_panel();
-  CompareSettings twin_settings() const;
   void apply_split_settings();
-  void sync_twin();
-  void advance_twin(double seconds);
-  void reset_twin();
   // The split view's corner labels for the state drawn.
   void describe_sides();
   // viewer_student.cpp: a student's step on the right.
   void start_student();
-  void advance_student();
-  void restart_student();
   void draw_student_legend(float ui_scale);
   // Split, the part of a window `window` wide that the two sides share (window units): what
   // the panel and the plots leave, in two halves of `half` from `left`; the whole window when
@@ -328,18 +320,10 @@ class Viewer {
   std::string step_warning_;
   DragScript drag_script_;
   Instruments instruments_;  // the convergence and energy plots (a component)
-  // The split view's right side: its simulation, how much simulated time it is behind the
-  // left, why it stopped (empty while it runs), and its vertex arrays.
-  std::unique_ptr<Simulation> twin_;
-  double twin_behind_ = 0.0;
-  std::string twin_warning_;
+  // The split view's right side, or a student's step there (a component), and the arrays the
+  // renderer draws it from.
+  RightSide right_;
   std::vector<float> twin_positions_, twin_normals_;
-  // wobble --student: the server's path, the student's step, its largest distance from the left
-  // side's positions after the last step (m), and its vertices' colours by that distance.
-  std::string student_server_;
-  std::unique_ptr<StudentStep> student_;
-  double student_distance_ = 0.0;
-  std::vector<float> student_colors_;
 
   // Mouse state.
   enum class Mode { idle, orbit, pan } mode_ = Mode::idle;

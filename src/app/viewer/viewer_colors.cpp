@@ -33,7 +33,7 @@ ColorLegend contacts_legend() {
 void Viewer::update_quantity_colors() {
   // Coloured by material, this only clears what was there: no per-frame work.
   const bool springs = panel_.springs;
-  if (!twin_) {
+  if (!right_.simulation()) {
     quantity_colors_.update(color_by(), *simulation_, springs);
     // A split view opened later starts its right side's range afresh.
     if (twin_colors_.quantity() != ColorQuantity::material) twin_colors_ = QuantityColors();
@@ -41,10 +41,10 @@ void Viewer::update_quantity_colors() {
   }
   // Split, both sides share one range, so that a colour means the same on either.
   quantity_colors_.measure(color_by(), *simulation_);
-  twin_colors_.measure(color_by(), *twin_);
+  twin_colors_.measure(color_by(), *right_.simulation());
   const float range = std::max(quantity_colors_.measured_range(), twin_colors_.measured_range());
   quantity_colors_.paint(*simulation_, range, springs);
-  twin_colors_.paint(*twin_, range, springs);
+  twin_colors_.paint(*right_.simulation(), range, springs);
 }
 
 void Viewer::add_quantity_colors(const QuantityColors& colors, MeshFrame& frame) const {
@@ -59,7 +59,7 @@ void Viewer::add_quantity_colors(const QuantityColors& colors, MeshFrame& frame)
 
 void Viewer::build_legend(float ui_scale) {
   // A student's side is coloured by its distance from Wobble's, and that is what the legend says.
-  if (student_) {
+  if (right_.student()) {
     draw_student_legend(ui_scale);
     return;
   }
@@ -67,7 +67,7 @@ void Viewer::build_legend(float ui_scale) {
   if (quantity == ColorQuantity::material) return;
   LegendClearance clearance;
   clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
-  clearance.side_labels = twin_ != nullptr;
+  clearance.side_labels = right_.simulation() != nullptr;
   if (quantity == ColorQuantity::contacts) {
     draw_color_legend(contacts_legend(), ui_scale, clearance);
     return;

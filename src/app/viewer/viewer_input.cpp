@@ -33,12 +33,12 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
   // Split, each half is a view of its own under the same camera: a cursor in the right half
   // picks and drags as at the same place in the left (pins and drags are shared).
   const SplitArea area = split_area(window_size.x());
-  window_size_ = twin_ ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
+  window_size_ = right_.simulation() ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
   cursor_over_ui_ = ui_wants_mouse;
   for (const InputEvent& event : events) {
     const Eigen::Vector2f raw(static_cast<float>(event.x), static_cast<float>(event.y));
     Eigen::Vector2f at = raw;
-    if (twin_) {
+    if (right_.simulation()) {
       at.x() -= area.left;
       if (at.x() >= area.half) at.x() -= area.half;
     }
@@ -60,7 +60,7 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
                               vertex >= 0, event.alt, collider.has_value());
         // The student's step pins its vertices where they rest: with a student on the right,
         // the mouse only moves the camera.
-        if (student_ && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {
+        if (right_.student() && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {
           gesture = MouseGesture::none;
         }
         // What the gesture does to the simulation waits for a running batch; the camera and
@@ -168,7 +168,7 @@ void Viewer::apply(ViewerCommand command) {
         if (drag_.active()) drag_.cancel();
         collider_drag_.cancel();  // reset puts the colliders back
         simulation_->reset();
-        reset_twin();
+        right_.reset(scene_, *simulation_);
         instruments_.clear();
         drag_script_.restart();
         step_warning_.clear();

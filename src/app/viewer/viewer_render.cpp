@@ -63,8 +63,8 @@ void Viewer::update_vertex_arrays() {
   }
   compute_vertex_normals(positions_.data(), n, triangles_.data(),
                          static_cast<int>(triangles_.size() / 3), normals_.data());
-  if (!twin_) return;
-  const Eigen::MatrixXd& q = twin_->positions();
+  if (!right_.simulation()) return;
+  const Eigen::MatrixXd& q = right_.simulation()->positions();
   twin_positions_.resize(3 * n);
   twin_normals_.resize(3 * n);
   for (int i = 0; i < n; ++i) {
@@ -79,10 +79,12 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio) {
   // Split, each side gets half of what the panel and the plots leave, under the same camera.
   const SplitArea area = split_area(window_size.x());
-  window_size_ = twin_ ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
-  const int left_x = twin_ ? static_cast<int>(std::lround(area.left * pixel_ratio)) : 0;
-  const int left_width =
-      twin_ ? static_cast<int>(std::lround(area.half * pixel_ratio)) : framebuffer_width;
+  window_size_ = right_.simulation() ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
+  const int left_x =
+      right_.simulation() ? static_cast<int>(std::lround(area.left * pixel_ratio)) : 0;
+  const int left_width = right_.simulation()
+                             ? static_cast<int>(std::lround(area.half * pixel_ratio))
+                             : framebuffer_width;
   // Between batches a change made since the last refresh is read afresh (a paused drag moves
   // the drawn pin); while a batch runs, the state it started from is drawn.
   if (!batch_started_ && arrays_stale_) update_vertex_arrays();
@@ -90,7 +92,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   // Split, both sides share one camera and each is framed whole; else the shape is framed
   // beside the panel.
-  const ViewportRegion region = panel_place_.shown && !twin_
+  const ViewportRegion region = panel_place_.shown && !right_.simulation()
                                     ? region_beside_panel(window_size_.x(), panel_place_.x,
                                                           panel_place_.x + panel_place_.width)
                                     : ViewportRegion();
@@ -123,7 +125,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   frame.marks = marks_.data();
   add_quantity_colors(quantity_colors_, frame);
   renderer_->update(frame);
-  if (twin_ && area.left > 0.0f) {
+  if (right_.simulation() && area.left > 0.0f) {
     // The strips the two sides leave (under the panel and the plots) get the background alone.
     renderer_->draw(view_, projection_, camera_eye(camera),
                     ViewLayers{false, false, false, false, false, false}, framebuffer_width,
@@ -131,11 +133,11 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   }
   renderer_->draw(view_, projection_, camera_eye(camera), layers(), left_width, framebuffer_height,
                   pixel_ratio, left_x);
-  if (!twin_) return;
+  if (!right_.simulation()) return;
   frame.positions = twin_positions_.data();
   frame.normals = twin_normals_.data();
   add_quantity_colors(twin_colors_, frame);
-  if (student_ && shown_student_colors_.size() == twin_positions_.size()) {
+  if (right_.student() && shown_student_colors_.size() == twin_positions_.size()) {
     frame.vertex_colors = shown_student_colors_.data();
   }
   renderer_->update(frame);

@@ -86,7 +86,7 @@ void Viewer::run_batch() {
     if (batch_.record_energy) {
       batch_.energy.emplace_back(simulation_->time(), frame_energy(*simulation_));
     }
-    advance_twin(simulation_->params().dt);
+    right_.advance(*simulation_, simulation_->params().dt);
     if (step_observer_) step_observer_(*simulation_);
   }
 }
@@ -165,9 +165,9 @@ void Viewer::refresh_shown_state() {
 
 void Viewer::copy_shown_figures() {
   shown_stats_ = simulation_stats();
-  shown_twin_warning_ = twin_warning_;
-  shown_student_distance_ = student_distance_;
-  shown_student_colors_ = student_colors_;
+  shown_twin_warning_ = right_.warning();
+  shown_student_distance_ = right_.student_distance();
+  shown_student_colors_ = right_.student_colors();
   describe_sides();
 }
 

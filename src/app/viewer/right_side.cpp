@@ -1,0 +1,208 @@
+// The split view's right side: the same scene twice, left and right, each with its own
+// iterations, Chebyshev, dt and k, stepping together from the same state under the same camera;
+// or, with wobble --student, a student's fast_mass_springs_step_sparse on the right, each vertex
+// coloured by how far it is from Wobble's. The student's step runs in its own process
+// (student_step.h): a crash or an endless loop stops the right side with the reason written in
+// its corner, and the viewer goes on.
+#include "app/viewer/right_side.h"
+
+#include <algorithm>
+
+#include "app/viewer/quantity_colors.h"
+
+namespace wobble {
+
+namespace {
+
+// A right side with a much smaller dt takes several steps a frame; beyond this many it falls
+// behind instead of stalling the window.
+constexpr int max_steps_per_frame = 16;
+
+// Below this distance (m) a vertex counts as on Wobble's: rounding differences of two correct
+// implementations are far smaller, a wrong step far larger.
+constexpr double distance_floor = 1e-6;
+
+}  // namespace
+
+SimulationParams seed_method(SimulationParams params) {
+  // What fast_mass_springs_step_sparse does: 50 plain iterations from pᵗ, gravity and the pins,
+  // nothing else.
+  params.iterations = 50;
+  params.chebyshev = false;
+  params.first_iterate = FirstIterate::current_positions;
+  params.damping = 0.0;
+  params.wind.on = false;
+  params.contact.colliders.clear();
+  return params;
+}
+
+void RightSide::start_compare(const Scene& scene, const Simulation& left,
+                              const CompareSettings& settings) {
+  auto simulation = std::make_unique<Simulation>(
+      scene.network, scene.pins, settings.applied_to(left.params()), scene.initial_velocity);
+  simulation->set_state(left.positions(), left.previous_positions());
+  simulation_ = std::move(simulation);
+  behind_ = 0.0;
+  warning_.clear();
+  sync(left);
+}
+
+void RightSide::start_student(const Scene& scene, const Simulation& left) {
+  const SpringNetwork& network = scene.network;
+  const std::vector<int> pins = left.pinned_vertices();
+  Eigen::VectorXi b(static_cast<Eigen::Index>(pins.size()));
+  for (std::size_t i = 0; i < pins.size(); ++i)
+    b(static_cast<Eigen::Index>(i)) = pins[i];
+  student_ = std::make_unique<StudentStep>(student_server_, network.V, network.E, left.params().k,
+                                           network.m, b, left.params().dt);
+  // The right side's shape lives in a simulation that is never stepped, only given the
+  // student's positions: it draws, colours and frames like any other side.
+  simulation_ =
+      std::make_unique<Simulation>(network, scene.pins, left.params(), scene.initial_velocity);
+  simulation_->set_state(left.positions(), left.previous_positions());
+  warning_ = student_->running() ? "" : student_->error();
+  student_distance_ = 0.0;
+  student_colors_.assign(3 * static_cast<std::size_t>(network.V.rows()), 0.0f);
+}
+
+void RightSide::stop() {
+  simulation_.reset();
+  student_.reset();
+  warning_.clear();
+}
+
+CompareSettings RightSide::settings() const {
+  CompareSettings settings;
+  const SimulationParams& params = simulation_->params();
+  settings.iterations = params.iterations;
+  settings.chebyshev = params.chebyshev;
+  settings.dt = params.dt;
+  settings.k = params.k;
+  return settings;
+}
+
+void RightSide::show_in(PanelSettings& panel) const {
+  const SimulationParams& params = simulation_->params();
+  panel.right_k = static_cast<float>(params.k);
+  panel.right_dt = static_cast<float>(params.dt);
+  panel.right_iterations = params.iterations;
+  panel.right_chebyshev = params.chebyshev;
+}
+
+void RightSide::apply(PanelSettings& panel) {
+  Simulation& right = *simulation_;
+  const SimulationParams& params = right.params();
+  if (static_cast<float>(params.k) != panel.right_k) right.set_k(panel.right_k);
+  if (static_cast<float>(params.dt) != panel.right_dt) right.set_dt(panel.right_dt);
+  panel.right_iterations = std::min(panel.right_iterations, right.max_iterations_for_mesh());
+  if (params.iterations != panel.right_iterations) right.set_iterations(panel.right_iterations);
+  if (params.chebyshev != panel.right_chebyshev) right.set_chebyshev(panel.right_chebyshev);
+}
+
+void RightSide::sync(const Simulation& left) {
+  Simulation& right = *simulation_;
+  // Pins: the same vertices, at the same targets.
+  const std::vector<int> pins = left.pinned_vertices();
+  if (pins != right.pinned_vertices()) {
+    for (const int i : right.pinned_vertices()) {
+      if (!left.is_pinned(i)) right.unpin(i);
+    }
+    for (const int i : pins) {
+      if (!right.is_pinned(i)) right.pin(i);
+    }
+  }
+  for (const int i : pins)
+    right.set_pin_target(i, left.pin_target(i));
+  // Colliders where the left side's are (an Alt+drag moves both).
+  for (std::size_t c = 0; c < left.colliders().size(); ++c) {
+    const Eigen::Vector3d offset =
+        collider_anchor(left.colliders()[c]) - collider_anchor(right.colliders()[c]);
+    if (!offset.isZero(0.0)) right.translate_collider(static_cast<int>(c), offset);
+  }
+  const SimulationParams& from = left.params();
+  const SimulationParams& to = right.params();
+  if (from.gravity != to.gravity || from.gravity_model != to.gravity_model) {
+    right.set_gravity(from.gravity, from.gravity_model);
+  }
+  if (from.damping != to.damping) right.set_damping(from.damping);
+  if (from.contact.friction != to.contact.friction) right.set_friction(from.contact.friction);
+  const WindParams& wind = from.wind;
+  const WindParams& right_wind = to.wind;
+  if (wind.on != right_wind.on || wind.model != right_wind.model ||
+      wind.velocity != right_wind.velocity || wind.gusts != right_wind.gusts ||
+      wind.drag != right_wind.drag || wind.lift != right_wind.lift ||
+      wind.air_density != right_wind.air_density) {
+    right.set_wind(wind);
+  }
+  const SelfCollisionParams& self = from.self_collision;
+  if (self.on != to.self_collision.on || self.thickness != to.self_collision.thickness) {
+    right.set_self_collision(self);
+  }
+}
+
+void RightSide::advance(const Simulation& left, double seconds) {
+  if (student_) {
+    advance_student(left);
+    return;
+  }
+  if (!simulation_ || !warning_.empty()) return;
+  sync(left);
+  // Both sides cover the same simulated time: a right side with half the dt steps twice a frame.
+  behind_ += seconds;
+  const double dt = simulation_->params().dt;
+  for (int step = 0; step < max_steps_per_frame && behind_ >= 0.5 * dt; ++step) {
+    const StepStatus status = simulation_->step();
+    if (status != StepStatus::ok) {
+      warning_ = "right side stopped: " + Simulation::describe(status);
+      return;
+    }
+    behind_ -= dt;
+  }
+  // What a capped frame could not catch up is dropped, not carried into a burst later.
+  behind_ = std::min(behind_, dt);
+}
+
+void RightSide::advance_student(const Simulation& left) {
+  if (!warning_.empty()) return;
+  Eigen::MatrixXd next;
+  std::string error;
+  if (!student_->step(left.external_forces(), simulation_->previous_positions(),
+                      simulation_->positions(), next, error)) {
+    warning_ = error;
+    return;
+  }
+  const Eigen::MatrixXd now = simulation_->positions();
+  try {
+    simulation_->set_state(next, now);
+  } catch (const std::exception& refused) {  // a NaN from the student's step
+    warning_ = std::string("the student's step returned ") + refused.what();
+    return;
+  }
+  const Eigen::VectorXd distance = (simulation_->positions() - left.positions()).rowwise().norm();
+  student_distance_ = distance.maxCoeff();
+  const double range = std::max(student_distance_, distance_floor);
+  for (Eigen::Index i = 0; i < distance.size(); ++i) {
+    const Eigen::Vector3f color = sequential_color(static_cast<float>(distance(i) / range));
+    for (int c = 0; c < 3; ++c)
+      student_colors_[3 * i + c] = color(c);
+  }
+}
+
+void RightSide::reset(const Scene& scene, const Simulation& left) {
+  if (!simulation_) return;
+  simulation_->reset();
+  simulation_->set_state(left.positions(), left.previous_positions());
+  behind_ = 0.0;
+  if (student_) {
+    student_distance_ = 0.0;
+    std::fill(student_colors_.begin(), student_colors_.end(), 0.0f);
+    // A server that crashed or hung is started afresh; one that runs keeps its precomputation.
+    if (!student_->running()) start_student(scene, left);
+    warning_ = student_->running() ? "" : student_->error();
+    return;
+  }
+  warning_.clear();
+  sync(left);
+}
+
+}  // namespace wobble
