@@ -13,7 +13,6 @@
 #include "app/student/student_server.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
-#include "render/vertex_normals.h"
 #include "sim/solver/worker_pool.h"
 
 namespace wobble {
