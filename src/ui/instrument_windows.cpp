@@ -48,6 +48,10 @@ float instrument_column_width(float display_width, float ui_scale) {
   return std::min(380.0f * ui_scale, 0.45f * display_width);
 }
 
+float instrument_column_left(float display_width, float ui_scale) {
+  return display_width - instrument_column_width(display_width, ui_scale) - 10.0f * ui_scale;
+}
+
 const char* convergence_hint(ConvergenceLight light) {
   if (light == ConvergenceLight::green) return "";
   return "stiff springs need more iterations, Chebyshev, or a smaller dt";
@@ -58,7 +62,7 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
   // small display (a headless image) the two windows share the right side's height.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = instrument_column_width(display.x, ui_scale);
-  ImGui::SetNextWindowPos(ImVec2(display.x - width - 10.0f * ui_scale, 10.0f * ui_scale),
+  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale), 10.0f * ui_scale),
                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, std::min(390.0f * ui_scale, 0.6f * display.y - 15.0f)),
                            ImGuiCond_FirstUseEver);
@@ -125,7 +129,7 @@ void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) 
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = instrument_column_width(display.x, ui_scale);
   const float top = std::min(410.0f * ui_scale, 0.6f * display.y + 5.0f);
-  ImGui::SetNextWindowPos(ImVec2(display.x - width - 10.0f * ui_scale, top),
+  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale), top),
                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, std::min(250.0f * ui_scale, display.y - top - 10.0f)),
                            ImGuiCond_FirstUseEver);

@@ -39,6 +39,9 @@ void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale);
 // Width of the column the two windows open in at the right of the display (pixels): 380 at
 // most, 45% of a small display. Other overlays keep out of it.
 float instrument_column_width(float display_width, float ui_scale);
+// Where that column begins (pixels from the display's left edge): its width and a margin from
+// the right edge. The split view keeps left of it.
+float instrument_column_left(float display_width, float ui_scale);
 
 // The light's words, e.g. "converged", and the hint shown under it (empty when green).
 const char* convergence_label(ConvergenceLight light);

@@ -69,9 +69,7 @@ float Instruments::draw(bool& convergence_open, bool& energy_open, float ui_scal
   // The plots stand in a column at the window's right (instrument_windows.h).
   const float display = ImGui::GetIO().DisplaySize.x;
   const float column_left =
-      convergence_open || energy_open
-          ? display - instrument_column_width(display, ui_scale) - 10.0f * ui_scale
-          : -1.0f;
+      convergence_open || energy_open ? instrument_column_left(display, ui_scale) : -1.0f;
   if (convergence_open) {
     ConvergencePlotData data;
     data.energy = &shown_trace_.energy;

@@ -18,10 +18,6 @@ namespace {
 // behind instead of stalling the window.
 constexpr int max_steps_per_frame = 16;
 
-// Below this distance (m) a vertex counts as on Wobble's: rounding differences of two correct
-// implementations are far smaller, a wrong step far larger.
-constexpr double distance_floor = 1e-6;
-
 }  // namespace
 
 SimulationParams seed_method(SimulationParams params) {

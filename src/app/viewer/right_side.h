@@ -22,6 +22,10 @@ namespace wobble {
 // side of the viewer only (between batches, or by the batch itself).
 class RightSide {
  public:
+  // Below this distance (m) a student's vertex counts as on Wobble's: rounding differences of
+  // two correct implementations are far smaller, a wrong step far larger.
+  static constexpr double distance_floor = 1e-6;
+
   // `student_server`: the step server built from a student's folder (student_server.h), or
   // empty for none.
   explicit RightSide(std::string student_server) : student_server_(std::move(student_server)) {}

@@ -96,8 +96,7 @@ void Viewer::describe_sides() {
 }
 
 void Viewer::draw_student_legend(float ui_scale) {
-  // Below this distance (m) the student's side counts as on Wobble's (as right_side.cpp).
-  constexpr double distance_floor = 1e-6;
+  constexpr double distance_floor = RightSide::distance_floor;
   ColorLegend legend;
   constexpr int samples = 17;
   for (int i = 0; i < samples; ++i) {
