@@ -122,13 +122,10 @@ void Viewer::load(Scene scene) {
   std::optional<CompareSettings> split;
   if (right_.simulation() && !right_.student()) split = right_.settings();
   right_.stop();
-  drag_.cancel();
-  collider_drag_.cancel();
-  mouse_holds_ = false;
+  pick_and_drag_.forget();
   pacer_.restart();
   drag_script_ = DragScript();  // its vertex numbers belong to the first scene
   step_warning_.clear();
-  mode_ = Mode::idle;
   scene_ = std::move(scene);
   simulation_ = std::move(simulation);
   instruments_.clear();
@@ -297,7 +294,7 @@ PanelStats Viewer::simulation_stats() const {
   stats.vertices = static_cast<int>(scene_.network.V.rows());
   stats.springs = static_cast<int>(scene_.network.E.rows());
   // A free vertex held by the mouse is pinned only for the drag: it is not one of the pins.
-  stats.pins = simulation_->pin_count() - (drag_.holds_free_vertex() ? 1 : 0);
+  stats.pins = simulation_->pin_count() - (pick_and_drag_.holds_free_vertex() ? 1 : 0);
   stats.threads = shared_thread_setting().threads;
   stats.steps = simulation_->steps_taken();
   stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;

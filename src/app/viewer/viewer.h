@@ -10,15 +10,14 @@
 
 #include "app/cli/command_line.h"
 #include "app/cli/compare_settings.h"
-#include "app/interaction/collider_drag.h"
 #include "app/interaction/collider_mesh.h"
 #include "app/interaction/drag_script.h"
 #include "app/interaction/input_mapping.h"
-#include "app/interaction/vertex_drag.h"
 #include "app/student/student_step.h"
 #include "app/viewer/instruments.h"
 #include "app/viewer/moving_median.h"
 #include "app/viewer/notices.h"
+#include "app/viewer/pick_and_drag.h"
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/right_side.h"
 #include "app/viewer/step_pacer.h"
@@ -198,8 +197,8 @@ class Viewer {
   // holding something or turning the camera. A paused viewer with none of these can wait for
   // input instead of redrawing the same picture.
   bool animating() const {
-    return !panel_.paused || step_requested_ || mouse_holds_ || mode_ != Mode::idle ||
-           batch_started_ || !pending_.empty();
+    return !panel_.paused || step_requested_ || pick_and_drag_.busy() || batch_started_ ||
+           !pending_.empty();
   }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
@@ -266,8 +265,8 @@ class Viewer {
   // viewer_colors.cpp
   void update_quantity_colors();
   void add_quantity_colors(const QuantityColors& colors, MeshFrame& frame) const;
-  int pick(const Eigen::Vector2f& cursor, bool pinned_only) const;
-  Ray ray_at(const Eigen::Vector2f& cursor) const;
+  // The picture as the last render() drew it, for the mouse in a window `window_size` big.
+  PointerView pointer_view(const Eigen::Vector2f& window_size) const;
 
   Scene scene_;
   std::unique_ptr<Simulation> simulation_;
@@ -307,8 +306,6 @@ class Viewer {
   std::string shown_left_label_, shown_right_label_;  // the split view's settings
   double shown_student_distance_ = 0.0;
   std::vector<float> shown_student_colors_;
-  // A vertex or collider is held by the mouse (its grab may still wait for the batch).
-  bool mouse_holds_ = false;
   bool quit_ = false;
   bool screenshot_requested_ = false;
   Notices notices_;
@@ -324,16 +321,7 @@ class Viewer {
   // renderer draws it from.
   RightSide right_;
   std::vector<float> twin_positions_, twin_normals_;
-
-  // Mouse state.
-  enum class Mode { idle, orbit, pan } mode_ = Mode::idle;
-  VertexDrag drag_;
-  ColliderDrag collider_drag_;
-  Eigen::Vector2f cursor_ = Eigen::Vector2f(-1e9f, -1e9f);      // in the half under it when split
-  Eigen::Vector2f raw_cursor_ = Eigen::Vector2f(-1e9f, -1e9f);  // in the window
-  Eigen::Vector2f window_size_ = Eigen::Vector2f(1.0f, 1.0f);
-  bool cursor_over_ui_ = false;
-  int hovered_pin_ = -1;
+  PickAndDrag pick_and_drag_;  // the mouse's gesture in progress and what it holds (a component)
 
   // What the renderer draws, as plain arrays refreshed between batches. Stale after a change
   // the last refresh did not see (render then refreshes them).

@@ -2,7 +2,6 @@
 #include <algorithm>
 
 #include "app/cli/scene_catalog.h"
-#include "app/interaction/collider_picking.h"
 #include "app/interaction/environment_controls.h"
 #include "app/viewer/scene_save.h"
 #include "app/viewer/viewer.h"
@@ -11,126 +10,40 @@
 
 namespace wobble {
 
-namespace {
-
-// How close, in window units, the cursor must come to a vertex to pick it.
-constexpr float pick_radius = 8.0f;
-
-}  // namespace
-
-int Viewer::pick(const Eigen::Vector2f& cursor, bool pinned_only) const {
-  return pick_vertex(
-      projection_ * view_, positions_.data(), static_cast<int>(positions_.size() / 3),
-      pinned_only ? pinned_flags_.data() : nullptr, cursor, window_size_, pick_radius);
-}
-
-Ray Viewer::ray_at(const Eigen::Vector2f& cursor) const {
-  return cursor_ray(view_, projection_, cursor, window_size_);
+PointerView Viewer::pointer_view(const Eigen::Vector2f& window_size) const {
+  // Split, each half is a view of its own under the same camera.
+  PointerView picture;
+  picture.view = view_;
+  picture.projection = projection_;
+  picture.positions = &positions_;
+  picture.pinned = &pinned_flags_;
+  picture.size = window_size;
+  if (right_.simulation()) {
+    const SplitArea area = split_area(window_size.x());
+    picture.size = Eigen::Vector2f(area.half, window_size.y());
+    picture.split = true;
+    picture.left = area.left;
+  }
+  return picture;
 }
 
 void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
                            bool ui_wants_keyboard, const Eigen::Vector2f& window_size) {
-  // Split, each half is a view of its own under the same camera: a cursor in the right half
-  // picks and drags as at the same place in the left (pins and drags are shared).
-  const SplitArea area = split_area(window_size.x());
-  window_size_ = right_.simulation() ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
-  cursor_over_ui_ = ui_wants_mouse;
+  // The simulation a change edits is the one there when the change is made, not as now.
+  PointerContext context{pointer_view(window_size), view_camera_, *simulation_};
+  // The simulation a change edits is the one there when the change is made, not as now.
+  context.change = [this](std::function<void(Simulation&)> what) {
+    change([this, what = std::move(what)] { what(*simulation_); });
+  };
+  pick_and_drag_.begin_events(ui_wants_mouse);
   for (const InputEvent& event : events) {
-    const Eigen::Vector2f raw(static_cast<float>(event.x), static_cast<float>(event.y));
-    Eigen::Vector2f at = raw;
-    if (right_.simulation()) {
-      at.x() -= area.left;
-      if (at.x() >= area.half) at.x() -= area.half;
-    }
-    switch (event.type) {
-      case InputEvent::Type::key_press:
-        if (!ui_wants_keyboard) apply(command_for_key(event.code, event.control));
-        break;
-      case InputEvent::Type::button_press: {
-        // One gesture at a time.
-        if (mouse_holds_ || mode_ != Mode::idle) break;
-        const int pin = pick(at, /*pinned_only=*/true);
-        const int vertex = pin >= 0 ? pin : pick(at, /*pinned_only=*/false);
-        // Hidden colliders cannot be grabbed.
-        const std::optional<ColliderHit> collider =
-            event.alt && panel_.colliders ? pick_collider(ray_at(at), simulation_->colliders())
-                                          : std::nullopt;
-        MouseGesture gesture =
-            gesture_for_press(event.code, event.control, event.shift, ui_wants_mouse, pin >= 0,
-                              vertex >= 0, event.alt, collider.has_value());
-        // The student's step pins its vertices where they rest: with a student on the right,
-        // the mouse only moves the camera.
-        if (right_.student() && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {
-          gesture = MouseGesture::none;
-        }
-        // What the gesture does to the simulation waits for a running batch; the camera and
-        // what the mouse holds are decided now, on the state drawn.
-        const Ray ray = ray_at(at);
-        const Eigen::Vector3f forward = camera_forward(view_camera_.camera());
-        switch (gesture) {
-          case MouseGesture::grab_collider:
-            mouse_holds_ = true;
-            change([this, hit = *collider, forward] {
-              collider_drag_.grab(*simulation_, hit.index, hit.point, forward);
-            });
-            break;
-          case MouseGesture::grab_pin:
-          case MouseGesture::grab_free_vertex:
-            mouse_holds_ = true;
-            change(
-                [this, vertex, ray, forward] { drag_.grab(*simulation_, vertex, ray, forward); });
-            break;
-          case MouseGesture::toggle_pin:
-            change([this, vertex] {
-              if (simulation_->is_pinned(vertex)) {
-                simulation_->unpin(vertex);
-              } else {
-                simulation_->pin(vertex);
-              }
-            });
-            break;
-          case MouseGesture::orbit:
-            mode_ = Mode::orbit;
-            break;
-          case MouseGesture::pan:
-            mode_ = Mode::pan;
-            break;
-          case MouseGesture::none:
-            break;
-        }
-        break;
-      }
-      case InputEvent::Type::button_release:
-        if (mouse_holds_) {
-          change([this] {
-            drag_.release(*simulation_);
-            collider_drag_.release();
-          });
-        }
-        mouse_holds_ = false;
-        mode_ = Mode::idle;
-        break;
-      case InputEvent::Type::cursor_move: {
-        const Eigen::Vector2f delta = raw - raw_cursor_;
-        raw_cursor_ = raw;
-        if (mouse_holds_) {
-          change([this, ray = ray_at(at)] {
-            if (drag_.active()) drag_.move(*simulation_, ray);
-            if (collider_drag_.active()) collider_drag_.move(*simulation_, ray);
-          });
-        }
-        if (mode_ == Mode::orbit) {
-          view_camera_.orbit(delta.x(), delta.y(), window_size_.y());
-        }
-        if (mode_ == Mode::pan) {
-          view_camera_.pan(delta.x(), delta.y(), window_size_.y());
-        }
-        cursor_ = at;
-        break;
-      }
-      case InputEvent::Type::scroll:
-        if (!ui_wants_mouse) view_camera_.zoom(static_cast<float>(event.y));
-        break;
+    if (event.type != InputEvent::Type::key_press) {
+      // A key before it in the list may have hidden the colliders.
+      context.colliders_shown = panel_.colliders;
+      context.camera_only = right_.student();
+      pick_and_drag_.mouse_event(event, context);
+    } else if (!ui_wants_keyboard) {
+      apply(command_for_key(event.code, event.control));
     }
   }
 }
@@ -165,8 +78,7 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::reset:
       change([this] {
-        if (drag_.active()) drag_.cancel();
-        collider_drag_.cancel();  // reset puts the colliders back
+        pick_and_drag_.cancel_drags();  // reset puts the colliders back
         simulation_->reset();
         right_.reset(scene_, *simulation_);
         instruments_.clear();
@@ -196,7 +108,7 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::toggle_colliders:
       panel_.colliders = !panel_.colliders;
-      if (!panel_.colliders) collider_drag_.cancel();
+      if (!panel_.colliders) pick_and_drag_.drop_collider();
       break;
     case ViewerCommand::toggle_points:
       panel_.points = !panel_.points;

@@ -56,10 +56,11 @@ void Viewer::update_vertex_arrays() {
   // Paused, a drag moves only the pin's target: the held vertex is drawn there, its triangles
   // stretching towards it, so the user sees where the shape will be pulled (Step takes one step
   // towards it). The simulation's positions are untouched.
-  if (panel_.paused && drag_.active()) {
-    const Eigen::Vector3d target = simulation_->pin_target(drag_.vertex());
+  const int held = pick_and_drag_.held_vertex();
+  if (panel_.paused && held >= 0) {
+    const Eigen::Vector3d target = simulation_->pin_target(held);
     for (int k = 0; k < 3; ++k)
-      positions_[3 * drag_.vertex() + k] = static_cast<float>(target(k));
+      positions_[3 * held + k] = static_cast<float>(target(k));
   }
   compute_vertex_normals(positions_.data(), n, triangles_.data(),
                          static_cast<int>(triangles_.size() / 3), normals_.data());
@@ -79,7 +80,6 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio) {
   // Split, each side gets half of what the panel and the plots leave, under the same camera.
   const SplitArea area = split_area(window_size.x());
-  window_size_ = right_.simulation() ? Eigen::Vector2f(area.half, window_size.y()) : window_size;
   const int left_x =
       right_.simulation() ? static_cast<int>(std::lround(area.left * pixel_ratio)) : 0;
   const int left_width = right_.simulation()
@@ -88,12 +88,11 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // Between batches a change made since the last refresh is read afresh (a paused drag moves
   // the drawn pin); while a batch runs, the state it started from is drawn.
   if (!batch_started_ && arrays_stale_) update_vertex_arrays();
-  const int n = static_cast<int>(positions_.size() / 3);
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   // Split, both sides share one camera and each is framed whole; else the shape is framed
   // beside the panel.
   const ViewportRegion region = panel_place_.shown && !right_.simulation()
-                                    ? region_beside_panel(window_size_.x(), panel_place_.x,
+                                    ? region_beside_panel(window_size.x(), panel_place_.x,
                                                           panel_place_.x + panel_place_.width)
                                     : ViewportRegion();
   view_camera_.frame(positions_, ground_.height, region, aspect);
@@ -101,14 +100,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   view_ = view_matrix(camera);
   projection_ = projection_matrix(camera, aspect);
 
-  // The pin under the cursor and the vertex being held are highlighted.
-  hovered_pin_ = (mode_ == Mode::idle && !mouse_holds_ && !cursor_over_ui_)
-                     ? pick(cursor_, /*pinned_only=*/true)
-                     : -1;
-  for (int i = 0; i < n; ++i)
-    marks_[i] = pinned_flags_[i];
-  if (hovered_pin_ >= 0) marks_[hovered_pin_] = 2;
-  if (drag_.active()) marks_[drag_.vertex()] = 2;
+  pick_and_drag_.mark(pointer_view(window_size), marks_);
 
   update_collider_mesh();
   if (!renderer_) return;

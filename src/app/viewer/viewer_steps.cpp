@@ -110,7 +110,7 @@ void Viewer::finish_batch() {
     failed.step = batch_.failed_step;
     failed.initial_velocity =
         scene_.initial_velocity.size() != 0 && !scene_.initial_velocity.isZero(0.0);
-    failed.dragging = drag_.active() || batch_.scripted_drag;
+    failed.dragging = pick_and_drag_.held_vertex() >= 0 || batch_.scripted_drag;
     failed.stiffness_ratio = batch_.stiffness_ratio;
     failed.dt = simulation_->params().dt;
     step_warning_ = describe_failed_step(failed);
