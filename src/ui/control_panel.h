@@ -1,57 +1,13 @@
 #ifndef WOBBLE_UI_CONTROL_PANEL_H
 #define WOBBLE_UI_CONTROL_PANEL_H
 
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "panel_sections.h"
+
 namespace wobble {
-
-// What the panel edits. The app compares it with the simulation after each frame's UI and applies
-// what changed, so the panel itself touches neither the simulation nor GL.
-struct PanelSettings {
-  float k = 400.0f;           // N/m
-  float dt = 1.0f / 60.0f;    // s
-  int iterations = 50;        //
-  float gravity = 9.81f;      // m/s², its strength along the scene's own direction
-  bool chebyshev = false;     // Chebyshev acceleration of the iterations
-  float damping = 0.0f;       // 1/s, mass-proportional
-  float friction = 0.0f;      // Coulomb μ against the colliders
-  bool wind = false;          // wind on
-  float wind_speed = 0.0f;    // m/s (aerodynamic wind only)
-  float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
-  bool colliders = true;      // colliders shown
-  bool paused = false;
-  // Real time: the window takes as many steps before a frame as keep the simulated clock with
-  // the wall clock (up to what fits in a frame); off, one step a frame.
-  bool real_time = true;
-  // Self-collision on, and its thickness in mm (the simulation's is in m).
-  bool self_collision = false;
-  float self_collision_mm = 10.0f;
-  bool surface = true, wireframe = false, springs = false, points = false, ground = true;
-  int color_by = 0;  // 0 material, 1 spring strain, 2 vertex speed, 3 contacts (V cycles them)
-  int scene = 0;     // index into the scene names
-  bool show_help = false;
-  char open_path[512] = "";       // the "open" field's text
-  bool show_panel = true;         // Tab hides it
-  bool recording = false;         // every new state drawn written as a PNG (F9)
-  float ui_scale = 1.0f;          // fonts and the panel, times the screen's scale (projectors)
-  bool show_convergence = false;  // the last step's convergence plot
-  bool show_energy = false;       // the energy-over-time plot
-  // The split view and its right side's own settings.
-  bool split = false;
-  float right_k = 400.0f, right_dt = 1.0f / 60.0f;
-  int right_iterations = 5;
-  bool right_chebyshev = false;
-
-  static constexpr float min_k = 1.0f, max_k = 1e6f;
-  static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
-  static constexpr int min_iterations = 1, max_iterations = 100;
-  static constexpr float max_gravity = 30.0f;
-  static constexpr float min_ui_scale = 0.75f, max_ui_scale = 3.0f;
-  static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
-  // limits::self_collision_thickness, 1e-5 to 1 m, in mm.
-  static constexpr float min_self_collision_mm = 0.01f, max_self_collision_mm = 1000.0f;
-};
 
 // Numbers the panel shows.
 struct PanelStats {
@@ -92,24 +48,43 @@ struct PanelPlace {
   float x = 0.0f, y = 0.0f, width = 0.0f, height = 0.0f;
 };
 
+// The panel's parts, in the order the panel shows them, each drawn by what owns its settings
+// (panel_sections.h): rows at the top, then sections under headers that open and close. A part
+// left empty is not shown, nor its header.
+struct PanelParts {
+  std::function<void()> scene_rows, save_rows, play_rows;
+  std::function<void()> simulation, environment, view, instruments, compare;
+};
+
+// The "Wobble" panel: its window beside the view, as tall as its contents and never taller than
+// the display, the parts in a list that scrolls where the display is shorter, then the timings
+// and the scene's notes (from `stats`), and the stats pinned under the list. `paused` is read
+// after the parts drew, so that a Play pressed this frame shows in the stats. Returns where the
+// panel lies. Call between ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
+PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, const bool& paused,
+                              float ui_scale);
+
+// What the whole panel edits, every section's settings in one struct, for drawing the panel
+// whole from it (its tests do).
+struct PanelSettings : SceneRowSettings,
+                       PlaySettings,
+                       SimulationSettings,
+                       EnvironmentSettings,
+                       ViewSettings,
+                       InstrumentSettings,
+                       SplitSettings {
+  bool recording = false;  // every new state drawn written as a PNG (F9)
+};
+
 // Buttons pressed this frame, and where the panel was drawn.
-struct PanelRequests {
-  bool step_once = false;
-  bool reset = false;
-  bool frame_mesh = false;
-  bool default_view = false;      // the scene's opening view
-  bool scene_changed = false;     // the picker chose a scene (the current one again: reopen it)
+struct PanelRequests : SceneRowRequests, SaveRowRequests, PlayRequests {
   bool restore_defaults = false;  // the scene as it opened, every setting included
-  std::string open_path;          // a scene or mesh file to open (the "open" field), or empty
-  bool save_scene = false;        // save the scene with its pins and settings (Ctrl+S)
-  bool export_obj = false;        // the current positions as an OBJ (F11)
-  bool screenshot = false;        // the window as a PNG (F12)
   PanelPlace place;
 };
 
-// The "Wobble" panel: scene picker, play controls, simulation and environment (damping,
-// friction, wind, colliders, self-collision) sliders, view toggles and stats. Call between
-// ImGui::NewFrame and ImGui::Render. `ui_scale` is the high-DPI factor.
+// The whole panel drawn from `settings`: each part by its function in panel_sections.h, the
+// recording's status and the warning from `stats`, which also say what the environment and
+// compare sections offer.
 PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stats,
                                  const std::vector<std::string>& scene_names, float ui_scale);
 

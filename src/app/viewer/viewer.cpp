@@ -216,7 +216,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   // The panel's UI scale (for projectors) multiplies the screen's.
   ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
   ui_scale *= panel_.ui_scale;
-  const PanelRequests requests = panel_.show_panel
+  const PanelRequests requests = show_panel_
                                      ? draw_control_panel(panel_, stats, scene_labels_, ui_scale)
                                      : PanelRequests();
   // A hidden panel covers nothing: F then frames in the whole window.

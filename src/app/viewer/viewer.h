@@ -189,7 +189,7 @@ class Viewer {
   bool real_time() const { return panel_.real_time; }
   bool paused() const { return panel_.paused; }
   bool help_shown() const { return panel_.show_help; }
-  bool panel_shown() const { return panel_.show_panel; }
+  bool panel_shown() const { return show_panel_; }
   // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
   // target).
   const std::vector<float>& drawn_positions() const { return positions_; }
@@ -272,6 +272,7 @@ class Viewer {
   std::unique_ptr<Simulation> simulation_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
   PanelSettings panel_;
+  bool show_panel_ = true;  // Tab hides the panel
   // Whether the scene has no faces, and the springs and points layers chosen for scenes with
   // faces while such a scene shows both.
   bool faceless_ = false;

@@ -132,7 +132,7 @@ void Viewer::apply(ViewerCommand command) {
       quit_ = true;
       break;
     case ViewerCommand::toggle_panel:
-      panel_.show_panel = !panel_.show_panel;
+      show_panel_ = !show_panel_;
       break;
     case ViewerCommand::screenshot:
       screenshot_requested_ = true;

@@ -1,0 +1,210 @@
+#include "panel_sections.h"
+
+#include <imgui.h>
+
+#include "log_drag.h"
+
+namespace wobble {
+
+namespace {
+
+const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
+
+// The tooltip of every drag over decades.
+void log_drag_tooltip() {
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    ImGui::SetTooltip(
+        "Drag: 1%% a pixel (Shift: 10%%, Alt: finer)\n"
+        "Ctrl+click or double-click: type a value");
+  }
+}
+
+}  // namespace
+
+SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
+                                 const std::vector<std::string>& scene_names) {
+  SceneRowRequests requests;
+  if (!scene_names.empty()) {
+    const char* current = scene_names[settings.scene].c_str();
+    if (ImGui::BeginCombo("scene", current)) {
+      for (int i = 0; i < static_cast<int>(scene_names.size()); ++i) {
+        // Choosing the current scene again opens it afresh, with its own settings.
+        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene)) {
+          settings.scene = i;
+          requests.scene_changed = true;
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+  // A scene or mesh file by path (or dropped on the window): Enter or the button opens it.
+  const bool entered =
+      ImGui::InputTextWithHint("##open", "scene or mesh file path", settings.open_path,
+                               sizeof(settings.open_path), ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::SameLine();
+  if ((ImGui::Button("Open") || entered) && settings.open_path[0] != '\0') {
+    requests.open_path = settings.open_path;
+  }
+  return requests;
+}
+
+SaveRowRequests draw_save_rows(bool& recording, const std::string& recording_status) {
+  SaveRowRequests requests;
+  // Files into the working folder, each under the next free number.
+  requests.save_scene = ImGui::Button("Save scene");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Ctrl+S: the scene with its pins and settings as wobble-SCENE-scene-0001.json\n"
+        "and its mesh beside it; wobble opens it as it is now (from rest)");
+  }
+  ImGui::SameLine();
+  requests.export_obj = ImGui::Button("OBJ");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("F11: the current positions as wobble-SCENE-0001.obj");
+  ImGui::SameLine();
+  requests.screenshot = ImGui::Button("PNG");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: the window as wobble-SCENE-0001.png");
+  ImGui::SameLine();
+  ImGui::Checkbox("record", &recording);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "F9: every new state drawn as DIR/frame_00001.png, ...\n"
+        "into a new folder wobble-SCENE-frames-0001");
+  }
+  if (!recording_status.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
+    ImGui::TextWrapped("recording to %s", recording_status.c_str());
+    ImGui::PopStyleColor();
+  }
+  return requests;
+}
+
+PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning) {
+  PlayRequests requests;
+  if (ImGui::Button(settings.paused ? "Play" : "Pause")) settings.paused = !settings.paused;
+  ImGui::SameLine();
+  requests.step_once = ImGui::Button("Step");
+  ImGui::SameLine();
+  requests.reset = ImGui::Button("Reset");
+  ImGui::SameLine();
+  requests.frame_mesh = ImGui::Button("Frame");
+  ImGui::SameLine();
+  requests.default_view = ImGui::Button("View");
+  ImGui::SameLine();
+  if (ImGui::Button("Help")) settings.show_help = !settings.show_help;
+  ImGui::Checkbox("real time", &settings.real_time);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "On: as many steps before each frame as keep the motion at its true speed,\n"
+        "as far as they fit in a frame (a slower step shows slow motion).\n"
+        "Off: one step a frame.");
+  }
+  if (!warning.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, warning_color);
+    ImGui::TextWrapped("%s", warning.c_str());
+    ImGui::PopStyleColor();
+  }
+  return requests;
+}
+
+bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
+  // Stiffness spans six decades and dt four: both move by a factor a pixel (log_drag.h).
+  log_drag("k (N/m)", &settings.k, SimulationSettings::min_k, SimulationSettings::max_k, "%.1f");
+  log_drag_tooltip();
+  log_drag("dt (s)", &settings.dt, SimulationSettings::min_dt, SimulationSettings::max_dt, "%.5f");
+  log_drag_tooltip();
+  ImGui::SliderInt("iterations", &settings.iterations, SimulationSettings::min_iterations,
+                   SimulationSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  // A course scene reproduces the course's program, which iterates plainly.
+  if (course_scene) ImGui::BeginDisabled();
+  ImGui::Checkbox("Chebyshev acceleration", &settings.chebyshev);
+  if (course_scene) {
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip(
+          "A course scene reproduces the course's program exactly:\n"
+          "plain iterations only.");
+    }
+  }
+  ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, SimulationSettings::max_gravity,
+                     "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  const bool restore_defaults = ImGui::Button("Restore defaults");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("The scene as it opened: its settings, pins, colliders and start");
+  }
+  return restore_defaults;
+}
+
+void draw_environment_section(EnvironmentSettings& settings, const EnvironmentOffer& offer) {
+  using Limits = EnvironmentSettings;
+  // Damping from a hundredth to ten per second: by a factor a pixel too.
+  log_drag("damping (1/s)", &settings.damping, 0.0f, Limits::max_damping, "%.3f");
+  log_drag_tooltip();
+  if (offer.colliders) {
+    ImGui::SliderFloat("friction", &settings.friction, 0.0f, Limits::max_friction, "%.2f",
+                       ImGuiSliderFlags_AlwaysClamp);
+  }
+  ImGui::Checkbox("wind (W)", &settings.wind);
+  if (offer.aerodynamic_wind) {
+    ImGui::SliderFloat("wind (m/s)", &settings.wind_speed, 0.0f, Limits::max_wind_speed, "%.1f",
+                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SliderFloat("wind heading", &settings.wind_heading, 0.0f, 360.0f, "%.0f deg",
+                       ImGuiSliderFlags_AlwaysClamp);
+  }
+  if (offer.colliders) ImGui::Checkbox("colliders", &settings.colliders);
+  // A course scene reproduces the course's program, which has no self-collision: not offered.
+  if (!offer.course_scene) {
+    ImGui::Checkbox("self-collision", &settings.self_collision);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("Keep the surface from passing through itself, a thickness apart");
+    }
+    if (settings.self_collision) {
+      log_drag("thickness (mm)", &settings.self_collision_mm, Limits::min_self_collision_mm,
+               Limits::max_self_collision_mm, "%.2f");
+      log_drag_tooltip();
+    }
+  }
+}
+
+void draw_view_section(ViewSettings& settings) {
+  ImGui::Checkbox("surface", &settings.surface);
+  ImGui::SameLine();
+  ImGui::Checkbox("wireframe", &settings.wireframe);
+  ImGui::SameLine();
+  ImGui::Checkbox("ground", &settings.ground);
+  ImGui::Checkbox("springs", &settings.springs);
+  ImGui::SameLine();
+  ImGui::Checkbox("points", &settings.points);
+  const char* const color_names[] = {"material", "strain", "speed", "contacts"};
+  ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
+  ImGui::SliderFloat("UI scale", &settings.ui_scale, ViewSettings::min_ui_scale,
+                     ViewSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+}
+
+void draw_instruments_section(InstrumentSettings& settings) {
+  ImGui::Checkbox("convergence", &settings.show_convergence);
+  ImGui::SameLine();
+  ImGui::Checkbox("energy", &settings.show_energy);
+}
+
+void draw_split_section(SplitSettings& settings, bool student_side) {
+  if (student_side) {
+    // wobble --student: the right side is the student's step, with the seed's settings.
+    ImGui::TextWrapped(
+        "right: the student's fast_mass_springs_step_sparse, coloured by its "
+        "distance from Wobble's (left)");
+    return;
+  }
+  using Limits = SimulationSettings;  // the same ranges as the left side's
+  ImGui::Checkbox("split view: right side", &settings.split);
+  if (!settings.split) return;
+  log_drag("k right", &settings.right_k, Limits::min_k, Limits::max_k, "%.1f");
+  log_drag_tooltip();
+  log_drag("dt right", &settings.right_dt, Limits::min_dt, Limits::max_dt, "%.5f");
+  log_drag_tooltip();
+  ImGui::SliderInt("iterations right", &settings.right_iterations, Limits::min_iterations,
+                   Limits::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+}
+
+}  // namespace wobble

@@ -1,0 +1,122 @@
+#ifndef WOBBLE_UI_PANEL_SECTIONS_H
+#define WOBBLE_UI_PANEL_SECTIONS_H
+
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+// The control panel's parts, one function each, with the settings each edits. Each is drawn by
+// what owns those settings (the viewer or one of its components), into the place the control
+// panel keeps for it (control_panel.h); none touches the simulation or GL. Between
+// ImGui::Begin and End, inside the panel's list of sections.
+
+// The scene picker and the "open" field: rows at the top.
+struct SceneRowSettings {
+  int scene = 0;             // index into the scene names
+  char open_path[512] = "";  // the "open" field's text
+};
+struct SceneRowRequests {
+  bool scene_changed = false;  // the picker chose a scene (the current one again: reopen it)
+  std::string open_path;       // a scene or mesh file to open (the "open" field), or empty
+};
+SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
+                                 const std::vector<std::string>& scene_names);
+
+// Files into the working folder: Save scene, OBJ, PNG and the record toggle, and where a
+// recording goes ("DIR/ (N frames)", empty when not recording).
+struct SaveRowRequests {
+  bool save_scene = false;  // save the scene with its pins and settings (Ctrl+S)
+  bool export_obj = false;  // the current positions as an OBJ (F11)
+  bool screenshot = false;  // the window as a PNG (F12)
+};
+SaveRowRequests draw_save_rows(bool& recording, const std::string& recording_status);
+
+// Play, Step, Reset, Frame, View and Help, real time, and why the simulation paused by itself
+// (`warning`, or empty).
+struct PlaySettings {
+  bool paused = false;
+  // Real time: the window takes as many steps before a frame as keep the simulated clock with
+  // the wall clock (up to what fits in a frame); off, one step a frame.
+  bool real_time = true;
+  bool show_help = false;
+};
+struct PlayRequests {
+  bool step_once = false;
+  bool reset = false;
+  bool frame_mesh = false;
+  bool default_view = false;  // the scene's opening view
+};
+PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning);
+
+// "simulation": k, dt, iterations, Chebyshev, gravity and Restore defaults (returns whether it
+// was pressed). A course scene (`course_scene`) iterates plainly: no Chebyshev offered.
+struct SimulationSettings {
+  float k = 400.0f;         // N/m
+  float dt = 1.0f / 60.0f;  // s
+  int iterations = 50;      //
+  float gravity = 9.81f;    // m/s², its strength along the scene's own direction
+  bool chebyshev = false;   // Chebyshev acceleration of the iterations
+
+  static constexpr float min_k = 1.0f, max_k = 1e6f;
+  static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
+  static constexpr int min_iterations = 1, max_iterations = 100;
+  static constexpr float max_gravity = 30.0f;
+};
+bool draw_simulation_section(SimulationSettings& settings, bool course_scene);
+
+// "environment": damping, friction, wind, colliders and self-collision. Friction and the
+// colliders' checkbox show only with colliders, the wind's speed and heading only for the
+// aerodynamic wind, self-collision not in a course scene.
+struct EnvironmentSettings {
+  float damping = 0.0f;       // 1/s, mass-proportional
+  float friction = 0.0f;      // Coulomb μ against the colliders
+  bool wind = false;          // wind on
+  float wind_speed = 0.0f;    // m/s (aerodynamic wind only)
+  float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
+  bool colliders = true;      // colliders shown
+  // Self-collision on, and its thickness in mm (the simulation's is in m).
+  bool self_collision = false;
+  float self_collision_mm = 10.0f;
+
+  static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
+  // limits::self_collision_thickness, 1e-5 to 1 m, in mm.
+  static constexpr float min_self_collision_mm = 0.01f, max_self_collision_mm = 1000.0f;
+};
+struct EnvironmentOffer {
+  bool colliders = false;        // the scene has colliders
+  bool aerodynamic_wind = true;  // the wind has a speed and heading (the course's has neither)
+  bool course_scene = false;     // no self-collision
+};
+void draw_environment_section(EnvironmentSettings& settings, const EnvironmentOffer& offer);
+
+// "view": the layers, the colouring and the UI scale.
+struct ViewSettings {
+  bool surface = true, wireframe = false, springs = false, points = false, ground = true;
+  int color_by = 0;       // 0 material, 1 spring strain, 2 vertex speed, 3 contacts (V cycles them)
+  float ui_scale = 1.0f;  // fonts and the panel, times the screen's scale (projectors)
+
+  static constexpr float min_ui_scale = 0.75f, max_ui_scale = 3.0f;
+};
+void draw_view_section(ViewSettings& settings);
+
+// "instruments": which plots are open.
+struct InstrumentSettings {
+  bool show_convergence = false;  // the last step's convergence plot
+  bool show_energy = false;       // the energy-over-time plot
+};
+void draw_instruments_section(InstrumentSettings& settings);
+
+// "compare": the split view and its right side's own settings; with a student's step on the
+// right (`student_side`), what it shows instead.
+struct SplitSettings {
+  bool split = false;
+  float right_k = 400.0f, right_dt = 1.0f / 60.0f;
+  int right_iterations = 5;
+  bool right_chebyshev = false;
+};
+void draw_split_section(SplitSettings& settings, bool student_side);
+
+}  // namespace wobble
+
+#endif
