@@ -77,7 +77,7 @@ CompareSettings RightSide::settings() const {
   return settings;
 }
 
-void RightSide::show_in(PanelSettings& panel) const {
+void RightSide::show_in(SplitSettings& panel) const {
   const SimulationParams& params = simulation_->params();
   panel.right_k = static_cast<float>(params.k);
   panel.right_dt = static_cast<float>(params.dt);
@@ -85,7 +85,7 @@ void RightSide::show_in(PanelSettings& panel) const {
   panel.right_chebyshev = params.chebyshev;
 }
 
-void RightSide::apply(PanelSettings& panel) {
+void RightSide::apply(SplitSettings& panel) {
   Simulation& right = *simulation_;
   const SimulationParams& params = right.params();
   if (static_cast<float>(params.k) != panel.right_k) right.set_k(panel.right_k);

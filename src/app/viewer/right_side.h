@@ -52,10 +52,10 @@ class RightSide {
   void stop();
   // The compared side's settings, and the same written into the panel's right-side fields.
   CompareSettings settings() const;
-  void show_in(PanelSettings& panel) const;
+  void show_in(SplitSettings& panel) const;
   // The panel's right-side fields applied to the compared side (the iterations clamped to what
   // its mesh allows, written back).
-  void apply(PanelSettings& panel);
+  void apply(SplitSettings& panel);
   // `seconds` of simulated time after the left side stepped them: as many steps of the right
   // side's own dt (at most 16 a frame), or one of the student's.
   void advance(const Simulation& left, double seconds);

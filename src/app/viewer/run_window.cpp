@@ -18,8 +18,6 @@
 #include "app/viewer/moving_median.h"
 #include "app/viewer/real_time_meter.h"
 #include "app/viewer/viewer.h"
-#include "app/viewer/window_recorder.h"
-#include "app/viewer/window_saves.h"
 #include "platform/glfw_window.h"
 #include "render/offscreen_target.h"
 
@@ -47,55 +45,6 @@ class WindowUi {
   WindowUi(const WindowUi&) = delete;
   WindowUi& operator=(const WindowUi&) = delete;
 };
-
-// F12: what the window shows, panel included, as the next free wobble-SCENE-NNNN.png.
-void save_screenshot(Viewer& viewer, int width, int height) {
-  RgbaImage shot;
-  shot.width = width;
-  shot.height = height;
-  glReadBuffer(GL_BACK);
-  read_framebuffer_rgba(width, height, shot.pixels);
-  const std::string path = unused_file_name(".", "wobble-" + viewer.scene().name, ".png");
-  try {
-    write_png(path, shot);
-    viewer.saved("saved " + path);
-  } catch (const std::exception& error) {
-    viewer.saved(std::string("screenshot failed: ") + error.what());
-  }
-}
-
-// The panel's record toggle (F9): each new state drawn while it is on, into a folder of its own.
-// `recorded_step` is the step count of the last frame written.
-void record_from_window(Viewer& viewer, WindowRecorder& recorder, long& recorded_step, int width,
-                        int height) {
-  if (viewer.recording() && !recorder.active()) {
-    try {
-      recorder.start(viewer.scene().name);
-    } catch (const std::exception& error) {
-      viewer.saved(std::string("recording failed: ") + error.what());
-      viewer.stop_recording();
-    }
-    recorded_step = -1;
-  }
-  if (!viewer.recording() && recorder.active()) viewer.saved(recorder.stop());
-  const long steps = viewer.shown_steps();
-  if (recorder.active() && steps != recorded_step && width > 0 && height > 0) {
-    RgbaImage image;
-    image.width = width;
-    image.height = height;
-    glReadBuffer(GL_BACK);
-    read_framebuffer_rgba(width, height, image.pixels);
-    try {
-      recorder.write(image);
-    } catch (const std::exception& error) {
-      viewer.saved(recorder.stop());
-      viewer.saved(std::string("recording stopped: ") + error.what());
-      viewer.stop_recording();
-    }
-    recorded_step = steps;
-  }
-  viewer.set_recording_status(recorder.status());
-}
 
 }  // namespace
 
@@ -130,8 +79,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
 
   RgbaImage image;
   long recorded_steps = 0;
-  WindowRecorder recorder(".", progress);
-  long window_recorded_step = -1;
+  viewer.record_window_into(".", progress);
   RealTimeMeter real_time;
   MovingMedian frame_ms;            // the panel's fps: from one frame to the next
   MovingMedian ui_work_ms;          // the panel's UI frame time: poll to swap
@@ -211,10 +159,15 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
         viewer.render(width, height, window_size, window_width > 0 ? width / window_size.x() : 1);
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       }
-      if (viewer.take_screenshot_request() && width > 0 && height > 0) {
-        save_screenshot(viewer, width, height);
-      }
-      record_from_window(viewer, recorder, window_recorded_step, width, height);
+      // F12 and the panel's record toggle (F9), from what the window shows, panel included.
+      viewer.write_window_files(width > 0 && height > 0, [width, height] {
+        RgbaImage drawn;
+        drawn.width = width;
+        drawn.height = height;
+        glReadBuffer(GL_BACK);
+        read_framebuffer_rgba(width, height, drawn.pixels);
+        return drawn;
+      });
       // --record: each step's state once, numbered by the step; --frames ends once step N is
       // drawn, and --screenshot is that picture.
       const bool last = command.frames && shown.steps >= *command.frames;

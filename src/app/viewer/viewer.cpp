@@ -6,10 +6,7 @@
 #include <optional>
 #include <utility>
 
-#include <imgui.h>
-
 #include "app/cli/scene_catalog.h"
-#include "app/interaction/environment_controls.h"
 #include "app/student/student_server.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
@@ -193,95 +190,6 @@ void Viewer::load(Scene scene) {
   arrays_stale_ = true;  // the split view's side, if any, is drawn from the next render
   copy_shown_figures();
   if (renderer_) attach_renderer();
-}
-
-void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
-  PanelStats stats = this->stats();
-  stats.show_timings = timings.show_timings;
-  stats.fps = timings.fps;
-  stats.ui_frame_ms = timings.ui_frame_ms;
-  stats.real_time_factor = timings.real_time_factor;
-  stats.steps_per_second = timings.steps_per_second;
-  stats.recording = recording_status_;
-  const StepTiming& step = last_timing_;
-  stats.step_ms = step_ms_.median();
-  stats.local_ms = local_ms_.median();
-  stats.global_ms = global_ms_.median();
-  stats.forces_ms = static_cast<float>(step.forces_ms);
-  stats.instruments_ms = static_cast<float>(step.instruments_ms);
-  stats.contact_ms = static_cast<float>(step.contact_ms);
-  stats.self_detection_ms = static_cast<float>(step.self_detection_ms);
-  stats.self_response_ms = static_cast<float>(step.self_response_ms);
-
-  // The panel's UI scale (for projectors) multiplies the screen's.
-  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
-  ui_scale *= panel_.ui_scale;
-  const PanelRequests requests = show_panel_
-                                     ? draw_control_panel(panel_, stats, scene_labels_, ui_scale)
-                                     : PanelRequests();
-  // A hidden panel covers nothing: F then frames in the whole window.
-  panel_place_ = requests.place;
-  std::vector<std::pair<std::string, std::string>> help;
-  for (const Binding& binding : viewer_bindings())
-    help.emplace_back(binding.input, binding.action);
-  draw_help_overlay(help, panel_.show_help);
-  draw_step_warning(step_warning_, ui_scale);
-  draw_overlays(ui_scale);
-  if (show_notices_) {
-    const float display = ImGui::GetIO().DisplaySize.x;
-    notices_.draw(notice_clock(), panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f,
-                  instruments_left_ >= 0.0f ? instruments_left_ : display, ui_scale);
-  }
-
-  // A new scene (or the same one afresh) waits for a running batch (see load).
-  if (requests.scene_changed) {
-    // A scene file that fails to load leaves the current scene running, the picker showing it.
-    if (!open_file(scene_sources_[panel_.scene])) {
-      panel_.scene =
-          static_cast<int>(std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) -
-                           scene_labels_.begin());
-    }
-    return;
-  }
-  if (!requests.open_path.empty()) {
-    open_file(requests.open_path);
-    return;
-  }
-  if (requests.restore_defaults) {
-    restore_defaults();
-    return;
-  }
-  // The sliders' values stay in the panel until the simulation takes them (hand_over_changes
-  // applies them again after a batch).
-  if (!batch_started_) apply_panel_settings();
-  if (requests.step_once) apply(ViewerCommand::step_once);
-  if (requests.reset) apply(ViewerCommand::reset);
-  if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
-  if (requests.save_scene) apply(ViewerCommand::save_scene);
-  if (requests.export_obj) apply(ViewerCommand::export_obj);
-  if (requests.screenshot) apply(ViewerCommand::screenshot);
-  if (requests.default_view) apply(ViewerCommand::default_view);
-}
-
-void Viewer::apply_panel_settings() {
-  // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
-  const SimulationParams& params = simulation_->params();
-  if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
-  if (static_cast<float>(params.dt) != panel_.dt) {
-    simulation_->set_dt(panel_.dt);
-    pacer_.restart();
-  }
-  // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
-  panel_.iterations = std::min(panel_.iterations, simulation_->max_iterations_for_mesh());
-  if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
-  if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
-  // The slider is gravity's strength: the scene's direction stays, sideways part included.
-  if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
-    simulation_->set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
-                             params.gravity_model);
-  }
-  apply_environment_settings();
-  apply_split_settings();
 }
 
 PanelStats Viewer::stats() const {

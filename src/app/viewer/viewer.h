@@ -20,6 +20,7 @@
 #include "app/viewer/pick_and_drag.h"
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/right_side.h"
+#include "app/viewer/save_and_record.h"
 #include "app/viewer/step_pacer.h"
 #include "app/viewer/step_thread.h"
 #include "app/viewer/view_camera.h"
@@ -86,19 +87,6 @@ class Viewer {
   // as load_scene reads it. A file that does not load leaves the current scene running, the
   // reason shown in the panel's notes; returns whether it loaded.
   bool open_file(const std::string& path);
-  // F12 asked for a screenshot since the last call (the window loop reads the pixels after
-  // drawing and calls saved()).
-  bool take_screenshot_request() {
-    const bool asked = screenshot_requested_;
-    screenshot_requested_ = false;
-    return asked;
-  }
-  // Tell the user that a file was written or why not: on screen for a few seconds (Notices),
-  // and among the panel's notes.
-  void saved(const std::string& what) {
-    scene_.notes.push_back(what);
-    notices_.post(what, notice_clock());
-  }
   // The on-screen confirmations of what was written, and what a scene does as it opens (its
   // wind blowing, and the key that turns it off).
   const Notices& notices() const { return notices_; }
@@ -107,11 +95,15 @@ class Viewer {
   void show_notices(bool on) { show_notices_ = on; }
   // What the scene picker lists, in its order.
   const std::vector<std::string>& scene_labels() const { return scene_labels_; }
-  // Whether the window is to write each new state drawn as a PNG (the panel's "record", F9),
-  // and what the panel says about it meanwhile ("DIR/ (N frames)"; empty when not recording).
-  bool recording() const { return panel_.recording; }
-  void stop_recording() { panel_.recording = false; }
-  void set_recording_status(std::string status) { recording_status_ = std::move(status); }
+  // The window: the panel's "record" (F9) records into new folders in `folder`, `progress`
+  // told of each (headless images never record from the panel).
+  void record_window_into(std::string folder, std::ostream& progress) {
+    save_and_record_.record_into(std::move(folder), progress);
+  }
+  // The window, after drawing a frame: the screenshot F12 asked for, and while recording the
+  // new state. `read_frame` reads the frame drawn, when `drawn` (a minimized window draws
+  // none). What was written, or why not, shows as notices.
+  void write_window_files(bool drawn, const std::function<RgbaImage()>& read_frame);
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();
@@ -234,8 +226,14 @@ class Viewer {
   PanelStats simulation_stats() const;
 
   void apply(ViewerCommand command);
-  // Ctrl+S: the scene with its pins and settings as wobble-SCENE-scene-NNNN.json (scene_save.h).
+  // Ctrl+S (SaveAndRecord), the picker offering the file from then on.
   void save_scene();
+  // Tell the user that a file was written or why not: on screen for a few seconds (Notices),
+  // and among the panel's notes.
+  void saved(const std::string& what) {
+    scene_.notes.push_back(what);
+    notices_.post(what, notice_clock());
+  }
   void apply_panel_settings();
   // viewer_environment.cpp: damping, friction, wind and colliders.
   void show_environment_in_panel();
@@ -271,7 +269,15 @@ class Viewer {
   Scene scene_;
   std::unique_ptr<Simulation> simulation_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
-  PanelSettings panel_;
+  // The panel's settings that the viewer draws and applies itself (the components keep theirs).
+  struct OwnPanelSettings : SceneRowSettings,
+                            PlaySettings,
+                            SimulationSettings,
+                            EnvironmentSettings,
+                            ViewSettings,
+                            InstrumentSettings,
+                            SplitSettings {};
+  OwnPanelSettings panel_;
   bool show_panel_ = true;  // Tab hides the panel
   // Whether the scene has no faces, and the springs and points layers chosen for scenes with
   // faces while such a scene shows both.
@@ -308,10 +314,9 @@ class Viewer {
   double shown_student_distance_ = 0.0;
   std::vector<float> shown_student_colors_;
   bool quit_ = false;
-  bool screenshot_requested_ = false;
   Notices notices_;
   bool show_notices_ = false;
-  std::string recording_status_;
+  SaveAndRecord save_and_record_;  // the record toggle, recordings and saves (a component)
   MovingMedian step_ms_, local_ms_, global_ms_;  // the panel's step times
   StepTiming last_timing_;                       // the last good step's
   bool step_requested_ = false;

@@ -3,10 +3,7 @@
 
 #include "app/cli/scene_catalog.h"
 #include "app/interaction/environment_controls.h"
-#include "app/viewer/scene_save.h"
 #include "app/viewer/viewer.h"
-#include "app/viewer/window_saves.h"
-#include "io/write_obj.h"
 
 namespace wobble {
 
@@ -49,25 +46,20 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
 }
 
 void Viewer::save_scene() {
-  const std::string path = unused_file_name(".", "wobble-" + scene_.name + "-scene", ".json");
-  try {
-    const Eigen::Vector3d eye = camera_eye(view_camera_.camera()).cast<double>();
-    save_current_scene(
-        path, scene_, *simulation_,
-        std::make_pair(eye, Eigen::Vector3d(view_camera_.camera().target.cast<double>())));
-    // The picker offers it from now on, under its own name.
-    if (std::find(scene_sources_.begin(), scene_sources_.end(), path) == scene_sources_.end()) {
-      scene_sources_.push_back(path);
-      scene_labels_.push_back(scene_label(path));
-    }
-    saved("saved the scene as " + path + " (wobble " + path +
-          " opens it; the scene picker lists it as " + scene_label(path) + ")");
-  } catch (const std::exception& error) {
-    saved(std::string("saving the scene failed: ") + error.what());
+  const SavedScene saved_scene =
+      save_and_record_.save_scene(scene_, *simulation_, view_camera_.camera());
+  // The picker offers it from now on, under its own name.
+  const std::string& path = saved_scene.path;
+  if (!path.empty() &&
+      std::find(scene_sources_.begin(), scene_sources_.end(), path) == scene_sources_.end()) {
+    scene_sources_.push_back(path);
+    scene_labels_.push_back(scene_label(path));
   }
+  saved(saved_scene.message);
 }
 
 void Viewer::apply(ViewerCommand command) {
+  if (save_and_record_.command(command)) return;
   switch (command) {
     case ViewerCommand::toggle_pause:
       panel_.paused = !panel_.paused;
@@ -134,26 +126,15 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::toggle_panel:
       show_panel_ = !show_panel_;
       break;
-    case ViewerCommand::screenshot:
-      screenshot_requested_ = true;
-      break;
     case ViewerCommand::export_obj:
       // The state the user sees, once a running batch finished.
-      change([this] {
-        const std::string path = unused_file_name(".", "wobble-" + scene_.name, ".obj");
-        try {
-          write_obj(path, simulation_->positions(), scene_.network.F, scene_.network.E);
-          saved("exported " + path);
-        } catch (const std::exception& error) {
-          saved(std::string("export failed: ") + error.what());
-        }
-      });
+      change([this] { saved(save_and_record_.export_obj(scene_, *simulation_)); });
       break;
     case ViewerCommand::save_scene:
       change([this] { save_scene(); });  // the settings of the state drawn
       break;
+    case ViewerCommand::screenshot:  // SaveAndRecord's
     case ViewerCommand::toggle_record:
-      panel_.recording = !panel_.recording;
       break;
     case ViewerCommand::close_overlays:
       panel_.show_help = false;

@@ -1,0 +1,111 @@
+// The viewer's files: the scene (Ctrl+S), the positions (F11), the window (F12) and its
+// recordings (F9), each under the next free number in the working folder.
+#include "app/viewer/save_and_record.h"
+
+#include <exception>
+#include <utility>
+
+#include "app/cli/scene_catalog.h"
+#include "app/viewer/scene_save.h"
+#include "app/viewer/window_saves.h"
+#include "io/write_obj.h"
+
+namespace wobble {
+
+SaveRowRequests SaveAndRecord::draw_panel_rows() {
+  std::string status;
+  if (recorder_) status = recorder_->status();
+  SaveRowRequests requests = draw_save_rows(recording_, status);
+  if (requests.screenshot) command(ViewerCommand::screenshot);
+  requests.screenshot = false;  // taken
+  return requests;
+}
+
+bool SaveAndRecord::command(ViewerCommand command) {
+  switch (command) {
+    case ViewerCommand::screenshot:
+      screenshot_requested_ = true;
+      return true;
+    case ViewerCommand::toggle_record:
+      recording_ = !recording_;
+      return true;
+    default:
+      return false;
+  }
+}
+
+SavedScene SaveAndRecord::save_scene(const Scene& scene, const Simulation& simulation,
+                                     const OrbitCamera& camera) const {
+  const std::string path = unused_file_name(".", "wobble-" + scene.name + "-scene", ".json");
+  try {
+    const Eigen::Vector3d eye = camera_eye(camera).cast<double>();
+    save_current_scene(path, scene, simulation,
+                       std::make_pair(eye, Eigen::Vector3d(camera.target.cast<double>())));
+    return SavedScene{"saved the scene as " + path + " (wobble " + path +
+                          " opens it; the scene picker lists it as " + scene_label(path) + ")",
+                      path};
+  } catch (const std::exception& error) {
+    return SavedScene{std::string("saving the scene failed: ") + error.what(), std::string()};
+  }
+}
+
+std::string SaveAndRecord::export_obj(const Scene& scene, const Simulation& simulation) const {
+  const std::string path = unused_file_name(".", "wobble-" + scene.name, ".obj");
+  try {
+    write_obj(path, simulation.positions(), scene.network.F, scene.network.E);
+    return "exported " + path;
+  } catch (const std::exception& error) {
+    return std::string("export failed: ") + error.what();
+  }
+}
+
+void SaveAndRecord::record_into(std::string folder, std::ostream& progress) {
+  recorder_ = std::make_unique<WindowRecorder>(std::move(folder), progress);
+}
+
+std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, long steps,
+                                                    bool drawn,
+                                                    const std::function<RgbaImage()>& read_frame) {
+  std::vector<std::string> told;
+  // What the window shows, panel included.
+  if (screenshot_requested_ && drawn) {
+    const std::string path = unused_file_name(".", "wobble-" + scene, ".png");
+    try {
+      write_png(path, read_frame());
+      told.push_back("saved " + path);
+    } catch (const std::exception& error) {
+      told.push_back(std::string("screenshot failed: ") + error.what());
+    }
+  }
+  screenshot_requested_ = false;
+  if (recorder_) record(scene, steps, drawn, read_frame, told);
+  return told;
+}
+
+void SaveAndRecord::record(const std::string& scene, long steps, bool drawn,
+                           const std::function<RgbaImage()>& read_frame,
+                           std::vector<std::string>& told) {
+  // Each new state drawn while the toggle is on, into a folder of its own.
+  if (recording_ && !recorder_->active()) {
+    try {
+      recorder_->start(scene);
+    } catch (const std::exception& error) {
+      told.push_back(std::string("recording failed: ") + error.what());
+      recording_ = false;
+    }
+    recorded_step_ = -1;
+  }
+  if (!recording_ && recorder_->active()) told.push_back(recorder_->stop());
+  if (recorder_->active() && steps != recorded_step_ && drawn) {
+    try {
+      recorder_->write(read_frame());
+    } catch (const std::exception& error) {
+      told.push_back(recorder_->stop());
+      told.push_back(std::string("recording stopped: ") + error.what());
+      recording_ = false;
+    }
+    recorded_step_ = steps;
+  }
+}
+
+}  // namespace wobble

@@ -1,0 +1,74 @@
+#ifndef WOBBLE_APP_VIEWER_SAVE_AND_RECORD_H
+#define WOBBLE_APP_VIEWER_SAVE_AND_RECORD_H
+
+#include <functional>
+#include <iosfwd>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/interaction/input_mapping.h"
+#include "app/viewer/window_recorder.h"
+#include "io/png_image.h"
+#include "render/camera.h"
+#include "sim/scene.h"
+#include "sim/simulation.h"
+#include "ui/panel_sections.h"
+
+namespace wobble {
+
+// A scene saved by Ctrl+S: what to tell the user, and the file written (empty when it failed).
+struct SavedScene {
+  std::string message;
+  std::string path;
+};
+
+// Recording and saving, a component of the viewer: the panel's save rows (Save scene, OBJ, PNG,
+// record), F12, F11, Ctrl+S and F9, and the files they write into the working folder, each
+// under the next free number (window_saves.h). It owns the record toggle and the recording in
+// progress, and the screenshot asked for; it writes the scene and the OBJ when the viewer hands
+// it the simulation (between batches), and the window's pictures when the window hands it the
+// frame drawn. Each write returns what to tell the user.
+class SaveAndRecord {
+ public:
+  // The UI's side.
+  // The panel's save rows (panel_sections.h). It takes PNG and record itself; Save scene and
+  // OBJ it returns, for the viewer to carry out on the simulation's side (save_scene,
+  // export_obj).
+  SaveRowRequests draw_panel_rows();
+  // F12 (a screenshot of this frame) and F9 (the record toggle); returns whether it took
+  // `command`.
+  bool command(ViewerCommand command);
+  bool recording() const { return recording_; }
+
+  // The simulation's side, once a running batch finished.
+  // Ctrl+S: the scene with its pins and settings, and `camera`'s view, as
+  // wobble-SCENE-scene-NNNN.json (scene_save.h).
+  SavedScene save_scene(const Scene& scene, const Simulation& simulation,
+                        const OrbitCamera& camera) const;
+  // F11: the simulation's positions as wobble-SCENE-NNNN.obj.
+  std::string export_obj(const Scene& scene, const Simulation& simulation) const;
+
+  // The window's side (headless images never record from the panel).
+  // Record into new folders in `folder` from now on, `progress` told of each (window_recorder.h).
+  void record_into(std::string folder, std::ostream& progress);
+  // After a frame of `scene` is drawn, its state after `steps` steps: the screenshot asked for
+  // as wobble-SCENE-NNNN.png, and while recording each new state. `read_frame` reads the frame
+  // drawn, when `drawn` (a minimized window draws none). Returns what to tell the user, in
+  // order.
+  std::vector<std::string> write_frame(const std::string& scene, long steps, bool drawn,
+                                       const std::function<RgbaImage()>& read_frame);
+
+ private:
+  void record(const std::string& scene, long steps, bool drawn,
+              const std::function<RgbaImage()>& read_frame, std::vector<std::string>& told);
+
+  bool recording_ = false;  // the record toggle
+  bool screenshot_requested_ = false;
+  std::unique_ptr<WindowRecorder> recorder_;  // null: nowhere to record (headless)
+  long recorded_step_ = -1;                   // the step count of the last frame recorded
+};
+
+}  // namespace wobble
+
+#endif
