@@ -65,7 +65,9 @@ void Instruments::take(ConvergenceTrace& trace, long trace_step,
     energy_history_.add(time, sample);
 }
 
-float Instruments::draw(bool& convergence_open, bool& energy_open, float ui_scale) {
+float Instruments::draw(float ui_scale) {
+  bool& convergence_open = open_.show_convergence;
+  bool& energy_open = open_.show_energy;
   // The plots stand in a column at the window's right (instrument_windows.h).
   const float display = ImGui::GetIO().DisplaySize.x;
   const float column_left =

@@ -6,6 +6,7 @@
 
 #include "sim/instruments/convergence_trace.h"
 #include "sim/instruments/frame_energy.h"
+#include "ui/panel_sections.h"
 
 namespace wobble {
 
@@ -17,14 +18,25 @@ struct EnergyHistory {
 };
 
 // The classroom instruments, a component of the viewer: the convergence of the last step and
-// the energy over time. It owns what the plots show; the viewer hands it each finished batch's
-// results (on the UI's side, between batches) and lets it draw once a frame. Which plots are
-// open is the panel's setting, passed in.
+// the energy over time. It owns which plots are open (the panel's "instruments" section, which
+// it draws, and G) and what they show; the viewer hands it each finished batch's results (on
+// the UI's side, between batches) and lets it draw once a frame.
 class Instruments {
  public:
+  // The panel's "instruments" section (panel_sections.h).
+  void draw_panel_section() { draw_instruments_section(open_); }
+  // Open or close both plots (--plots).
+  void open_both(bool open) { open_.show_convergence = open_.show_energy = open; }
+  // G: both plots together, since a class wants the two side by side; open unless both are.
+  void toggle_both() { open_both(!(open_.show_convergence && open_.show_energy)); }
+  bool convergence_open() const { return open_.show_convergence; }
+  bool energy_open() const { return open_.show_energy; }
+  // Whether either plot is open: the plots' column stands at the window's right.
+  bool column_open() const { return convergence_open() || energy_open(); }
+
   // Whether a simulation must record its convergence: the plot is open, or a CSV asks
   // (set_convergence_required, which lasts through scene changes).
-  bool wants_convergence(bool plot_open) const { return plot_open || convergence_required_; }
+  bool wants_convergence() const { return open_.show_convergence || convergence_required_; }
   void set_convergence_required(bool required) { convergence_required_ = required; }
   // Forget what was shown (a new scene, Reset).
   void clear();
@@ -33,14 +45,15 @@ class Instruments {
   void take(ConvergenceTrace& trace, long trace_step,
             const std::vector<std::pair<double, FrameEnergy>>& energy);
   // ImGui, between NewFrame and Render: the open plots, in a column at the window's right. A
-  // plot the user closes clears its flag. Returns the column's left edge (ImGui's units), or
-  // a negative number when no plot is open.
-  float draw(bool& convergence_open, bool& energy_open, float ui_scale);
+  // plot the user closes is closed. Returns the column's left edge (ImGui's units), or a
+  // negative number when no plot is open.
+  float draw(float ui_scale);
 
   const ConvergenceTrace& shown_trace() const { return shown_trace_; }
   const EnergyHistory& energy_history() const { return energy_history_; }
 
  private:
+  InstrumentSettings open_;  // which plots are open
   bool convergence_required_ = false;
   ConvergenceTrace shown_trace_;  // what the convergence window shows
   long shown_trace_step_ = 0;

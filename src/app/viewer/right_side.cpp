@@ -41,6 +41,12 @@ void RightSide::start_compare(const Scene& scene, const Simulation& left,
   behind_ = 0.0;
   warning_.clear();
   sync(left);
+  const SimulationParams& params = simulation_->params();
+  panel_.split = true;
+  panel_.right_k = static_cast<float>(params.k);
+  panel_.right_dt = static_cast<float>(params.dt);
+  panel_.right_iterations = params.iterations;
+  panel_.right_chebyshev = params.chebyshev;
 }
 
 void RightSide::start_student(const Scene& scene, const Simulation& left) {
@@ -57,6 +63,7 @@ void RightSide::start_student(const Scene& scene, const Simulation& left) {
       std::make_unique<Simulation>(network, scene.pins, left.params(), scene.initial_velocity);
   simulation_->set_state(left.positions(), left.previous_positions());
   warning_ = student_->running() ? "" : student_->error();
+  panel_.split = true;
   student_distance_ = 0.0;
   student_colors_.assign(3 * static_cast<std::size_t>(network.V.rows()), 0.0f);
 }
@@ -77,15 +84,8 @@ CompareSettings RightSide::settings() const {
   return settings;
 }
 
-void RightSide::show_in(SplitSettings& panel) const {
-  const SimulationParams& params = simulation_->params();
-  panel.right_k = static_cast<float>(params.k);
-  panel.right_dt = static_cast<float>(params.dt);
-  panel.right_iterations = params.iterations;
-  panel.right_chebyshev = params.chebyshev;
-}
-
-void RightSide::apply(SplitSettings& panel) {
+void RightSide::apply() {
+  SplitSettings& panel = panel_;
   Simulation& right = *simulation_;
   const SimulationParams& params = right.params();
   if (static_cast<float>(params.k) != panel.right_k) right.set_k(panel.right_k);

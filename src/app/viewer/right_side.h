@@ -9,7 +9,7 @@
 #include "app/student/student_step.h"
 #include "sim/scene.h"
 #include "sim/simulation.h"
-#include "ui/control_panel.h"
+#include "ui/panel_sections.h"
 
 namespace wobble {
 
@@ -18,8 +18,10 @@ namespace wobble {
 // fast_mass_springs_step_sparse in a process of its own (--student). It owns that simulation,
 // how far it is behind the left side, why it stopped, and the student's step; everything else
 // (pins and drags, gravity, damping, wind, friction, colliders) it copies from the left side,
-// which the viewer hands it read-only, before each of its steps. Called on the simulation's
-// side of the viewer only (between batches, or by the batch itself).
+// which the viewer hands it read-only, before each of its steps. It also owns the panel's
+// "compare" section: the split view's checkbox and the compared side's settings, drawn on the
+// UI's side and applied by the viewer between batches. Everything else is called on the
+// simulation's side of the viewer only (between batches, or by the batch itself).
 class RightSide {
  public:
   // Below this distance (m) a student's vertex counts as on Wobble's: rounding differences of
@@ -29,6 +31,12 @@ class RightSide {
   // `student_server`: the step server built from a student's folder (student_server.h), or
   // empty for none.
   explicit RightSide(std::string student_server) : student_server_(std::move(student_server)) {}
+
+  // The UI's side: the panel's "compare" section (panel_sections.h).
+  void draw_panel_section() { draw_split_section(panel_, student()); }
+  // Whether the section's checkbox asks for a split view (2 flips it).
+  bool split_asked() const { return panel_.split; }
+  void ask_split(bool split) { panel_.split = split; }
 
   // Whether wobble --student asked for a student's step on the right.
   bool wants_student() const { return !student_server_.empty(); }
@@ -43,19 +51,18 @@ class RightSide {
   double student_distance() const { return student_distance_; }
   const std::vector<float>& student_colors() const { return student_colors_; }
 
-  // Compare `settings` against `left`, from its current state.
+  // Compare `settings` against `left`, from its current state; the section shows them.
   void start_compare(const Scene& scene, const Simulation& left, const CompareSettings& settings);
   // The student's step beside `left` (a server that does not start leaves its error as the
   // warning).
   void start_student(const Scene& scene, const Simulation& left);
   // No right side any more.
   void stop();
-  // The compared side's settings, and the same written into the panel's right-side fields.
+  // The compared side's settings.
   CompareSettings settings() const;
-  void show_in(SplitSettings& panel) const;
-  // The panel's right-side fields applied to the compared side (the iterations clamped to what
-  // its mesh allows, written back).
-  void apply(SplitSettings& panel);
+  // The section's settings applied to the compared side (the iterations clamped to what its
+  // mesh allows, shown so).
+  void apply();
   // `seconds` of simulated time after the left side stepped them: as many steps of the right
   // side's own dt (at most 16 a frame), or one of the student's.
   void advance(const Simulation& left, double seconds);
@@ -68,6 +75,7 @@ class RightSide {
   void sync(const Simulation& left);
   void advance_student(const Simulation& left);
 
+  SplitSettings panel_;  // the "compare" section's, on the UI's side
   std::unique_ptr<Simulation> simulation_;
   double behind_ = 0.0;  // simulated time it is behind the left side (s)
   std::string warning_;

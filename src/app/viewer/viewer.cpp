@@ -70,7 +70,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.points = settings.layers.points;
   panel_.ground = settings.layers.ground;
   panel_.color_by = static_cast<int>(settings.color_by);
-  panel_.show_convergence = panel_.show_energy = settings.plots;
+  instruments_.open_both(settings.plots);
   load(std::move(scene));
   drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
   if (settings.compare && !right_.student()) start_split(*settings.compare);

@@ -166,9 +166,7 @@ class Viewer {
   // these. Between ImGui's NewFrame and Render.
   void draw_overlays(float ui_scale);
   // Whether draw_overlays has anything to draw.
-  bool has_overlays() const {
-    return right_.simulation() || panel_.show_convergence || panel_.show_energy;
-  }
+  bool has_overlays() const { return right_.simulation() || instruments_.column_open(); }
   // The split view's right side, or null when the view is not split.
   const Simulation* right_side() const { return right_.simulation(); }
   // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.
@@ -274,9 +272,7 @@ class Viewer {
                             PlaySettings,
                             SimulationSettings,
                             EnvironmentSettings,
-                            ViewSettings,
-                            InstrumentSettings,
-                            SplitSettings {};
+                            ViewSettings {};
   OwnPanelSettings panel_;
   bool show_panel_ = true;  // Tab hides the panel
   // Whether the scene has no faces, and the springs and points layers chosen for scenes with

@@ -15,8 +15,6 @@ namespace wobble {
 
 void Viewer::start_split(const CompareSettings& settings) {
   right_.start_compare(scene_, *simulation_, settings);
-  right_.show_in(panel_);
-  panel_.split = true;
   // A shape framed beside the panel (or by the scene's own camera, made for the whole window)
   // would sit off centre in both halves: each half frames it in its middle, from the same
   // direction.
@@ -29,7 +27,6 @@ void Viewer::start_split(const CompareSettings& settings) {
 
 void Viewer::start_student() {
   right_.start_student(scene_, *simulation_);
-  panel_.split = true;
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
 }
@@ -37,19 +34,19 @@ void Viewer::start_student() {
 void Viewer::stop_split() {
   right_.stop();
   view_camera_.frame_next();  // the whole window again, beside the panel
-  panel_.split = false;
+  right_.ask_split(false);
 }
 
 void Viewer::apply_split_settings() {
   if (right_.student()) {  // the student's side stays, with the seed's settings
-    panel_.split = true;
+    right_.ask_split(true);
     return;
   }
-  if (panel_.split && !right_.simulation()) {
+  if (right_.split_asked() && !right_.simulation()) {
     start_split(default_compare_settings(simulation_->params()));
   }
-  if (!panel_.split && right_.simulation()) stop_split();
-  if (right_.simulation()) right_.apply(panel_);
+  if (!right_.split_asked() && right_.simulation()) stop_split();
+  if (right_.simulation()) right_.apply();
 }
 
 void Viewer::draw_overlays(float ui_scale) {
@@ -110,7 +107,7 @@ void Viewer::draw_student_legend(float ui_scale) {
   legend.note = shown_student_distance_ <= distance_floor ? "the same as Wobble's (within 1e-6 m)"
                                                           : "largest distance this step";
   LegendClearance clearance;
-  clearance.instrument_column = panel_.show_convergence || panel_.show_energy;
+  clearance.instrument_column = instruments_.column_open();
   clearance.side_labels = true;
   draw_color_legend(legend, ui_scale, clearance);
 }

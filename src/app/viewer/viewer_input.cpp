@@ -79,16 +79,13 @@ void Viewer::apply(ViewerCommand command) {
       });
       break;
     case ViewerCommand::toggle_split:
-      panel_.split = !panel_.split;
+      right_.ask_split(!right_.split_asked());
       change([this] { apply_split_settings(); });
       break;
-    case ViewerCommand::toggle_plots: {
-      // Both plots together: a class wants the two side by side.
-      const bool show = !(panel_.show_convergence && panel_.show_energy);
-      panel_.show_convergence = panel_.show_energy = show;
+    case ViewerCommand::toggle_plots:
+      instruments_.toggle_both();
       change([this] { update_recording(); });
       break;
-    }
     case ViewerCommand::toggle_wireframe:
       panel_.wireframe = !panel_.wireframe;
       break;

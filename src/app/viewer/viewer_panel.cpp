@@ -54,8 +54,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
       draw_environment_section(panel_, offer);
     };
     parts.view = [&] { draw_view_section(panel_); };
-    parts.instruments = [&] { draw_instruments_section(panel_); };
-    parts.compare = [&] { draw_split_section(panel_, stats.student_side); };
+    parts.instruments = [&] { instruments_.draw_panel_section(); };
+    parts.compare = [&] { right_.draw_panel_section(); };
     panel_place_ = draw_control_panel(parts, stats, panel_.paused, ui_scale);
   } else {
     panel_place_ = PanelPlace();  // a hidden panel covers nothing: F frames in the whole window

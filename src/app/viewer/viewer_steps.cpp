@@ -51,8 +51,8 @@ int Viewer::steps_to_start(std::optional<double> now, double frame_seconds) {
 void Viewer::start_batch(int steps) {
   batch_ = Batch();
   batch_.steps = steps;
-  batch_.record_trace = panel_.show_convergence;
-  batch_.record_energy = panel_.show_energy;
+  batch_.record_trace = instruments_.convergence_open();
+  batch_.record_energy = instruments_.energy_open();
   batch_.timings.reserve(steps);
   batch_started_ = true;
   if (step_thread_) {
