@@ -59,6 +59,11 @@ ViewerSettings viewer_settings(const CommandLine& command);
 // around it differ between the two modes. One frame is, in this order:
 //   handle_events → build_ui → advance (headless) or exchange (window) → build_legend → render
 //
+// Its components each own their state and draw their own part, called by the viewer in that
+// order: ViewCamera (the camera), PickAndDrag (the mouse), SaveAndRecord (the files), Instruments
+// (the plots), RightSide (the split view's right side) and Notices. The viewer hands them what
+// they act on; none reaches into another.
+//
 // The simulation's side and the UI's: the simulation, the split view's right side, the student's
 // step and the scripted drags are touched by one batch of steps at a time. In the window a batch
 // runs on a thread of its own (step_on_thread) while the UI goes on drawing the state the last
@@ -245,7 +250,7 @@ class Viewer {
   void apply_split_settings();
   // The split view's corner labels for the state drawn.
   void describe_sides();
-  // viewer_student.cpp: a student's step on the right.
+  // A student's step on the right.
   void start_student();
   void draw_student_legend(float ui_scale);
   // Split, the part of a window `window` wide that the two sides share (window units): what
