@@ -71,8 +71,10 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   panel_.ground = settings.layers.ground;
   panel_.color_by = static_cast<int>(settings.color_by);
   instruments_.open_both(settings.plots);
+  // After each step, on the thread that took it, the split view's right side catches up.
+  host_.set_after_step([this](const Simulation& left) { right_.advance(left, left.params().dt); });
   load(std::move(scene));
-  drag_script_ = DragScript(settings.drags, scene_.network.V.rows());
+  host_.set_drag_script(DragScript(settings.drags, scene_.network.V.rows()));
   if (settings.compare && !right_.student()) start_split(*settings.compare);
 }
 
@@ -90,7 +92,7 @@ bool Viewer::open_file(const std::string& path) {
 
 void Viewer::restore_defaults() {
   // scene_ is the scene as it opened: the panel's changes went to the simulation only.
-  if (batch_started_) finish_steps();
+  if (host_.batch_started()) finish_steps();
   Scene opened = scene_;
   load(std::move(opened));
 }
@@ -98,7 +100,7 @@ void Viewer::restore_defaults() {
 void Viewer::load(Scene scene) {
   // A running batch finishes first and what the user did before is handed over, so that the new
   // scene's settings come after it (loading takes longer than a step anyway).
-  if (batch_started_) finish_steps();
+  if (host_.batch_started()) finish_steps();
   // Everything that can fail comes first, so a scene that does not load leaves the viewer as it
   // was.
   RgbaImage texture = scene.look.texture.empty() ? RgbaImage() : read_png(scene.look.texture);
@@ -120,11 +122,9 @@ void Viewer::load(Scene scene) {
   if (right_.simulation() && !right_.student()) split = right_.settings();
   right_.stop();
   pick_and_drag_.forget();
-  pacer_.restart();
-  drag_script_ = DragScript();  // its vertex numbers belong to the first scene
   step_warning_.clear();
   scene_ = std::move(scene);
-  simulation_ = std::move(simulation);
+  host_.replace(std::move(simulation));  // its scripted drags forgotten, its clock afresh
   instruments_.clear();
   update_recording();
   if (scene_.params.wind.on) {
@@ -193,7 +193,7 @@ void Viewer::load(Scene scene) {
 }
 
 PanelStats Viewer::stats() const {
-  if (batch_started_) return shown_stats_;
+  if (host_.batch_started()) return shown_stats_;
   return simulation_stats();
 }
 
@@ -202,16 +202,16 @@ PanelStats Viewer::simulation_stats() const {
   stats.vertices = static_cast<int>(scene_.network.V.rows());
   stats.springs = static_cast<int>(scene_.network.E.rows());
   // A free vertex held by the mouse is pinned only for the drag: it is not one of the pins.
-  stats.pins = simulation_->pin_count() - (pick_and_drag_.holds_free_vertex() ? 1 : 0);
+  stats.pins = host_.simulation().pin_count() - (pick_and_drag_.holds_free_vertex() ? 1 : 0);
   stats.threads = shared_thread_setting().threads;
-  stats.steps = simulation_->steps_taken();
-  stats.simulated_seconds = simulation_->steps_taken() * simulation_->params().dt;
+  stats.steps = host_.simulation().steps_taken();
+  stats.simulated_seconds = host_.simulation().steps_taken() * host_.simulation().params().dt;
   stats.notes = scene_.notes;
-  stats.has_colliders = !simulation_->colliders().empty();
-  stats.aerodynamic_wind = simulation_->params().wind.model == WindModel::aerodynamic;
-  stats.contacts = simulation_->contact_count();
-  stats.self_collision = simulation_->params().self_collision.on;
-  stats.self_contacts = simulation_->self_contact_count();
+  stats.has_colliders = !host_.simulation().colliders().empty();
+  stats.aerodynamic_wind = host_.simulation().params().wind.model == WindModel::aerodynamic;
+  stats.contacts = host_.simulation().contact_count();
+  stats.self_collision = host_.simulation().params().self_collision.on;
+  stats.self_contacts = host_.simulation().self_contact_count();
   stats.student_side = right_.student();
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
   stats.warning = step_warning_;

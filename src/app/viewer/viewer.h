@@ -11,7 +11,6 @@
 #include "app/cli/command_line.h"
 #include "app/cli/compare_settings.h"
 #include "app/interaction/collider_mesh.h"
-#include "app/interaction/drag_script.h"
 #include "app/interaction/input_mapping.h"
 #include "app/student/student_step.h"
 #include "app/viewer/instruments.h"
@@ -21,8 +20,7 @@
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/right_side.h"
 #include "app/viewer/save_and_record.h"
-#include "app/viewer/step_pacer.h"
-#include "app/viewer/step_thread.h"
+#include "app/viewer/simulation_host.h"
 #include "app/viewer/view_camera.h"
 #include "io/png_image.h"
 #include "platform/input_event.h"
@@ -141,13 +139,13 @@ class Viewer {
   // elsewhere, before it writes what it has).
   void stop_stepping() noexcept;
   // Whether a batch of steps runs on the stepping thread now.
-  bool stepping() const { return batch_started_ && step_thread_ && step_thread_->running(); }
+  bool stepping() const { return host_.stepping(); }
   // Never step beyond this many steps in all (the window's --frames).
-  void set_step_limit(long steps) { step_limit_ = steps; }
+  void set_step_limit(long steps) { host_.set_step_limit(steps); }
   // Called after each good step, on the thread that took it, with the simulation (the CSV rows
   // and OBJ sequences of the window).
   void set_step_observer(std::function<void(const Simulation&)> observer) {
-    step_observer_ = std::move(observer);
+    host_.set_step_observer(std::move(observer));
   }
   // The steps taken as of the state drawn.
   long shown_steps() const { return shown_stats_.steps; }
@@ -192,12 +190,12 @@ class Viewer {
   // holding something or turning the camera. A paused viewer with none of these can wait for
   // input instead of redrawing the same picture.
   bool animating() const {
-    return !panel_.paused || step_requested_ || pick_and_drag_.busy() || batch_started_ ||
-           !pending_.empty();
+    return !panel_.paused || step_requested_ || pick_and_drag_.busy() || host_.batch_started() ||
+           host_.changes_waiting();
   }
   // Why the last step was rolled back (shown in the view until the next good step), or empty.
   const std::string& step_warning() const { return step_warning_; }
-  const Simulation& simulation() const { return *simulation_; }
+  const Simulation& simulation() const { return host_.simulation(); }
   const Scene& scene() const { return scene_; }
   const OrbitCamera& camera() const { return view_camera_.camera(); }
   // How far the mouse may take the camera, for this scene's shape and ground.
@@ -220,7 +218,7 @@ class Viewer {
   // Headless (no `now`): one step, unless paused.
   int steps_to_start(std::optional<double> now, double frame_seconds);
   void start_batch(int steps);
-  void run_batch();  // on the thread that takes the steps
+  // The finished batch's figures, plots and warning, taken into the UI.
   void finish_batch();
   // Copy what the UI draws and shows out of the simulation's side.
   void refresh_shown_state();
@@ -270,7 +268,6 @@ class Viewer {
   PointerView pointer_view(const Eigen::Vector2f& window_size) const;
 
   Scene scene_;
-  std::unique_ptr<Simulation> simulation_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
   // The panel's settings that the viewer draws and applies itself (the components keep theirs).
   struct OwnPanelSettings : SceneRowSettings,
@@ -287,27 +284,6 @@ class Viewer {
   ViewCamera view_camera_;          // the camera, its opening view and framing (a component)
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
-  // One batch of steps: what it was asked for, and what it left for finish_batch.
-  struct Batch {
-    int steps = 0;
-    bool record_trace = false, record_energy = false;  // as the plots were open at its start
-    int steps_taken = 0;
-    std::vector<StepTiming> timings;  // of each good step
-    ConvergenceTrace trace;           // the last step's, when recorded
-    long trace_step = 0;
-    std::vector<std::pair<double, FrameEnergy>> energy;  // (time, energy) after each step
-    StepStatus status = StepStatus::ok;                  // the step that failed, if one did
-    long failed_step = 0;
-    bool scripted_drag = false;  // a scripted drag held a vertex at the failure
-    double stiffness_ratio = 0.0;
-  };
-  Batch batch_;
-  bool batch_started_ = false;  // a batch started whose results finish_batch has not taken
-  std::unique_ptr<StepThread> step_thread_;     // null: batches run on the caller
-  std::vector<std::function<void()>> pending_;  // the user's changes while a batch ran
-  std::function<void(const Simulation&)> step_observer_;
-  StepPacer pacer_;
-  long step_limit_ = -1;  // < 0: none
   // What the UI shows of the simulation's side, as of the last refresh_shown_state.
   PanelStats shown_stats_;
   std::string shown_twin_warning_;
@@ -322,7 +298,6 @@ class Viewer {
   StepTiming last_timing_;                       // the last good step's
   bool step_requested_ = false;
   std::string step_warning_;
-  DragScript drag_script_;
   Instruments instruments_;  // the convergence and energy plots (a component)
   // The split view's right side, or a student's step there (a component), and the arrays the
   // renderer draws it from.
@@ -348,6 +323,9 @@ class Viewer {
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
   std::unique_ptr<Renderer> renderer_;
+  // The simulation, its scripted drags and the batches of steps (a component). Last, so that a
+  // batch still running finishes before the members it reads go.
+  SimulationHost host_;
 };
 
 // The viewer of the scene the command line names, with its start-up settings and the scene

@@ -34,16 +34,16 @@ void Viewer::update_quantity_colors() {
   // Coloured by material, this only clears what was there: no per-frame work.
   const bool springs = panel_.springs;
   if (!right_.simulation()) {
-    quantity_colors_.update(color_by(), *simulation_, springs);
+    quantity_colors_.update(color_by(), host_.simulation(), springs);
     // A split view opened later starts its right side's range afresh.
     if (twin_colors_.quantity() != ColorQuantity::material) twin_colors_ = QuantityColors();
     return;
   }
   // Split, both sides share one range, so that a colour means the same on either.
-  quantity_colors_.measure(color_by(), *simulation_);
+  quantity_colors_.measure(color_by(), host_.simulation());
   twin_colors_.measure(color_by(), *right_.simulation());
   const float range = std::max(quantity_colors_.measured_range(), twin_colors_.measured_range());
-  quantity_colors_.paint(*simulation_, range, springs);
+  quantity_colors_.paint(host_.simulation(), range, springs);
   twin_colors_.paint(*right_.simulation(), range, springs);
 }
 

@@ -14,7 +14,7 @@
 namespace wobble {
 
 void Viewer::start_split(const CompareSettings& settings) {
-  right_.start_compare(scene_, *simulation_, settings);
+  right_.start_compare(scene_, host_.simulation(), settings);
   // A shape framed beside the panel (or by the scene's own camera, made for the whole window)
   // would sit off centre in both halves: each half frames it in its middle, from the same
   // direction.
@@ -26,7 +26,7 @@ void Viewer::start_split(const CompareSettings& settings) {
 }
 
 void Viewer::start_student() {
-  right_.start_student(scene_, *simulation_);
+  right_.start_student(scene_, host_.simulation());
   twin_positions_.resize(positions_.size());
   twin_normals_.resize(normals_.size());
 }
@@ -43,7 +43,7 @@ void Viewer::apply_split_settings() {
     return;
   }
   if (right_.split_asked() && !right_.simulation()) {
-    start_split(default_compare_settings(simulation_->params()));
+    start_split(default_compare_settings(host_.simulation().params()));
   }
   if (!right_.split_asked() && right_.simulation()) stop_split();
   if (right_.simulation()) right_.apply();
@@ -79,7 +79,7 @@ void Viewer::describe_sides() {
   shown_right_label_.clear();
   const Simulation* right_side = right_.simulation();
   if (!right_side) return;
-  shown_left_label_ = describe_side(simulation_->params());
+  shown_left_label_ = describe_side(host_.simulation().params());
   shown_right_label_ = describe_side(right_side->params());
   if (!right_.student()) return;
   const SimulationParams& params = right_side->params();

@@ -11,7 +11,7 @@
 namespace wobble {
 
 void Viewer::show_environment_in_panel() {
-  const SimulationParams& params = simulation_->params();
+  const SimulationParams& params = host_.simulation().params();
   panel_.damping = static_cast<float>(params.damping);
   panel_.friction = static_cast<float>(params.contact.friction);
   panel_.wind = params.wind.on;
@@ -22,19 +22,19 @@ void Viewer::show_environment_in_panel() {
 }
 
 void Viewer::apply_environment_settings() {
-  const SimulationParams& params = simulation_->params();
+  const SimulationParams& params = host_.simulation().params();
   // Damping re-factorizes Q; friction and wind cost nothing.
   if (static_cast<float>(params.damping) != panel_.damping)
-    simulation_->set_damping(panel_.damping);
+    host_.simulation().set_damping(panel_.damping);
   if (static_cast<float>(params.contact.friction) != panel_.friction) {
-    simulation_->set_friction(panel_.friction);
+    host_.simulation().set_friction(panel_.friction);
   }
   if (params.wind.on != panel_.wind) {
     // The checkbox does what the W key does, breeze included.
-    simulation_->set_wind(toggled_wind(params.wind));
+    host_.simulation().set_wind(toggled_wind(params.wind));
     show_environment_in_panel();
   } else if (panel_.wind_speed != shown_wind_speed_ || panel_.wind_heading != shown_wind_heading_) {
-    simulation_->set_wind(
+    host_.simulation().set_wind(
         wind_with_speed_and_heading(params.wind, panel_.wind_speed, panel_.wind_heading));
     shown_wind_speed_ = panel_.wind_speed;
     shown_wind_heading_ = panel_.wind_heading;
@@ -53,7 +53,7 @@ void Viewer::apply_environment_settings() {
       const ValueRange& range = limits::self_collision_thickness;
       changed.thickness = std::clamp(1e-3 * panel_.self_collision_mm, range.low, range.high);
     }
-    simulation_->set_self_collision(changed);
+    host_.simulation().set_self_collision(changed);
     panel_.self_collision_mm = static_cast<float>(1000.0 * changed.thickness);
   }
 }
@@ -68,7 +68,7 @@ void Viewer::place_ground() {
   // Lines at a round fraction of the scene's size.
   const float size = std::max((upper - lower).maxCoeff(), 1e-3f);
   ground_.height = static_cast<float>(
-      ground_grid_height(network.V, network.E, scene_.pins, simulation_->colliders()));
+      ground_grid_height(network.V, network.E, scene_.pins, host_.simulation().colliders()));
   ground_.center_x = 0.5f * (lower.x() + upper.x());
   ground_.center_z = 0.5f * (lower.z() + upper.z());
   ground_.spacing = 0.25f * std::pow(10.0f, std::round(std::log10(size)));
@@ -81,7 +81,7 @@ void Viewer::update_collider_mesh() {
   if (!panel_.colliders) return;
   // A plane is drawn as a square as large as the grid, centred nearest the scene.
   const Eigen::Vector3f focus(ground_.center_x, ground_.height, ground_.center_z);
-  collider_mesh_ = collider_triangles(simulation_->colliders(), focus, ground_.half_extent);
+  collider_mesh_ = collider_triangles(host_.simulation().colliders(), focus, ground_.half_extent);
 }
 
 }  // namespace wobble

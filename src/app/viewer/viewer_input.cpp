@@ -27,10 +27,10 @@ PointerView Viewer::pointer_view(const Eigen::Vector2f& window_size) const {
 void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_mouse,
                            bool ui_wants_keyboard, const Eigen::Vector2f& window_size) {
   // The simulation a change edits is the one there when the change is made, not as now.
-  PointerContext context{pointer_view(window_size), view_camera_, *simulation_};
+  PointerContext context{pointer_view(window_size), view_camera_, host_.simulation()};
   // The simulation a change edits is the one there when the change is made, not as now.
   context.change = [this](std::function<void(Simulation&)> what) {
-    change([this, what = std::move(what)] { what(*simulation_); });
+    change([this, what = std::move(what)] { what(host_.simulation()); });
   };
   pick_and_drag_.begin_events(ui_wants_mouse);
   for (const InputEvent& event : events) {
@@ -47,7 +47,7 @@ void Viewer::handle_events(const std::vector<InputEvent>& events, bool ui_wants_
 
 void Viewer::save_scene() {
   const SavedScene saved_scene =
-      save_and_record_.save_scene(scene_, *simulation_, view_camera_.camera());
+      save_and_record_.save_scene(scene_, host_.simulation(), view_camera_.camera());
   // The picker offers it from now on, under its own name.
   const std::string& path = saved_scene.path;
   if (!path.empty() &&
@@ -71,10 +71,10 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::reset:
       change([this] {
         pick_and_drag_.cancel_drags();  // reset puts the colliders back
-        simulation_->reset();
-        right_.reset(scene_, *simulation_);
+        host_.simulation().reset();
+        right_.reset(scene_, host_.simulation());
         instruments_.clear();
-        drag_script_.restart();
+        host_.restart_drag_script();
         step_warning_.clear();
       });
       break;
@@ -91,7 +91,7 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::toggle_wind:
       change([this] {
-        simulation_->set_wind(toggled_wind(simulation_->params().wind));
+        host_.simulation().set_wind(toggled_wind(host_.simulation().params().wind));
         show_environment_in_panel();
       });
       break;
@@ -125,7 +125,7 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::export_obj:
       // The state the user sees, once a running batch finished.
-      change([this] { saved(save_and_record_.export_obj(scene_, *simulation_)); });
+      change([this] { saved(save_and_record_.export_obj(scene_, host_.simulation())); });
       break;
     case ViewerCommand::save_scene:
       change([this] { save_scene(); });  // the settings of the state drawn

@@ -10,12 +10,13 @@ void Viewer::set_convergence_required(bool required) {
 
 void Viewer::update_recording() {
   const bool on = instruments_.wants_convergence();
-  if (simulation_->records_convergence() != on) simulation_->set_convergence_recording(on);
+  if (host_.simulation().records_convergence() != on)
+    host_.simulation().set_convergence_recording(on);
 }
 
 void Viewer::show_instruments(float ui_scale) {
   instruments_left_ = instruments_.draw(ui_scale);
-  if (!batch_started_) update_recording();
+  if (!host_.batch_started()) update_recording();
 }
 
 }  // namespace wobble

@@ -92,7 +92,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   }
   // The sliders' values stay in the panel until the simulation takes them (hand_over_changes
   // applies them again after a batch).
-  if (!batch_started_) apply_panel_settings();
+  if (!host_.batch_started()) apply_panel_settings();
   if (requests.step_once) apply(ViewerCommand::step_once);
   if (requests.reset) apply(ViewerCommand::reset);
   if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
@@ -103,20 +103,20 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
 
 void Viewer::apply_panel_settings() {
   // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
-  const SimulationParams& params = simulation_->params();
-  if (static_cast<float>(params.k) != panel_.k) simulation_->set_k(panel_.k);
+  const SimulationParams& params = host_.simulation().params();
+  if (static_cast<float>(params.k) != panel_.k) host_.simulation().set_k(panel_.k);
   if (static_cast<float>(params.dt) != panel_.dt) {
-    simulation_->set_dt(panel_.dt);
-    pacer_.restart();
+    host_.simulation().set_dt(panel_.dt);
+    host_.restart_clock();
   }
   // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
-  panel_.iterations = std::min(panel_.iterations, simulation_->max_iterations_for_mesh());
-  if (params.iterations != panel_.iterations) simulation_->set_iterations(panel_.iterations);
-  if (params.chebyshev != panel_.chebyshev) simulation_->set_chebyshev(panel_.chebyshev);
+  panel_.iterations = std::min(panel_.iterations, host_.simulation().max_iterations_for_mesh());
+  if (params.iterations != panel_.iterations) host_.simulation().set_iterations(panel_.iterations);
+  if (params.chebyshev != panel_.chebyshev) host_.simulation().set_chebyshev(panel_.chebyshev);
   // The slider is gravity's strength: the scene's direction stays, sideways part included.
   if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
-    simulation_->set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
-                             params.gravity_model);
+    host_.simulation().set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
+                                   params.gravity_model);
   }
   apply_environment_settings();
   apply_split_settings();

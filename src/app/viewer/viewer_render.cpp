@@ -46,19 +46,19 @@ void Viewer::attach_renderer() {
 
 void Viewer::update_vertex_arrays() {
   arrays_stale_ = false;
-  const Eigen::MatrixXd& p = simulation_->positions();
+  const Eigen::MatrixXd& p = host_.simulation().positions();
   const int n = static_cast<int>(p.rows());
   for (int i = 0; i < n; ++i) {
     for (int k = 0; k < 3; ++k)
       positions_[3 * i + k] = static_cast<float>(p(i, k));
-    pinned_flags_[i] = simulation_->is_pinned(i) ? 1 : 0;
+    pinned_flags_[i] = host_.simulation().is_pinned(i) ? 1 : 0;
   }
   // Paused, a drag moves only the pin's target: the held vertex is drawn there, its triangles
   // stretching towards it, so the user sees where the shape will be pulled (Step takes one step
   // towards it). The simulation's positions are untouched.
   const int held = pick_and_drag_.held_vertex();
   if (panel_.paused && held >= 0) {
-    const Eigen::Vector3d target = simulation_->pin_target(held);
+    const Eigen::Vector3d target = host_.simulation().pin_target(held);
     for (int k = 0; k < 3; ++k)
       positions_[3 * held + k] = static_cast<float>(target(k));
   }
@@ -87,7 +87,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
                              : framebuffer_width;
   // Between batches a change made since the last refresh is read afresh (a paused drag moves
   // the drawn pin); while a batch runs, the state it started from is drawn.
-  if (!batch_started_ && arrays_stale_) update_vertex_arrays();
+  if (!host_.batch_started() && arrays_stale_) update_vertex_arrays();
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   // Split, both sides share one camera and each is framed whole; else the shape is framed
   // beside the panel.
