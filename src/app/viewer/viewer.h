@@ -59,16 +59,16 @@ ViewerSettings viewer_settings(const CommandLine& command);
 //
 // Its components each own their state and draw their own part, called by the viewer in that
 // order: ViewCamera (the camera), PickAndDrag (the mouse), SaveAndRecord (the files), Instruments
-// (the plots), RightSide (the split view's right side) and Notices. The viewer hands them what
-// they act on; none reaches into another.
+// (the plots), RightSide (the split view's right side), Notices, and SimulationHost (the
+// simulation's side, below). The viewer hands them what they act on; none reaches into another.
 //
-// The simulation's side and the UI's: the simulation, the split view's right side, the student's
-// step and the scripted drags are touched by one batch of steps at a time. In the window a batch
-// runs on a thread of its own (step_on_thread) while the UI goes on drawing the state the last
-// batch left, at the display's rate; what the user does meanwhile (drags, clicks, slider
-// changes, Reset, a new scene) is kept, in order, and handed to the simulation once the batch
-// finished, before the next one starts. Each step still has its fixed dt, so the results do not
-// depend on the thread: N steps give the same positions as headless.
+// The simulation's side and the UI's: the simulation and its scripted drags (SimulationHost), the
+// split view's right side and the student's step are touched by one batch of steps at a time. In
+// the window a batch runs on a thread of its own (step_on_thread) while the UI goes on drawing
+// the state the last batch left, at the display's rate; what the user does meanwhile (drags,
+// clicks, slider changes, Reset, a new scene) is kept, in order, and handed to the simulation
+// once the batch finished, before the next one starts. Each step still has its fixed dt, so the
+// results do not depend on the thread: N steps give the same positions as headless.
 class Viewer {
  public:
   // `scene_sources` are what the scene picker offers (built-in names and scene files, as
