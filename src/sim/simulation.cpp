@@ -90,7 +90,8 @@ void Simulation::reset() {
   last_status_ = StepStatus::ok;
   contact_ = ColliderContact(params_.contact.colliders, contact_.friction(), contact_.offset());
   self_collision_.clear();
-  if (pins_.reset(network_.V)) refactorize();
+  const bool contact_was_set = solve_contact_.clear();
+  if (pins_.reset(network_.V) || contact_was_set) refactorize();
 }
 
 void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous) {
@@ -107,11 +108,14 @@ StepStatus Simulation::step() {
   const double forces_ms = forces_stopwatch.milliseconds();
   compute_y();
   start_iterate();
+  choose_solve_contact();
   solver_->solve(step_problem(), observers_, next_, timing_);
+  if (!solve_contact_.empty()) solve_contact_.record_forces(contact_, next_);
 
   const StepContext context = step_context();
   for (PositionConstraint* constraint : constraints_)
     constraint->project(context, next_);
+  if (!solve_contact_.empty()) contact_.mark_pressed(solve_contact_.touching());
   for (const PositionConstraint* constraint : constraints_)
     constraint->report_timing(timing_);
 
@@ -185,8 +189,12 @@ StepProblem Simulation::step_problem() {
   bool in_contact = false;
   for (const PositionConstraint* constraint : constraints_)
     in_contact = in_contact || constraint->contact_count() > 0;
-  return StepProblem{network_, r_, params_, current_,     previous_,    fext_,
-                     pins_,    y_, system_, *local_step_, constraints_, in_contact};
+  StepProblem problem{network_, r_, params_, current_,     previous_,    fext_,
+                      pins_,    y_, system_, *local_step_, constraints_, in_contact};
+  problem.solve_contact = &solve_contact_;
+  problem.colliders = &contact_;
+  problem.time = time_;
+  return problem;
 }
 
 StepContext Simulation::step_context() const {
@@ -206,8 +214,24 @@ void Simulation::apply_forces() {
 }
 
 void Simulation::refactorize() {
+  if (!contact_.empty()) {
+    solve_contact_.set_base_diagonal(
+        system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m));
+  }
   system_.refactorize(params_.k, params_.dt, params_.damping, network_.m, pins_.flags(),
-                      pin_weight);
+                      pin_weight, solve_contact_.weights());
+}
+
+void Simulation::choose_solve_contact() {
+  // A scene without colliders never gets here with anything to do: its Q and its steps stay
+  // those of the plain method, to the bit.
+  if (contact_.empty()) {
+    if (solve_contact_.clear()) refactorize();
+    return;
+  }
+  const double gravity_reach = params_.gravity.norm() * params_.dt * params_.dt;
+  if (solve_contact_.choose(contact_, step_context(), next_, gravity_reach)) refactorize();
+  if (!solve_contact_.empty()) solve_contact_.lag_friction(contact_, step_context());
 }
 
 void Simulation::update_observers() {

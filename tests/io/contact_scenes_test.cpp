@@ -56,11 +56,14 @@ void expect_no_penetration(const Run& run, const wobble::Simulation& simulation)
 
 TEST(ContactScenes, DrapeRestsOnTheBall) {
   auto simulation = open("drape");
-  const int factorizations = simulation->numeric_factorizations();
   expect_no_penetration(run_scene(*simulation, 240), *simulation);
   const Eigen::MatrixXd& p = simulation->positions();
   EXPECT_NEAR(p.col(1).maxCoeff(), 0.8, 0.03) << "the top of the cloth lies on the ball's top";
   EXPECT_LT(p.col(1).minCoeff(), 0.4) << "its corners hang down the sides";
+  // Q is refactorized only when the set of vertices near the ball changes: once the cloth rests,
+  // never.
+  const int factorizations = simulation->numeric_factorizations();
+  run_scene(*simulation, 60);
   EXPECT_EQ(simulation->numeric_factorizations(), factorizations);
 }
 

@@ -65,22 +65,29 @@ FoldingScene dragged_across_scene(const SelfCollisionParams& self_collision) {
   ClothGridOptions options;
   options.resolution = n;
   scene.network = make_cloth_grid(options);
-  scene.network.V.col(1).array() += 0.005;
+  // The cloth lies over a low bump (a capsule across it, 2 cm high), where the fold comes down:
+  // without self-collision the folded half falls through the raised half under it. On a flat
+  // floor both halves come to rest at the same height, and nothing tells crossing from lying on.
+  scene.network.V.col(1).array() += 0.035;
   for (int column = 0; column < n; ++column)
     scene.pins.push_back(cloth_grid_vertex(n, 0, column));
   scene.params = folding_params(self_collision);
-  scene.params.contact.colliders = {ground_collider()};
+  const double bump = 0.04;
+  scene.params.contact.colliders = {
+      ground_collider(),
+      capsule_collider(Eigen::Vector3d(-1.0, 0.02 - bump, 0.25),
+                       Eigen::Vector3d(1.0, 0.02 - bump, 0.25), bump)};
   const int drag_steps = 120;
   scene.steps = drag_steps + 60;
   const std::vector<int> pins = scene.pins;
   const Eigen::MatrixXd rest = scene.network.V;
   scene.before_step = [pins, rest, drag_steps](Simulation& simulation, int step) {
     // A half circle in the y–z plane from z = −0.5 over the cloth to z = +0.55, raised by 2 cm
-    // along the way: the edge comes down 2.5 cm above the ground just past the opposite edge.
+    // along the way: the edge comes down 5.5 cm above the ground just past the opposite edge.
     const double progress = ease(static_cast<double>(step + 1) / drag_steps);
     const double angle = pi * progress;
     const double radius = 0.525, centre = 0.025;
-    const double y = 0.005 + 0.02 * progress + radius * std::sin(angle);
+    const double y = rest(0, 1) + 0.02 * progress + radius * std::sin(angle);
     const double z = centre - radius * std::cos(angle);
     for (int i : pins)
       simulation.set_pin_target(i, Eigen::Vector3d(rest(i, 0), y, z));

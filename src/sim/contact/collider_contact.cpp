@@ -42,38 +42,50 @@ void ColliderContact::project_again(const StepContext& step, Eigen::MatrixXd& ne
 }
 
 void ColliderContact::project_vertices(const StepContext& step, Eigen::MatrixXd& next) {
+  for (Eigen::Index i = 0; i < next.rows(); ++i) {
+    bool touched = false;
+    next.row(i) = outside_point(step, i, next.row(i).transpose(), &touched).transpose();
+    if (touched && !touched_[i]) {
+      touched_[i] = 1;
+      ++contact_count_;
+    }
+  }
+}
+
+Eigen::Vector3d ColliderContact::outside_point(const StepContext& step, Eigen::Index i,
+                                               Eigen::Vector3d p, bool* touched) const {
   // A vertex pushed out of one collider can land in another (a box standing on the ground): a
   // second pass settles such corners.
   const int passes = colliders_.size() > 1 ? 2 : 1;
-  for (Eigen::Index i = 0; i < next.rows(); ++i) {
-    bool touched = false;
-    for (int pass = 0; pass < passes; ++pass) {
-      for (std::size_t c = 0; c < colliders_.size(); ++c) {
-        const Collider& collider = colliders_[c];
-        Eigen::Vector3d p = next.row(i).transpose();
-        const ColliderSurface surface = collider_surface(collider, p);
-        const double depth = offset_ - surface.distance;
-        if (!(depth > 0.0)) continue;
-        touched = true;
-        p += depth * surface.normal;
-        // A pinned vertex follows its target, not the surface's friction.
-        if (!step.pinned[i]) {
-          const double mu = collider.friction >= 0.0 ? collider.friction : friction_;
-          if (mu > 0.0) {
-            const Eigen::Vector3d moved = p - step.current.row(i).transpose() - motion_[c];
-            const Eigen::Vector3d tangential = moved - moved.dot(surface.normal) * surface.normal;
-            const double slide = tangential.norm();
-            const double budget = mu * depth;
-            p -= slide <= budget ? tangential : tangential * (budget / slide);
-            // Undoing a slide along a curved surface can dip back in by its sagitta.
-            const ColliderSurface again = collider_surface(collider, p);
-            if (again.distance < offset_) p += (offset_ - again.distance) * again.normal;
-          }
-        }
-        next.row(i) = p.transpose();
-      }
+  for (int pass = 0; pass < passes; ++pass) {
+    for (std::size_t c = 0; c < colliders_.size(); ++c) {
+      const Collider& collider = colliders_[c];
+      const ColliderSurface surface = collider_surface(collider, p);
+      const double depth = offset_ - surface.distance;
+      if (!(depth > 0.0)) continue;
+      if (touched) *touched = true;
+      p += depth * surface.normal;
+      // A pinned vertex follows its target, not the surface's friction.
+      if (step.pinned[i]) continue;
+      const double mu = collider.friction >= 0.0 ? collider.friction : friction_;
+      if (!(mu > 0.0)) continue;
+      const Eigen::Vector3d moved = p - step.current.row(i).transpose() - motion_[c];
+      const Eigen::Vector3d tangential = moved - moved.dot(surface.normal) * surface.normal;
+      const double slide = tangential.norm();
+      const double budget = mu * depth;
+      p -= slide <= budget ? tangential : tangential * (budget / slide);
+      // Undoing a slide along a curved surface can dip back in by its sagitta.
+      const ColliderSurface again = collider_surface(collider, p);
+      if (again.distance < offset_) p += (offset_ - again.distance) * again.normal;
     }
-    if (touched && !touched_[i]) {
+  }
+  return p;
+}
+
+void ColliderContact::mark_pressed(const std::vector<char>& touching) {
+  if (touched_.size() != touching.size()) return;
+  for (std::size_t i = 0; i < touching.size(); ++i) {
+    if (touching[i] && !touched_[i]) {
       touched_[i] = 1;
       ++contact_count_;
     }

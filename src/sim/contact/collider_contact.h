@@ -44,6 +44,8 @@ class ColliderContact : public PositionConstraint {
   void end_step() override;
 
   const std::vector<Collider>& colliders() const { return colliders_; }
+  // Collider c's translation since the last step (m): what friction measures slides against.
+  const Eigen::Vector3d& motion(std::size_t c) const { return motion_[c]; }
   // Moves collider `index` rigidly; the move counts as the collider's motion over the next step
   // (so a dragged box carries a resting cloth along by friction).
   void translate(int index, const Eigen::Vector3d& offset);
@@ -54,9 +56,19 @@ class ColliderContact : public PositionConstraint {
   int contact_count() const override { return contact_count_; }
   // contact_ms: the last project() and any project_again() after it.
   void report_timing(StepTiming& timing) const override { timing.contact_ms = milliseconds_; }
+  // Counts as touching too each vertex flagged in `touching` (#V): those the solve held against
+  // a collider (solve_contact.h), which the projection may not have had to move. After
+  // project().
+  void mark_pressed(const std::vector<char>& touching);
   // The same as #V flags (empty when there is no collider).
   const std::vector<char>& contact_vertices() const { return touched_; }
   bool empty() const { return colliders_.empty(); }
+  // Where the projection puts vertex i found at `p` (m): out of every collider to the offset,
+  // then held back by friction against its motion over the step (see the class comment).
+  // `touched`, if given, is set when a collider moved it. The target of the contact term the
+  // solve sees (solve_contact.h).
+  Eigen::Vector3d outside_point(const StepContext& step, Eigen::Index i, Eigen::Vector3d p,
+                                bool* touched = nullptr) const;
 
  private:
   std::vector<Collider> colliders_;

@@ -7,10 +7,11 @@ void ConvergenceRecorder::reserve(int max_iterations) {
   trace_.gradient_norm.reserve(max_iterations + 1);
 }
 
-void ConvergenceRecorder::begin_step(const char* /*solver*/, bool accelerated) {
+void ConvergenceRecorder::begin_step(const char* solver, bool accelerated) {
   trace_.energy.clear();
   trace_.gradient_norm.clear();
   trace_.chebyshev = accelerated;
+  trace_.solver = solver;  // a registered name: static storage
 }
 
 void ConvergenceRecorder::measured(double energy, double gradient_norm) {

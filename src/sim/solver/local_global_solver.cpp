@@ -33,9 +33,18 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
   // last step touched a collider, an iteration whose update grew restarts the recurrence.
   const bool restart_on_growth = problem.in_contact;
   double local_ms = 0.0, global_ms = 0.0;
+  // Contact inside the solve: each vertex of the contact set is drawn to where the colliders and
+  // friction put it (projective dynamics' collision constraint; its weight is already in Q).
+  const bool contact = problem.has_solve_contact();
+  const StepContext context = problem.context();
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
     const Stopwatch local;
     problem.local_step.apply(p, k, problem.y, rhs_, measuring ? &springs : nullptr);
+    double contact_energy = 0.0;
+    if (contact) {
+      problem.solve_contact->add_targets(*problem.colliders, context, p, rhs_,
+                                         measuring ? &contact_energy : nullptr);
+    }
     local_ms += local.milliseconds();
     if (measuring) {
       const Stopwatch record;
@@ -43,7 +52,7 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
       const bool plain_solve = iteration > 0 && !params.chebyshev;
       const IterateMeasure::Result at =
           measure_.measure(terms, problem.system.Q(), p, rhs_, springs, plain_solve && exact_solve);
-      observers.measured(at.energy, at.gradient_norm);
+      observers.measured(at.energy + contact_energy, at.gradient_norm);
       instruments_ms += record.milliseconds();
     }
     const Stopwatch global;
@@ -62,10 +71,14 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
     // The last iterate, which no local step has seen yet.
     const Stopwatch record;
     problem.local_step.apply(p, k, problem.y, rhs_, &springs);
+    double contact_energy = 0.0;
+    if (contact) {
+      problem.solve_contact->add_targets(*problem.colliders, context, p, rhs_, &contact_energy);
+    }
     // The last iteration is never accelerated.
     const IterateMeasure::Result at =
         measure_.measure(terms, problem.system.Q(), p, rhs_, springs, exact_solve);
-    observers.measured(at.energy, at.gradient_norm);
+    observers.measured(at.energy + contact_energy, at.gradient_norm);
     instruments_ms += record.milliseconds();
   }
   timing.local_ms = local_ms;

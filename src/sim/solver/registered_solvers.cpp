@@ -1,5 +1,6 @@
 // The step solvers a SimulationParams::solver may name. Adding one: its own files, one line here.
 #include "sim/input_error.h"
+#include "sim/solver/lbfgs_solver.h"
 #include "sim/solver/local_global_solver.h"
 #include "sim/solver/solver_registry.h"
 
@@ -8,6 +9,7 @@ namespace wobble {
 const std::vector<StepSolverEntry>& registered_step_solvers() {
   static const std::vector<StepSolverEntry> solvers = {
       {"local-global", make_local_global_solver},
+      {"lbfgs", make_lbfgs_solver},
   };
   return solvers;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sim/constraints/pins.h"
+#include "sim/contact/solve_contact.h"
 #include "sim/instruments/step_objective.h"
 #include "sim/instruments/step_observer.h"
 #include "sim/simulation_params.h"
@@ -39,6 +40,16 @@ struct StepProblem {
   // The last step touched a collider or itself: the problem may change sharply between
   // iterations.
   bool in_contact = false;
+  // Contact inside the solve (solve_contact.h): its κ is on Q's diagonal for the vertices of its
+  // set. Null, or an empty set, when no vertex is near a collider.
+  const SolveContact* solve_contact = nullptr;
+  const ColliderContact* colliders = nullptr;
+  double time = 0.0;  // simulated time at the start of the step (s)
+
+  bool has_solve_contact() const { return solve_contact && !solve_contact->empty(); }
+  StepContext context() const {
+    return StepContext{rest, current, previous, pins.flags(), params.dt, time};
+  }
 
   // E(p) and ∇E(p) through step_objective(objective_terms(), p, &gradient).
   StepObjectiveTerms objective_terms() const {

@@ -72,7 +72,8 @@ void SystemMatrix::analyze() {
 }
 
 void SystemMatrix::refactorize(double k, double dt, double damping, const Eigen::VectorXd& m,
-                               const std::vector<char>& pinned, double pin_weight) {
+                               const std::vector<char>& pinned, double pin_weight,
+                               const Eigen::VectorXd& extra_diagonal) {
   // Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC, written into the fixed pattern.
   const double* laplacian = laplacian_.valuePtr();
   double* q = Q_.valuePtr();
@@ -83,8 +84,21 @@ void SystemMatrix::refactorize(double k, double dt, double damping, const Eigen:
   for (std::size_t i = 0; i < diagonal_slot_.size(); ++i) {
     q[diagonal_slot_[i]] += m(i) * inertia + (pinned[i] ? pin_weight : 0.0);
   }
+  if (extra_diagonal.size() == static_cast<Eigen::Index>(diagonal_slot_.size())) {
+    for (std::size_t i = 0; i < diagonal_slot_.size(); ++i)
+      q[diagonal_slot_[i]] += extra_diagonal(i);
+  }
   ++numeric_factorizations_;
   if (!solver_.factorize(Q_)) throw std::runtime_error("the Cholesky factorization of Q failed");
+}
+
+Eigen::VectorXd SystemMatrix::base_diagonal(double k, double dt, double damping,
+                                            const Eigen::VectorXd& m) const {
+  const double inertia = inertia_scale(dt, damping);
+  Eigen::VectorXd diagonal(diagonal_slot_.size());
+  for (std::size_t i = 0; i < diagonal_slot_.size(); ++i)
+    diagonal(i) = k * laplacian_.valuePtr()[diagonal_slot_[i]] + m(i) * inertia;
+  return diagonal;
 }
 
 }  // namespace wobble

@@ -29,8 +29,13 @@ class SystemMatrix {
   // Refill Q's values and factorize numerically. Throws std::runtime_error if Q is not positive
   // definite.
   //   m  #V masses (kg);  pinned  #V flags;  pin_weight  w
+  //   extra_diagonal  #V more on the diagonal (contact inside the solve), or empty for none
   void refactorize(double k, double dt, double damping, const Eigen::VectorXd& m,
-                   const std::vector<char>& pinned, double pin_weight);
+                   const std::vector<char>& pinned, double pin_weight,
+                   const Eigen::VectorXd& extra_diagonal = Eigen::VectorXd());
+  // k·AᵀAᵢᵢ + (1 + cΔt)mᵢ/Δt² for each vertex (#V): Q's diagonal without pins or contact.
+  Eigen::VectorXd base_diagonal(double k, double dt, double damping,
+                                const Eigen::VectorXd& m) const;
 
   const Eigen::SparseMatrix<double>& Q() const { return Q_; }
   // Q's factorization: solve(b, x) gives x = Q⁻¹ b for #V by 3 b.
