@@ -218,8 +218,8 @@ void Simulation::refactorize() {
     solve_contact_.set_base_diagonal(
         system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m));
   }
-  system_.refactorize(params_.k, params_.dt, params_.damping, network_.m, pins_.flags(),
-                      pin_weight, solve_contact_.weights());
+  system_.refactorize(params_.k, params_.dt, params_.damping, network_.m, pins_.flags(), pin_weight,
+                      solve_contact_.weights());
 }
 
 void Simulation::choose_solve_contact() {

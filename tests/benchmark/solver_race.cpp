@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "io/load_scene.h"
 #include "median.h"
 #include "sim/instruments/stopwatch.h"
-#include "io/load_scene.h"
 #include "sim/shapes/jelly_block.h"
 #include "sim/simulation.h"
 
@@ -28,16 +28,17 @@ struct RaceScene {
 // The shipped curtain (assets/curtain.json: hanging from its top edge, pushed at 1.5 m/s) at
 // another resolution and k, read as a user's scene file is.
 RaceScene curtain(int resolution, double size, double k, int repeats) {
-  const std::string json = "{\"name\": \"race\", \"mesh\": {\"generator\": \"cloth\", "
-                           "\"resolution\": " + std::to_string(resolution) +
-                           ", \"size\": " + std::to_string(size) +
-                           ", \"orientation\": \"vertical\", \"height\": 2.2}, "
-                           "\"pins\": \"top-edge\", \"material\": {\"k\": " +
-                           std::to_string(k) +
-                           ", \"density\": 0.3}, \"simulation\": {\"dt\": 0.016667, "
-                           "\"iterations\": 50}, \"initial_velocity\": [0.0, 0.0, 1.5]}";
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / ("wobble-race-" + std::to_string(resolution) + ".json");
+  const std::string json =
+      "{\"name\": \"race\", \"mesh\": {\"generator\": \"cloth\", "
+      "\"resolution\": " +
+      std::to_string(resolution) + ", \"size\": " + std::to_string(size) +
+      ", \"orientation\": \"vertical\", \"height\": 2.2}, "
+      "\"pins\": \"top-edge\", \"material\": {\"k\": " +
+      std::to_string(k) +
+      ", \"density\": 0.3}, \"simulation\": {\"dt\": 0.016667, "
+      "\"iterations\": 50}, \"initial_velocity\": [0.0, 0.0, 1.5]}";
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("wobble-race-" + std::to_string(resolution) + ".json");
   std::ofstream(file) << json;
   const Scene loaded = load_scene(file.string());
   std::filesystem::remove(file);
@@ -118,10 +119,10 @@ void race(const RaceScene& scene) {
     if (needed < 0 && traced.energy[i] <= target) needed = static_cast<int>(i);
   }
   if (needed < 0) {
-    std::printf("solvers/%-26s local-global %2d it %8.2f ms  E %.9g | lbfgs never reached it "
-                "in 200 (E %.9g)\n",
-                scene.name.c_str(), plain, local_global.milliseconds, target,
-                traced.energy.back());
+    std::printf(
+        "solvers/%-26s local-global %2d it %8.2f ms  E %.9g | lbfgs never reached it "
+        "in 200 (E %.9g)\n",
+        scene.name.c_str(), plain, local_global.milliseconds, target, traced.energy.back());
     return;
   }
   const Run lbfgs = run_step(scene, "lbfgs", std::max(needed, 1));
@@ -136,8 +137,9 @@ void race(const RaceScene& scene) {
 }  // namespace
 
 void print_solver_race() {
-  std::printf("\nL-BFGS against local-global: iterations and time to reach the energy of 50 "
-              "local-global iterations, one step (median of repeats)\n");
+  std::printf(
+      "\nL-BFGS against local-global: iterations and time to reach the energy of 50 "
+      "local-global iterations, one step (median of repeats)\n");
   race(curtain(81, 2.0, 1e5, 9));
   race(stiff_jelly());
   race(curtain(256, 2.0, 1e5, 3));

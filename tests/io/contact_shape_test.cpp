@@ -32,8 +32,8 @@ Landing land(wobble::Simulation& simulation, double seconds) {
     EXPECT_EQ(simulation.step(), wobble::StepStatus::ok) << "step " << step;
     landing.lowest = std::min(landing.lowest, simulation.positions().col(1).minCoeff());
   }
-  landing.shape_error = wobble::rigid_fit_rms(first, simulation.positions()) /
-                        wobble::bounding_diagonal(first);
+  landing.shape_error =
+      wobble::rigid_fit_rms(first, simulation.positions()) / wobble::bounding_diagonal(first);
   landing.fastest = simulation.velocities().rowwise().norm().maxCoeff();
   return landing;
 }

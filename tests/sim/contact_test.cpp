@@ -1,5 +1,5 @@
-// Contact in the stepper: cloth and jelly against colliders, friction, and the promise that Q is
-// never re-factorized because of contact.
+// Contact in the stepper: cloth and jelly against colliders, friction, and Q
+// refactorized only when the set of vertices near a collider changes.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>

@@ -74,9 +74,8 @@ FoldingScene dragged_across_scene(const SelfCollisionParams& self_collision) {
   scene.params = folding_params(self_collision);
   const double bump = 0.04;
   scene.params.contact.colliders = {
-      ground_collider(),
-      capsule_collider(Eigen::Vector3d(-1.0, 0.02 - bump, 0.25),
-                       Eigen::Vector3d(1.0, 0.02 - bump, 0.25), bump)};
+      ground_collider(), capsule_collider(Eigen::Vector3d(-1.0, 0.02 - bump, 0.25),
+                                          Eigen::Vector3d(1.0, 0.02 - bump, 0.25), bump)};
   const int drag_steps = 120;
   scene.steps = drag_steps + 60;
   const std::vector<int> pins = scene.pins;

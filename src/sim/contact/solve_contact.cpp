@@ -73,7 +73,8 @@ void SolveContact::record_forces(const ColliderContact& contact, const Eigen::Ma
   // 1% of it counts as touching.
   const double reach = 0.01 * contact.offset();
   for (int i : members_) {
-    const double depth = contact.offset() - nearest_collider(contact.colliders(), p.row(i).transpose());
+    const double depth =
+        contact.offset() - nearest_collider(contact.colliders(), p.row(i).transpose());
     normal_force_(i) = weights_(i) * std::max(depth, 0.0);
     touching_[i] = depth > -reach;
   }

@@ -49,8 +49,7 @@ class SolveContact {
   // Local-global: rhs_i += κᵢ Pᵢ(p) for i in S (rhs #V by 3). If `energy` is given it receives
   // the term's value Σ (κᵢ/2)‖pᵢ − Pᵢ(p)‖² (J), for the convergence trace.
   void add_targets(const ColliderContact& contact, const StepContext& step,
-                   const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
-                   double* energy = nullptr) const;
+                   const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs, double* energy = nullptr) const;
   // L-BFGS: the contact energy at p (J), and, if given, its gradient added into `gradient`
   // (#V by 3, N):
   //   Σ_{i∈S} Σ_c (κᵢ/2) max(0, offset − φ_c(pᵢ))²  +  friction,

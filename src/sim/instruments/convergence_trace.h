@@ -5,13 +5,13 @@
 
 namespace wobble {
 
-// How one step's iterations converged (local-global, L-BFGS): the step objective (step_objective.h) and
-// the norm of its gradient at each iterate. Entry 0 is the first iterate, before any iteration;
+// How one step's iterations converged (local-global, L-BFGS): the step objective (step_objective.h)
+// and the norm of its gradient at each iterate. Entry 0 is the first iterate, before any iteration;
 // entry i is the iterate after i iterations (with Chebyshev on, the accelerated iterate).
 struct ConvergenceTrace {
-  std::vector<double> energy;         // J
-  std::vector<double> gradient_norm;  // N, ‖∇‖ over all 3#V components
-  bool chebyshev = false;             // the iterations were accelerated
+  std::vector<double> energy;           // J
+  std::vector<double> gradient_norm;    // N, ‖∇‖ over all 3#V components
+  bool chebyshev = false;               // the iterations were accelerated
   const char* solver = "local-global";  // the registered name of the solver that took the step
 
   int iterations() const { return energy.empty() ? 0 : static_cast<int>(energy.size()) - 1; }

@@ -15,7 +15,8 @@ double rigid_fit_rms(const Eigen::MatrixXd& reference, const Eigen::MatrixXd& de
   const Eigen::MatrixXd b = deformed.rowwise() - deformed_center;
   // The rotation R maximizing trace(Rᵀ bᵀa) is V diag(1, 1, det) Uᵀ for aᵀb = U S Vᵀ.
   const Eigen::Matrix3d covariance = a.transpose() * b;
-  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance,
+                                              Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3d flip = Eigen::Matrix3d::Identity();
   if ((svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0) flip(2, 2) = -1.0;
   const Eigen::Matrix3d rotation = svd.matrixV() * flip * svd.matrixU().transpose();

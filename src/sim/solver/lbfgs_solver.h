@@ -50,7 +50,7 @@ class LbfgsSolver : public StepSolver {
   void find_direction(const StepProblem& problem);
 
   Eigen::MatrixXd gradient_, direction_, trial_, trial_gradient_, work_;  // #V by 3
-  std::vector<Eigen::MatrixXd> s_, y_;                                     // history, #V by 3
+  std::vector<Eigen::MatrixXd> s_, y_;                                    // history, #V by 3
   std::vector<double> rho_, alpha_;
   int stored_ = 0, newest_ = -1;  // pairs held, and where the newest is
   int last_iterations_ = 0, last_extra_evaluations_ = 0;
