@@ -2,7 +2,8 @@
 # Install what is missing, build, and time Wobble's stepper against the plain reference on the
 # curtain, 128x128 and 256x256 cloths and the jelly; ends with one table and the Chebyshev curve.
 # Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain);
-# --self-collision prints the self-collision rows alone; --solvers races L-BFGS against
+# --self-collision prints the self-collision rows alone, --contact the contact rows; --solvers
+# races L-BFGS against
 # local-global (docs/solvers.md).
 #
 # bash scripts/benchmark.sh --busy-neighbour [--rounds N] [SCENE ...]

@@ -183,6 +183,10 @@ void print_single_precision_error() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "--contact") {
+    wobble::benchmark::print_contact_cost();  // its rows alone
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--solvers") {
     wobble::benchmark::print_solver_race();  // its rows alone
     return 0;
