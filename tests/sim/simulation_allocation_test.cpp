@@ -98,6 +98,12 @@ TEST(SimulationAllocation, StepAllocatesNothing) {
     simulation.step();
     EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
     EXPECT_EQ(simulation.last_convergence().iterations(), scene.params.iterations);
+    // Nor does L-BFGS, traced or not.
+    simulation.set_solver("lbfgs");
+    simulation.step();
+    EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
+    simulation.set_convergence_recording(false);
+    EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
   }
 }
 
