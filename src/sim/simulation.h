@@ -44,18 +44,21 @@ enum class StepStatus {
 //   local:  d_e = r_e (p_i − p_j)/‖p_i − p_j‖
 //   global: Q p = k Aᵀd + y,  Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC,
 //           y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10,
-// c the damping (0 by default). Forces (wind) are added to f_ext at the start of the step;
-// contact moves the solved positions out of the colliders after the last iteration (neither
-// ever changes Q). With every pin target at its rest position, no damping, no wind and no
-// collider this is exactly fast_mass_springs_step_sparse.
+// c the damping (0 by default). Forces (wind) are added to f_ext at the start of the step.
+// Contact is a term of the energy for the vertices near a collider (contact/solve_contact.h:
+// their κ on Q's diagonal, refactorized only when that set changes), and the colliders project
+// the solved positions once more after the last iteration. With every pin target at its rest
+// position, no damping, no wind and no collider this is exactly fast_mass_springs_step_sparse.
 //
 // It composes parts, each in files of its own, and calls them in this order each step:
 //   forces       f_ext = gravity (forces/gravity.h) + each registered force
 //                (forces/force_registry.h: wind, ...)
 //   y            the damped inertia (solver/damped_inertia.h), f_ext, the pins
 //                (constraints/pins.h)
+//   contact set  the vertices near a collider (contact/solve_contact.h); Q refactorized when
+//                it changed
 //   solver       the registered StepSolver named by params.solver (solver/step_solver.h;
-//                local-global by default), with Q from solver/system_matrix.h, reporting to the
+//                local-global by default, or lbfgs), with Q from solver/system_matrix.h, reporting to the
 //                observers (instruments/step_observer.h: the convergence trace, the callback)
 //   constraints  each PositionConstraint in turn (step_terms.h): the colliders, then
 //                self-collision
@@ -64,7 +67,8 @@ enum class StepStatus {
 //   set_pin_target           right-hand side only: no factorization
 //   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
 //   unpin, reset,              (Q's sparsity pattern never changes: its diagonal is always stored)
-//   set_damping
+//   set_damping, a step whose
+//   contact set changed
 //   set_iterations, gravity, nothing precomputed
 //   set_state, set_wind,
 //   set_friction, colliders
