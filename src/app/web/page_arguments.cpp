@@ -49,7 +49,8 @@ std::vector<std::string> page_arguments(const std::string& query,
           break;
         }
       }
-    } else if ((key == "k" || key == "dt" || key == "iterations") && !value.empty()) {
+    } else if ((key == "k" || key == "dt" || key == "iterations" || key == "frames") &&
+               !value.empty()) {
       options.push_back("--" + key);
       options.push_back(value);
     } else if (key == "plots") {

@@ -46,6 +46,7 @@ struct BrowserApp {
   MovingMedian ui_work_ms;  // the panel's UI frame time
   double last_frame = -1.0;
   std::string title;
+  long frames_drawn = 0;
 };
 
 double seconds_now() {
@@ -112,6 +113,10 @@ void frame(BrowserApp& app) {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
   app.ui_work_ms.add(static_cast<float>(1e3 * (seconds_now() - now)));
+  // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they show.
+  ++app.frames_drawn;
+  EM_ASM({ Module.wobbleFrames = $0; Module.wobbleSteps = $1; }, app.frames_drawn,
+         static_cast<double>(viewer.shown_steps()));
 }
 
 void frame_or_report(void* app) {
@@ -126,8 +131,9 @@ void frame_or_report(void* app) {
 
 void run_browser(const CommandLine& command) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
-  app.reset(new BrowserApp{open_viewer(command), nullptr, {}, {}, {}, -1.0, {}});
+  app.reset(new BrowserApp{open_viewer(command), nullptr, {}, {}, {}, -1.0, {}, 0});
   app->viewer.show_notices(true);
+  if (command.frames) app->viewer.set_step_limit(*command.frames);
   double css_width = 0.0, css_height = 0.0;
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
   app->window = std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,

@@ -9,15 +9,15 @@
 #     packages, which build-web.sh unpacks into WOBBLE_WEB_SOURCES.
 # The find modules and package configs in this folder only say "found": the targets are here.
 set(WOBBLE_WEB_SOURCES "" CACHE PATH "Debian's imgui, libspng and zlib sources, unpacked")
-foreach(source imgui-1.86+ds libspng-0.7.3 zlib-1.2.13.dfsg)
+foreach(source imgui libspng zlib)
   if(NOT EXISTS "${WOBBLE_WEB_SOURCES}/${source}")
     message(FATAL_ERROR "WOBBLE_WEB_SOURCES: no ${source} in '${WOBBLE_WEB_SOURCES}' "
                         "(scripts/build-web.sh unpacks it)")
   endif()
 endforeach()
-set(web_imgui "${WOBBLE_WEB_SOURCES}/imgui-1.86+ds")
-set(web_spng "${WOBBLE_WEB_SOURCES}/libspng-0.7.3")
-set(web_zlib "${WOBBLE_WEB_SOURCES}/zlib-1.2.13.dfsg")
+set(web_imgui "${WOBBLE_WEB_SOURCES}/imgui")
+set(web_spng "${WOBBLE_WEB_SOURCES}/libspng")
+set(web_zlib "${WOBBLE_WEB_SOURCES}/zlib")
 
 list(PREPEND CMAKE_MODULE_PATH "${CMAKE_CURRENT_LIST_DIR}")
 set(Eigen3_DIR "${CMAKE_CURRENT_LIST_DIR}" CACHE PATH "" FORCE)
@@ -82,3 +82,6 @@ file(WRITE "${web_pkgconfig}/imgui.pc"
      "Cflags: -I${web_imgui}\nLibs:\n")
 set(ENV{PKG_CONFIG_LIBDIR} "${web_pkgconfig}")
 set(ENV{PKG_CONFIG_PATH} "")
+# Asked again at every configure, so that a new sources folder is seen.
+unset(__pkg_config_checked_SPNG CACHE)
+unset(__pkg_config_checked_IMGUI CACHE)
