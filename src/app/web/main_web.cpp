@@ -20,7 +20,8 @@ namespace {
 
 std::optional<wobble::CommandLine> parse(const std::vector<std::string>& arguments) {
   std::vector<const char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(argument.c_str());
+  for (const std::string& argument : arguments)
+    argv.push_back(argument.c_str());
   return wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), std::cout);
 }
 

@@ -59,7 +59,8 @@ void follow_page_size(GlfwWindow& window) {
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
   int width = 0, height = 0;
   window.window_size(width, height);
-  const int wanted_width = static_cast<int>(css_width), wanted_height = static_cast<int>(css_height);
+  const int wanted_width = static_cast<int>(css_width),
+            wanted_height = static_cast<int>(css_height);
   if (wanted_width > 0 && wanted_height > 0 && (wanted_width != width || wanted_height != height)) {
     glfwSetWindowSize(window.handle(), wanted_width, wanted_height);
   }
@@ -76,7 +77,8 @@ void frame(BrowserApp& app) {
   if (app.last_frame >= 0.0) app.frame_ms.add(static_cast<float>(1e3 * (now - app.last_frame)));
   app.last_frame = now;
   // Files dropped on the page (copied into the page's file system by emscripten's GLFW).
-  for (const std::string& path : window.take_dropped_paths()) viewer.open_file(path);
+  for (const std::string& path : window.take_dropped_paths())
+    viewer.open_file(path);
   int width = 0, height = 0;
   window.window_size(width, height);
   const Eigen::Vector2f window_size(static_cast<float>(width), static_cast<float>(height));
@@ -93,6 +95,9 @@ void frame(BrowserApp& app) {
   timings.real_time_factor = static_cast<float>(app.real_time.real_time_factor());
   timings.steps_per_second = static_cast<float>(app.real_time.steps_per_second());
   const float ui_scale = 1.0f;
+  // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens it),
+  // so that the scene shows. The panel is the first window build_ui begins.
+  if (app.frames_drawn == 0 && width < 600) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
   viewer.build_ui(timings, ui_scale);
   // 4. hand the changes to the simulation, take the latest state, step (on this thread)
   constexpr double frame_seconds = 1.0 / 60.0;
@@ -115,8 +120,12 @@ void frame(BrowserApp& app) {
   app.ui_work_ms.add(static_cast<float>(1e3 * (seconds_now() - now)));
   // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they show.
   ++app.frames_drawn;
-  EM_ASM({ Module.wobbleFrames = $0; Module.wobbleSteps = $1; }, app.frames_drawn,
-         static_cast<double>(viewer.shown_steps()));
+  EM_ASM(
+      {
+        Module.wobbleFrames = $0;
+        Module.wobbleSteps = $1;
+      },
+      app.frames_drawn, static_cast<double>(viewer.shown_steps()));
 }
 
 void frame_or_report(void* app) {
