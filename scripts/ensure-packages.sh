@@ -21,15 +21,27 @@ test_packages=(
   python3                               # tests/docs/check_links.py: the docs' links resolve
 )
 
+# What scripts/build-web.sh needs on top: emscripten, and dpkg-dev for `apt-get source` (Dear
+# ImGui, libspng and zlib are compiled for the browser from Debian's source packages).
+web_packages=(
+  emscripten dpkg-dev
+)
+# What the web tests need on top (tests/web/): headless Chromium draws the page with WebGL 2.
+web_test_packages=(
+  chromium
+)
+
 # What scripts/fuzz.sh needs on top: clang and its libFuzzer and sanitizer runtimes.
 fuzz_packages=(
   clang libclang-rt-14-dev
 )
 
-# ensure_packages run|test|fuzz
+# ensure_packages run|test|fuzz|web
 ensure_packages() {
   local wanted=("${run_packages[@]}")
-  [ "${1:-run}" = test ] && wanted+=("${test_packages[@]}")
+  [ "${1:-run}" = test ] && wanted+=("${test_packages[@]}" "${web_packages[@]}"
+                                     "${web_test_packages[@]}")
+  [ "${1:-run}" = web ] && wanted+=("${web_packages[@]}")
   [ "${1:-run}" = fuzz ] && wanted+=("${fuzz_packages[@]}")
   local missing=()
   for package in "${wanted[@]}"; do

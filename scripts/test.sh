@@ -4,5 +4,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
 ensure_packages test
-build_wobble -DWOBBLE_BUILD_TESTS=ON
+# The browser build first (build-web/), for the web tests among the suite (tests/web/).
+bash scripts/build-web.sh
+build_wobble -DWOBBLE_BUILD_TESTS=ON -DWOBBLE_WEB_TESTS=ON
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"

@@ -1,0 +1,60 @@
+// wobble in the browser: the page's address becomes a command line (page_arguments.h), and the
+// viewer runs in the browser's loop (run_browser.h). An address the command line refuses opens
+// the default scene instead, the reason on the browser's console.
+#include <emscripten.h>
+
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/command_line.h"
+#include "app/cli/scene_catalog.h"
+#include "app/cli/thread_setting.h"
+#include "app/web/page_arguments.h"
+#include "app/web/run_browser.h"
+
+namespace {
+
+std::optional<wobble::CommandLine> parse(const std::vector<std::string>& arguments) {
+  std::vector<const char*> argv;
+  for (const std::string& argument : arguments)
+    argv.push_back(argument.c_str());
+  return wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), std::cout);
+}
+
+}  // namespace
+
+int main() {
+  const char* search = emscripten_run_script_string("location.search");
+  std::vector<std::string> arguments =
+      wobble::page_arguments(search != nullptr ? search : "", wobble::scene_catalog());
+  // A page has one thread: the solver's pool runs everything on the caller.
+  arguments.insert(arguments.begin() + 1, {"--threads", "1"});
+  std::optional<wobble::CommandLine> command;
+  try {
+    command = parse(arguments);
+    if (command) {
+      wobble::obey_thread_setting(*command, std::cerr);
+      wobble::run_browser(*command);
+      return 0;
+    }
+  } catch (const std::exception& error) {
+    std::cerr << "wobble: " << wobble::one_line(error.what()) << "; opening the default scene\n";
+  }
+  try {
+    command = parse({"wobble", "--threads", "1"});
+    try {
+      wobble::obey_thread_setting(*command, std::cerr);
+    } catch (const std::logic_error&) {
+      // The pool already has its one thread (the refused scene got that far).
+    }
+    wobble::run_browser(*command);
+  } catch (const std::exception& error) {
+    std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,22 @@
+#ifndef WOBBLE_APP_WEB_PAGE_ARGUMENTS_H
+#define WOBBLE_APP_WEB_PAGE_ARGUMENTS_H
+
+#include <string>
+#include <vector>
+
+namespace wobble {
+
+// The command line a page's address asks for: `query` is the address's query part, as
+// `location.search` gives it (e.g. "?scene=flag&k=2000&dt=0.01&iterations=20"), percent-escapes
+// and '+' decoded. The result starts with the program's name; then --k, --dt, --iterations and
+// --frames (the page stops stepping after that many steps, as the window's --frames does),
+// --plots for `plots`, and last the scene: the source in `catalog` (scene_catalog()) whose
+// picker label (scene_label) is the `scene` value, or the value itself. Keys it does not know are
+// left out, so an address never reaches an option that writes files. The values are checked by
+// parse_command_line.
+std::vector<std::string> page_arguments(const std::string& query,
+                                        const std::vector<std::string>& catalog);
+
+}  // namespace wobble
+
+#endif
