@@ -38,6 +38,8 @@ struct ViewerSettings {
   std::optional<double> k, dt;
   std::optional<int> iterations;
   bool chebyshev = false;  // turn Chebyshev acceleration on
+  // The step solver by its registered name (app/cli/solver_choice.h); unset: the scene's.
+  std::optional<std::string> solver;
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
