@@ -95,7 +95,7 @@ void Instruments::take(ConvergenceTrace& trace, long trace_step,
 
 void Instruments::take_right(ConvergenceTrace& trace, long trace_step,
                              const std::vector<std::pair<double, FrameEnergy>>& energy) {
-  if (sides_.split) right_.take(trace, trace_step, energy);
+  right_.take(trace, trace_step, energy);
 }
 
 void Instruments::set_sides(PlottedSides sides) {
