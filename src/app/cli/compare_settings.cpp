@@ -117,12 +117,18 @@ CompareSettings parse_compare_settings(const std::string& text) {
 }
 
 std::string describe_side(const SimulationParams& params, bool name_solver) {
-  const std::string method = name_solver        ? solver_label(params.solver, params.chebyshev)
-                             : params.chebyshev ? "Chebyshev"
-                                                : "plain";
   char text[160];
-  std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
-                params.iterations == 1 ? "" : "s", method.c_str(), 1000.0 * params.dt, params.k);
+  const char* plural = params.iterations == 1 ? "" : "s";
+  if (name_solver) {
+    // A line of its own: "local-global (Chebyshev)" and the iterations would not fit beside
+    // each other in a half beside the panel and the plots.
+    std::snprintf(text, sizeof(text), "%s\n%d iteration%s\ndt %.3g ms, k %g N/m",
+                  solver_label(params.solver, params.chebyshev).c_str(), params.iterations, plural,
+                  1000.0 * params.dt, params.k);
+  } else {
+    std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
+                  plural, params.chebyshev ? "Chebyshev" : "plain", 1000.0 * params.dt, params.k);
+  }
   return text;
 }
 

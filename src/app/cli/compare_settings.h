@@ -37,8 +37,8 @@ CompareSettings parse_compare_settings(const std::string& text);
 
 // The settings that tell one side from the other, for its corner, on two lines:
 // "50 iterations, plain\ndt 16.7 ms, k 400 N/m"; with `name_solver` (the sides' solvers differ,
-// or one is not the default), the solver in place of plain: "50 iterations, L-BFGS\n...",
-// "50 iterations, local-global (Chebyshev)\n...".
+// or one is not the default), on three, the solver first in place of plain or Chebyshev:
+// "local-global (Chebyshev)\n50 iterations\ndt 16.7 ms, k 400 N/m", "L-BFGS\n50 iterations\n...".
 std::string describe_side(const SimulationParams& params, bool name_solver = false);
 
 // The right side a split view opens with when nothing asked for one: a tenth of the iterations

@@ -105,23 +105,23 @@ TEST(CompareSettings, DefaultRightSideIsATenthOrTenTimesTheIterations) {
   EXPECT_EQ(wobble::default_compare_settings(left).iterations, 30);
 }
 
-TEST(CompareSettings, DescribesASideOnTwoLines) {
+TEST(CompareSettings, DescribesASideOnTwoLinesOrThreeWithTheSolver) {
   wobble::SimulationParams params;
   params.iterations = 1;
   params.chebyshev = true;
   params.dt = 0.01;
   params.k = 400.0;
   EXPECT_EQ(wobble::describe_side(params), "1 iteration, Chebyshev\ndt 10 ms, k 400 N/m");
-  // Once the sides' solvers differ, each corner names its own.
+  // Once the sides' solvers differ, each corner names its own, on a line of its own.
   EXPECT_EQ(wobble::describe_side(params, true),
-            "1 iteration, local-global (Chebyshev)\ndt 10 ms, k 400 N/m");
+            "local-global (Chebyshev)\n1 iteration\ndt 10 ms, k 400 N/m");
   params.iterations = 30;
   params.solver = "lbfgs";
-  EXPECT_EQ(wobble::describe_side(params, true), "30 iterations, L-BFGS\ndt 10 ms, k 400 N/m");
+  EXPECT_EQ(wobble::describe_side(params, true), "L-BFGS\n30 iterations\ndt 10 ms, k 400 N/m");
   params.chebyshev = false;
   params.solver = "local-global";
   EXPECT_EQ(wobble::describe_side(params, true),
-            "30 iterations, local-global\ndt 10 ms, k 400 N/m");
+            "local-global\n30 iterations\ndt 10 ms, k 400 N/m");
 }
 
 }  // namespace
