@@ -40,7 +40,7 @@ void refuse_unknown_scene_keys(const std::string& path, const nlohmann::json& ob
     material->allow_only({"k", "density", "mass", "vertex_masses", "friction"}, "material");
   }
   if (std::optional<JsonFields> simulation = child(top, "simulation")) {
-    simulation->allow_only({"dt", "iterations", "chebyshev", "gravity", "gravity_model",
+    simulation->allow_only({"dt", "iterations", "solver", "chebyshev", "gravity", "gravity_model",
                             "first_iterate", "damping", "contact_offset", "wind"},
                            "simulation");
     if (std::optional<JsonFields> wind = child(*simulation, "wind")) {

@@ -17,6 +17,7 @@
 #include "sim/input_error.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/shapes/jelly_block.h"
+#include "sim/solver/solver_registry.h"
 #include "sim/value_limits.h"
 
 namespace wobble {
@@ -112,6 +113,20 @@ Shape jelly_shape(JsonFields& mesh) {
   return shape;
 }
 
+// `simulation.solver`: a registered solver's name (sim/solver/solver_registry.h), refused as
+// gravity_model's values are, with the names to choose from.
+std::string scene_solver(JsonFields& simulation) {
+  const std::string solver = *simulation.text("solver");
+  std::string expected;
+  const std::vector<StepSolverEntry>& solvers = registered_step_solvers();
+  for (std::size_t i = 0; i < solvers.size(); ++i) {
+    if (solver == solvers[i].name) return solver;
+    expected += (i == 0 ? "" : i + 1 == solvers.size() ? " or " : ", ");
+    expected += "\"" + std::string(solvers[i].name) + "\"";
+  }
+  simulation.fail("solver", expected);
+}
+
 Shape file_shape(const std::string& path, JsonFields& mesh) {
   const std::string file = relative_to(path, *mesh.text("file"));
   const std::string problem = mesh_file_problem(file);
@@ -191,6 +206,7 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     scene.params.iterations =
         simulation.whole("iterations", 1, limits::max_iterations).value_or(50);
     scene.params.chebyshev = simulation.flag("chebyshev").value_or(false);
+    if (simulation.has("solver")) scene.params.solver = scene_solver(simulation);
     if (simulation.has("gravity")) {
       // A number is the downward acceleration; a vector may point anywhere (a sideways part
       // acts as a steady wind).

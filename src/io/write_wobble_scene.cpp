@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.h"
 #include "sim/input_error.h"
+#include "sim/solver/solver_registry.h"
 #include "sim/value_limits.h"
 
 namespace wobble {
@@ -78,6 +79,9 @@ json simulation_json(const SimulationParams& params) {
                  {"gravity", vector_json(params.gravity)},
                  {"damping", params.damping},
                  {"wind", wind_json(params.wind)}};
+  // Only another solver than the default is written, so scenes saved before there was a choice
+  // and scenes that keep the default read and write the same.
+  if (params.solver != registered_step_solvers().front().name) object["solver"] = params.solver;
   if (params.gravity_model == GravityModel::force_per_vertex) {
     object["gravity_model"] = "force_per_vertex";
   }

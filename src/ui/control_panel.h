@@ -34,6 +34,10 @@ struct PanelStats {
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
   std::string recording;           // while recording: "DIR/ (N frames)"
+  // What the simulation and compare sections' solver combos offer, and the label of the solver
+  // stepping the simulation ("L-BFGS"), which the stats name.
+  std::vector<SolverOption> solvers;
+  std::string solver;
   // Self-collision on (its row shows only then), the vertices the last step's self-collision
   // moved, and that step's time detecting pairs and pushing them apart (ms).
   bool self_collision = false;

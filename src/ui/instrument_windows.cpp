@@ -30,6 +30,29 @@ std::vector<double> iteration_numbers(std::size_t count) {
   return x;
 }
 
+bool has_step(const ConvergenceCurve& side) {
+  return side.energy != nullptr && !side.energy->empty() && side.gradient_norm != nullptr;
+}
+
+int iterations_of(const ConvergenceCurve& side) {
+  return static_cast<int>(side.energy->size()) - 1;
+}
+
+// A side's light: a disc of its colour, then its words and how far the gradient fell (its last
+// over its first), after `name` ("left: ", or nothing when there is one side).
+void draw_light(const ConvergenceCurve& side, const char* name) {
+  const ImVec4 color = light_color(side.light);
+  const ImVec2 at = ImGui::GetCursorScreenPos();
+  const float line = ImGui::GetTextLineHeight();
+  ImGui::GetWindowDrawList()->AddCircleFilled(ImVec2(at.x + 0.5f * line, at.y + 0.5f * line),
+                                              0.45f * line, ImGui::GetColorU32(color));
+  ImGui::Dummy(ImVec2(line, line));
+  ImGui::SameLine();
+  // Two sides' lines carry their names: " of start" would no longer fit the column.
+  ImGui::TextColored(color, "%s%s: |grad| at %.2g%s", name, convergence_label(side.light),
+                     side.reduction, name[0] == '\0' ? " of start" : "");
+}
+
 }  // namespace
 
 const char* convergence_label(ConvergenceLight light) {
@@ -52,9 +75,10 @@ float instrument_column_left(float display_width, float ui_scale) {
   return display_width - instrument_column_width(display_width, ui_scale) - 10.0f * ui_scale;
 }
 
-const char* convergence_hint(ConvergenceLight light) {
+const char* convergence_hint(ConvergenceLight light, bool chebyshev_applies) {
   if (light == ConvergenceLight::green) return "";
-  return "stiff springs need more iterations, Chebyshev, or a smaller dt";
+  return chebyshev_applies ? "stiff springs need more iterations, Chebyshev, or a smaller dt"
+                           : "stiff springs need more iterations or a smaller dt";
 }
 
 void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale) {
@@ -70,58 +94,90 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
     ImGui::End();
     return;
   }
-  if (data.energy == nullptr || data.energy->empty()) {
+  // The sides that took a step: the left one alone, or both sides of a split view.
+  std::vector<const ConvergenceCurve*> sides;
+  if (has_step(data.left)) sides.push_back(&data.left);
+  if (data.right && has_step(*data.right)) sides.push_back(&*data.right);
+  if (sides.empty()) {
     ImGui::TextDisabled("no step taken yet");
     ImGui::End();
     return;
   }
-  const std::vector<double>& energy = *data.energy;
-  const std::vector<double>& gradient = *data.gradient_norm;
-  const int iterations = static_cast<int>(energy.size()) - 1;
-
-  const ImVec4 color = light_color(data.light);
-  const ImVec2 at = ImGui::GetCursorScreenPos();
-  const float line = ImGui::GetTextLineHeight();
-  ImGui::GetWindowDrawList()->AddCircleFilled(ImVec2(at.x + 0.5f * line, at.y + 0.5f * line),
-                                              0.45f * line, ImGui::GetColorU32(color));
-  ImGui::Dummy(ImVec2(line, line));
-  ImGui::SameLine();
-  ImGui::TextColored(color, "%s: |grad| at %.2g of start", convergence_label(data.light),
-                     data.reduction);
-  const char* hint = convergence_hint(data.light);
-  if (hint[0] != '\0') {
-    ImGui::PushStyleColor(ImGuiCol_Text, color);
-    ImGui::TextWrapped("%s", hint);
+  const bool split = data.right.has_value();
+  // The worst light's hint, once; Chebyshev suggested only if every side that needs it can.
+  const ConvergenceCurve* worst = nullptr;
+  bool chebyshev_applies = true;
+  for (const ConvergenceCurve* side : sides) {
+    if (side->light == ConvergenceLight::green) continue;
+    if (!worst || side->light > worst->light) worst = side;
+    chebyshev_applies = chebyshev_applies && side->chebyshev_applies;
+  }
+  for (const ConvergenceCurve* side : sides) {
+    const char* name = !split ? "" : side == &data.left ? "left: " : "right: ";
+    draw_light(*side, name);
+  }
+  if (worst) {
+    ImGui::PushStyleColor(ImGuiCol_Text, light_color(worst->light));
+    ImGui::TextWrapped("%s", convergence_hint(worst->light, chebyshev_applies));
     ImGui::PopStyleColor();
   }
-  ImGui::Text("step %ld, %d %s iterations", data.step, iterations,
-              data.chebyshev ? "Chebyshev" : "plain");
+  if (!split) {
+    ImGui::Text("step %ld, %d %s iterations", data.left.step, iterations_of(data.left),
+                data.left.method.c_str());
+  } else if (sides.size() == 2 && sides[0]->step == sides[1]->step) {
+    ImGui::TextWrapped("step %ld, %d iterations left, %d right", sides[0]->step,
+                       iterations_of(*sides[0]), iterations_of(*sides[1]));
+  } else {
+    // Different dt: the sides count their own steps.
+    std::string steps;
+    for (const ConvergenceCurve* side : sides) {
+      char text[96];
+      std::snprintf(text, sizeof(text), "%s%s: step %ld, %d iterations", steps.empty() ? "" : "; ",
+                    side == &data.left ? "left" : "right", side->step, iterations_of(*side));
+      steps += text;
+    }
+    ImGui::TextWrapped("%s", steps.c_str());
+  }
 
-  const std::vector<double> x = iteration_numbers(energy.size());
-  // The objective's own value is offset by −pᵀf_ext; what shows convergence is how far each
-  // iterate's energy is above the lowest reached.
-  const double lowest = *std::min_element(energy.begin(), energy.end());
-  std::vector<double> above(energy.size());
-  for (std::size_t i = 0; i < energy.size(); ++i)
-    above[i] = energy[i] - lowest;
+  // One curve a side on each plot, the left side's in blue and the right side's in orange; alone,
+  // the gradient in blue and the energy in orange.
+  const ImU32 blue = IM_COL32(110, 190, 255, 255), orange = IM_COL32(255, 170, 90, 255);
+  std::vector<std::vector<double>> x(sides.size()), above(sides.size());
+  std::vector<std::string> gradient_names(sides.size()), energy_names(sides.size());
+  std::vector<PlotSeries> gradient_series, energy_series;
+  for (std::size_t s = 0; s < sides.size(); ++s) {
+    const ConvergenceCurve& side = *sides[s];
+    const std::vector<double>& energy = *side.energy;
+    x[s] = iteration_numbers(energy.size());
+    // The objective's own value is offset by −pᵀf_ext; what shows convergence is how far each
+    // iterate's energy is above the lowest reached.
+    const double lowest = *std::min_element(energy.begin(), energy.end());
+    above[s].resize(energy.size());
+    for (std::size_t i = 0; i < energy.size(); ++i)
+      above[s][i] = energy[i] - lowest;
+    const char* name = !split ? "" : sides[s] == &data.left ? "left: " : "right: ";
+    gradient_names[s] = name + side.solver;
+    char e0[64];
+    std::snprintf(e0, sizeof(e0), "%sE0 = %.6g J", split ? name : "", energy.front());
+    energy_names[s] = e0;
+    const bool right = sides[s] != &data.left;
+    const int count = static_cast<int>(energy.size());
+    gradient_series.push_back({gradient_names[s].c_str(), x[s].data(), side.gradient_norm->data(),
+                               count, split && right ? orange : blue});
+    energy_series.push_back({energy_names[s].c_str(), x[s].data(), above[s].data(), count,
+                             split && !right ? blue : orange});
+  }
 
+  const float line = ImGui::GetTextLineHeight();
   const float plot_height = 0.5f * (ImGui::GetContentRegionAvail().y - 0.5f * line);
   PlotAxes axes;
   axes.log_y = true;
   axes.x_label = "iteration";
   axes.y_label = "|grad E| (N)";
   axes.x_format = "%.0f";
-  line_plot("gradient",
-            {{data.chebyshev ? "Chebyshev" : "plain", x.data(), gradient.data(),
-              static_cast<int>(gradient.size()), IM_COL32(110, 190, 255, 255)}},
-            axes, ImVec2(0.0f, plot_height));
+  line_plot("gradient", gradient_series, axes, ImVec2(0.0f, plot_height));
   axes.y_label = "E - lowest E (J)";
-  char name[64];
-  std::snprintf(name, sizeof(name), "E0 = %.6g J", energy.front());
-  line_plot(
-      "energy",
-      {{name, x.data(), above.data(), static_cast<int>(above.size()), IM_COL32(255, 170, 90, 255)}},
-      axes, ImVec2(0.0f, plot_height));
+  line_plot("energy", energy_series, axes, ImVec2(0.0f, plot_height));
   ImGui::End();
 }
 
@@ -143,13 +199,32 @@ void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) 
     return;
   }
   const int count = static_cast<int>(data.time->size());
+  PlotAxes axes;
+  axes.x_label = "time (s)";
+  if (data.right_time != nullptr) {
+    // Split: the two sides' totals, in the convergence window's colours for left and right; how
+    // the methods lose energy is the comparison (the breakdown is the single view's).
+    axes.y_label = "total J";
+    char left[96], right[96];
+    std::snprintf(left, sizeof(left), "left, %s: %.4g J", data.left_solver.c_str(),
+                  data.total->back());
+    std::vector<PlotSeries> series = {
+        {left, data.time->data(), data.total->data(), count, IM_COL32(110, 190, 255, 255)}};
+    if (!data.right_time->empty()) {
+      std::snprintf(right, sizeof(right), "right, %s: %.4g J", data.right_solver.c_str(),
+                    data.right_total->back());
+      series.push_back({right, data.right_time->data(), data.right_total->data(),
+                        static_cast<int>(data.right_time->size()), IM_COL32(255, 170, 90, 255)});
+    }
+    line_plot("energy", series, axes, ImVec2(0.0f, ImGui::GetContentRegionAvail().y));
+    ImGui::End();
+    return;
+  }
   char kinetic[48], spring[48], gravity[48], total[48];
   std::snprintf(kinetic, sizeof(kinetic), "kinetic %.4g J", data.kinetic->back());
   std::snprintf(spring, sizeof(spring), "spring %.4g J", data.spring->back());
   std::snprintf(gravity, sizeof(gravity), "gravity %.4g J", data.gravity->back());
   std::snprintf(total, sizeof(total), "total %.4g J", data.total->back());
-  PlotAxes axes;
-  axes.x_label = "time (s)";
   axes.y_label = "J";
   line_plot(
       "energy",

@@ -19,6 +19,37 @@ void log_drag_tooltip() {
   }
 }
 
+// The solver's combo (`label`) over `solvers`, and whether Chebyshev applies to the one chosen.
+bool solver_combo(const char* label, int& solver, const std::vector<SolverOption>& solvers) {
+  if (solvers.empty()) return true;
+  if (solver < 0 || solver >= static_cast<int>(solvers.size())) solver = 0;
+  if (ImGui::BeginCombo(label, solvers[solver].label.c_str())) {
+    for (int i = 0; i < static_cast<int>(solvers.size()); ++i) {
+      if (ImGui::Selectable(solvers[i].label.c_str(), i == solver)) solver = i;
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip(
+        "How each step's positions are solved for, switched from the next step on:\n"
+        "local-global, the course's method (Liu et al. 2013), or\n"
+        "L-BFGS on the same energy (Liu et al. 2017)");
+  }
+  return solvers[solver].chebyshev;
+}
+
+// A checkbox greyed out, with why, when Chebyshev does not apply to the solver chosen.
+void chebyshev_checkbox(const char* label, bool& on, bool applies) {
+  if (!applies) ImGui::BeginDisabled();
+  ImGui::Checkbox(label, &on);
+  if (!applies) {
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip("Chebyshev acceleration applies to the local-global iterations only");
+    }
+  }
+}
+
 }  // namespace
 
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
@@ -107,7 +138,8 @@ PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning) 
   return requests;
 }
 
-bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
+bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
+                             bool course_scene) {
   // Stiffness spans six decades and dt four: both move by a factor a pixel (log_drag.h).
   log_drag("k (N/m)", &settings.k, SimulationSettings::min_k, SimulationSettings::max_k, "%.1f");
   log_drag_tooltip();
@@ -117,13 +149,15 @@ bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
                    SimulationSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
   // A course scene reproduces the course's program, which iterates plainly.
   if (course_scene) ImGui::BeginDisabled();
-  ImGui::Checkbox("Chebyshev acceleration", &settings.chebyshev);
+  const bool chebyshev_applies = solver_combo("solver", settings.solver, solvers);
+  chebyshev_checkbox("Chebyshev acceleration", settings.chebyshev,
+                     chebyshev_applies || course_scene);
   if (course_scene) {
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
       ImGui::SetTooltip(
           "A course scene reproduces the course's program exactly:\n"
-          "plain iterations only.");
+          "plain local-global iterations only.");
     }
   }
   ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, SimulationSettings::max_gravity,
@@ -187,7 +221,8 @@ void draw_instruments_section(InstrumentSettings& settings) {
   ImGui::Checkbox("energy", &settings.show_energy);
 }
 
-void draw_split_section(SplitSettings& settings, bool student_side) {
+void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,
+                        bool student_side) {
   if (student_side) {
     // wobble --student: the right side is the student's step, with the seed's settings.
     ImGui::TextWrapped(
@@ -204,7 +239,8 @@ void draw_split_section(SplitSettings& settings, bool student_side) {
   log_drag_tooltip();
   ImGui::SliderInt("iterations right", &settings.right_iterations, Limits::min_iterations,
                    Limits::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
-  ImGui::Checkbox("Chebyshev right", &settings.right_chebyshev);
+  const bool chebyshev_applies = solver_combo("solver right", settings.right_solver, solvers);
+  chebyshev_checkbox("Chebyshev right", settings.right_chebyshev, chebyshev_applies);
 }
 
 }  // namespace wobble

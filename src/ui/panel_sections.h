@@ -49,13 +49,22 @@ struct PlayRequests {
 };
 PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning);
 
-// "simulation": k, dt, iterations, Chebyshev, gravity and Restore defaults (returns whether it
-// was pressed). A course scene (`course_scene`) iterates plainly: no Chebyshev offered.
+// A step solver as the panel offers it (the app lists the registered ones).
+struct SolverOption {
+  std::string label;       // e.g. "local-global", "L-BFGS"
+  bool chebyshev = false;  // Chebyshev acceleration applies to it
+};
+
+// "simulation": k, dt, iterations, the solver, Chebyshev, gravity and Restore defaults (returns
+// whether it was pressed). The solver's combo shows `solvers` (none: no combo); Chebyshev is
+// greyed out for a solver it does not apply to. A course scene (`course_scene`) keeps the
+// course's plain local-global iterations: neither another solver nor Chebyshev offered.
 struct SimulationSettings {
   float k = 400.0f;         // N/m
   float dt = 1.0f / 60.0f;  // s
   int iterations = 50;      //
   float gravity = 9.81f;    // m/s², its strength along the scene's own direction
+  int solver = 0;           // index into the solvers offered; 0 the default
   bool chebyshev = false;   // Chebyshev acceleration of the iterations
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
@@ -63,7 +72,8 @@ struct SimulationSettings {
   static constexpr int min_iterations = 1, max_iterations = 100;
   static constexpr float max_gravity = 30.0f;
 };
-bool draw_simulation_section(SimulationSettings& settings, bool course_scene);
+bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
+                             bool course_scene);
 
 // "environment": damping, friction, wind, colliders and self-collision. Friction and the
 // colliders' checkbox show only with colliders, the wind's speed and heading only for the
@@ -107,15 +117,18 @@ struct InstrumentSettings {
 };
 void draw_instruments_section(InstrumentSettings& settings);
 
-// "compare": the split view and its right side's own settings; with a student's step on the
-// right (`student_side`), what it shows instead.
+// "compare": the split view and its right side's own settings, its solver from `solvers` (as the
+// simulation section's); with a student's step on the right (`student_side`), what it shows
+// instead.
 struct SplitSettings {
   bool split = false;
   float right_k = 400.0f, right_dt = 1.0f / 60.0f;
   int right_iterations = 5;
+  int right_solver = 0;  // index into the solvers offered
   bool right_chebyshev = false;
 };
-void draw_split_section(SplitSettings& settings, bool student_side);
+void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,
+                        bool student_side);
 
 }  // namespace wobble
 

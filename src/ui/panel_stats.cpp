@@ -51,7 +51,11 @@ void draw_panel_stats(const PanelStats& stats, bool paused) {
   } else {
     ImGui::Text("simulated %.2f s, %d pins", stats.simulated_seconds, stats.pins);
   }
-  ImGui::Text("%d vertices, %d springs", stats.vertices, stats.springs);
+  if (stats.solver.empty()) {
+    ImGui::Text("%d vertices, %d springs", stats.vertices, stats.springs);
+  } else {
+    ImGui::Text("%d vertices, %d springs, %s", stats.vertices, stats.springs, stats.solver.c_str());
+  }
   if (stats.self_collision) ImGui::Text("self contacts %d", stats.self_contacts);
 }
 

@@ -6,8 +6,9 @@
 namespace wobble {
 
 // The panel's stats in a few short lines, each one line of text at the panel's width: frame
-// rate and real time, the step's time, the simulated time and the shape's size. The panel pins
-// them under its scrolling sections, so they stay in view. Between ImGui::Begin and End.
+// rate and real time, the step's time, the simulated time, the shape's size and the solver
+// stepping it. The panel pins them under its scrolling sections, so they stay in view. Between
+// ImGui::Begin and End.
 void draw_panel_stats(const PanelStats& stats, bool paused);
 
 // How many lines draw_panel_stats draws for `stats`.

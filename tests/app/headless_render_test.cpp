@@ -250,6 +250,58 @@ TEST(HeadlessRender, WithoutEglItExitsWithOneLineSayingWhatToInstall) {
   EXPECT_TRUE(folder.entries().empty());
 }
 
+// Pixels of `image` within `tolerance` of `rgb` in each channel, in the rectangle from (x0, y0) to
+// (x1, y1), exclusive.
+long pixels_near(const wobble::RgbaImage& image, const int (&rgb)[3], int tolerance, int x0, int y0,
+                 int x1, int y1) {
+  long count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const unsigned char* p = image.pixel(x, y);
+      if (std::abs(p[0] - rgb[0]) <= tolerance && std::abs(p[1] - rgb[1]) <= tolerance &&
+          std::abs(p[2] - rgb[2]) <= tolerance) {
+        ++count;
+      }
+    }
+  }
+  return count;
+}
+
+// wobble cloth --compare solver=local-global,solver=lbfgs --plots, as a class would show the two
+// methods: the split view, and the energy plot with a second line (orange) for the right side,
+// which the single view's plot has not.
+TEST(HeadlessRender, SplitSolversShowBothSidesInThePlots) {
+  TemporaryFolder folder;
+  const auto render = [&](const std::string& name, const std::string& arguments) {
+    const auto run =
+        run_wobble("cloth --headless --frames 12 --plots " + arguments +
+                       " --width 1280 --height 720 --screenshot '" + folder.file(name) + "'",
+                   no_display);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return wobble::read_png(folder.file(name));
+  };
+  const wobble::RgbaImage split = render("split.png", "--compare solver=local-global,solver=lbfgs");
+  const wobble::RgbaImage single = render("single.png", "");
+  ASSERT_EQ(split.width, 1280);
+  ASSERT_EQ(single.width, 1280);
+  // The energy window stands under the convergence window in the column at the right (from
+  // x = 890, y = 410 at this size; instrument_windows.cpp); the right side's line and its legend
+  // swatch are the convergence window's orange, (255, 170, 90).
+  const int orange[3] = {255, 170, 90};
+  const long split_orange = pixels_near(split, orange, 20, 890, 410, 1280, 720);
+  EXPECT_GT(split_orange, 50) << "no right-side line in the energy plot";
+  EXPECT_LT(pixels_near(single, orange, 20, 890, 410, 1280, 720), split_orange / 10);
+  // Left of the column, both sides show the cloth.
+  long left = 0, right = 0;
+  for (int y = 0; y < split.height; ++y) {
+    for (int x = 0; x < 880; ++x) {
+      if (wobble::testing::is_cloth_front(split.pixel(x, y))) (x < 445 ? left : right) += 1;
+    }
+  }
+  EXPECT_GT(left, 1000);
+  EXPECT_GT(right, 1000);
+}
+
 }  // namespace
 
 // The split view shares what the panel leaves: the left side's cloth shows beside the panel as

@@ -1,6 +1,7 @@
-// The panel's self-collision controls clicked through real ImGui (fonts built on the CPU, nothing
-// drawn), as a user clicks them: the viewer hands them to the simulation; a course scene offers
-// none. And the contacts colouring of the viewer's own shape.
+// The panel's self-collision controls and solver combos clicked through real ImGui (fonts built on
+// the CPU, nothing drawn), as a user clicks them: the viewer hands them to the simulation (and to
+// the split view's right side); a course scene offers neither. And the contacts colouring of the
+// viewer's own shape.
 #include <gtest/gtest.h>
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -26,11 +27,13 @@ struct PanelFixture {
     for (int i = 0; i < 3; ++i)
       ui_frame(ImVec2(-1.0f, -1.0f), false);
   }
-  // The panel with the mouse at `mouse`, its left button down or up; no step.
-  void ui_frame(const ImVec2& mouse, bool down) {
+  // The panel with the mouse at `mouse`, its left button down or up, the wheel turned by `wheel`
+  // notches (negative: down the list); no step.
+  void ui_frame(const ImVec2& mouse, bool down, float wheel = 0.0f) {
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = mouse;
     io.MouseDown[0] = down;
+    io.MouseWheel = wheel;
     ImGui::NewFrame();
     viewer.build_ui(wobble::PanelStats(), 1.0f);
     ImGui::EndFrame();
@@ -56,6 +59,36 @@ struct PanelFixture {
   void click(const ImVec2& at) {
     ui_frame(at, true);
     ui_frame(at, false);
+  }
+  // find(), scrolling the list down a notch at a time until `label` shows.
+  std::optional<ImVec2> scroll_to(const char* label) {
+    std::optional<ImVec2> at = find(label);
+    for (int notch = 0; !at && notch < 40; ++notch) {
+      ui_frame(ImVec2(100.0f, 300.0f), false, -1.0f);
+      at = find(label);
+    }
+    return at;
+  }
+  // Opens the combo `combo` and clicks its item `item`; false when either is not there.
+  bool choose(const char* combo, const char* item) {
+    const std::optional<ImVec2> at = scroll_to(combo);
+    if (!at) return false;
+    click(*at);
+    ImGuiWindow* popup = nullptr;
+    for (ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
+      if (std::string(window->Name).rfind("##Combo_", 0) == 0 && window->Active) popup = window;
+    }
+    if (popup == nullptr) return false;
+    const ImGuiID id = popup->GetIDNoKeepAlive(item);
+    for (float y = popup->Pos.y + 1.0f; y < popup->Pos.y + popup->Size.y; y += 2.0f) {
+      const ImVec2 over(popup->Pos.x + 12.0f, y);
+      ui_frame(over, false);
+      if (ImGui::GetCurrentContext()->HoveredId == id) {
+        click(over);
+        return true;
+      }
+    }
+    return false;
   }
   wobble::testing::HeadlessImGui imgui;
   wobble::Viewer viewer;
@@ -120,6 +153,77 @@ TEST(ViewerPanel, ACourseSceneOffersNoSelfCollision) {
   // ... but not self-collision.
   EXPECT_FALSE(f.find("self-collision"));
   EXPECT_FALSE(f.viewer.simulation().params().self_collision.on);
+}
+
+// The solver combo switches the running simulation from the next step on, keeping its state;
+// Chebyshev, which applies to local-global only, is greyed out meanwhile.
+TEST(ViewerPanel, TheSolverComboSwitchesTheSimulationWhileItRuns) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  ASSERT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.stats().solver, "local-global");
+  ASSERT_EQ(f.viewer.stats().solvers.size(), 2u);
+  for (int i = 0; i < 5; ++i)
+    f.viewer.advance();
+  const Eigen::MatrixXd before = f.viewer.simulation().positions();
+  ASSERT_TRUE(f.choose("solver", "L-BFGS"));
+  EXPECT_EQ(f.viewer.simulation().params().solver, "lbfgs");
+  EXPECT_EQ(f.viewer.simulation().steps_taken(), 5);
+  EXPECT_EQ(f.viewer.simulation().positions(), before) << "the state is kept";
+  f.viewer.advance();
+  EXPECT_EQ(f.viewer.stats().solver, "L-BFGS");
+
+  // Greyed out: a click leaves Chebyshev off.
+  const std::optional<ImVec2> chebyshev = f.find("Chebyshev acceleration");
+  ASSERT_TRUE(chebyshev);
+  f.click(*chebyshev);
+  EXPECT_FALSE(f.viewer.simulation().params().chebyshev);
+  ASSERT_TRUE(f.choose("solver", "local-global"));
+  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  f.click(*f.find("Chebyshev acceleration"));
+  EXPECT_TRUE(f.viewer.simulation().params().chebyshev) << "local-global takes it again";
+}
+
+// While a batch runs on the stepping thread, the choice waits; the simulation takes it between
+// batches, as every panel edit.
+TEST(ViewerPanel, TheSolverReachesASimulationSteppingOnItsThread) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  f.viewer.step_on_thread([] {});
+  ASSERT_TRUE(f.viewer.exchange(0.0, 1.0 / 60.0));  // starts a batch
+  ASSERT_TRUE(f.choose("solver", "L-BFGS"));
+  f.viewer.finish_steps();
+  EXPECT_EQ(f.viewer.simulation().params().solver, "lbfgs");
+  // Restore defaults brings back the scene's own.
+  const std::optional<ImVec2> restore = f.find("Restore defaults");
+  ASSERT_TRUE(restore);
+  f.click(*restore);
+  f.viewer.finish_steps();
+  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+}
+
+// The compare section's own combo: the right side's solver, the left's unchanged.
+TEST(ViewerPanel, TheRightSolverComboSwitchesTheSplitViewsRightSide) {
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings("solver=lbfgs");
+  PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
+  ASSERT_NE(f.viewer.right_side(), nullptr);
+  EXPECT_EQ(f.viewer.right_side()->params().solver, "lbfgs");
+  f.viewer.advance();
+  ASSERT_TRUE(f.choose("solver right", "local-global"));
+  f.viewer.advance();
+  EXPECT_EQ(f.viewer.right_side()->params().solver, "local-global");
+  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  ASSERT_TRUE(f.choose("solver right", "L-BFGS"));
+  f.viewer.advance();
+  EXPECT_EQ(f.viewer.right_side()->params().solver, "lbfgs");
+  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+}
+
+// A course scene keeps the course's local-global: the combo is there but greyed out.
+TEST(ViewerPanel, ACourseSceneKeepsLocalGlobal) {
+  PanelFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
+  EXPECT_TRUE(f.find("solver"));
+  EXPECT_FALSE(f.choose("solver", "L-BFGS"));
+  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
 }
 
 // The viewer's own copy of the colours, taken between batches as for strain and speed: the

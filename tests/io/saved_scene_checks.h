@@ -57,6 +57,7 @@ inline void expect_same_params(const SimulationParams& a, const SimulationParams
   EXPECT_EQ(a.gravity_model, b.gravity_model);
   EXPECT_EQ(a.first_iterate, b.first_iterate);
   EXPECT_EQ(a.chebyshev, b.chebyshev);
+  EXPECT_EQ(a.solver, b.solver);
   EXPECT_EQ(a.single_precision_solve_above, b.single_precision_solve_above);
   EXPECT_EQ(a.damping, b.damping);
   EXPECT_EQ(a.wind.on, b.wind.on);

@@ -49,6 +49,24 @@ TEST(WobbleScene, ClothGeneratorMatchesTheBuiltInCloth) {
   EXPECT_TRUE(scene.notes.empty());
 }
 
+// simulation.solver names the step solver; without it, the default (the course's local-global).
+TEST(WobbleScene, ReadsTheSolver) {
+  TemporaryFolder folder;
+  const wobble::Scene lbfgs = load(folder, R"({
+    "mesh": {"generator": "cloth", "resolution": 8},
+    "simulation": {"solver": "lbfgs", "iterations": 12}
+  })");
+  EXPECT_EQ(lbfgs.params.solver, "lbfgs");
+  EXPECT_EQ(lbfgs.params.iterations, 12);
+  const wobble::Scene plain = load(folder, R"({"mesh": {"generator": "cloth", "resolution": 8},
+                                               "simulation": {"dt": 0.01}})");
+  EXPECT_EQ(plain.params.solver, "local-global");
+  const wobble::Scene named = load(folder, R"({"mesh": {"generator": "cloth", "resolution": 8},
+                       "simulation": {"solver": "local-global", "chebyshev": true}})");
+  EXPECT_EQ(named.params.solver, "local-global");
+  EXPECT_TRUE(named.params.chebyshev);
+}
+
 TEST(WobbleScene, JellyGeneratorMatchesTheBuiltInJelly) {
   TemporaryFolder folder;
   const wobble::Scene scene = load(folder, R"({
@@ -285,6 +303,11 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
        "material.vertex_masses: expected either vertex_masses or a density or mass"},
       {R"({"mesh": {"generator": "cloth"}, "simulation": {"gravity_model": "heavy"}})",
        "simulation.gravity_model: expected \"acceleration\" or \"force_per_vertex\""},
+      // The solver's names come from the registry, as gravity_model's values are listed.
+      {R"({"mesh": {"generator": "cloth"}, "simulation": {"solver": "L-BFGS"}})",
+       "simulation.solver: expected \"local-global\" or \"lbfgs\", got \"L-BFGS\""},
+      {R"({"mesh": {"generator": "cloth"}, "simulation": {"solver": ["lbfgs"]}})",
+       "simulation.solver: expected a string"},
       {R"({"mesh": {"generator": "cloth"}, "simulation": {"first_iterate": "zero"}})",
        "simulation.first_iterate: expected \"inertial_prediction\" or \"current_positions\""},
       {R"({"mesh": {"generator": "cloth"},

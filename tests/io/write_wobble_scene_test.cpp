@@ -140,6 +140,23 @@ TEST(WriteWobbleScene, KeepsPlaneNormalsBitForBit) {
   testing::expect_same_params(scene.params, saved.params);
 }
 
+// Another solver than the default is written and read back; the default writes no key, so that
+// scenes saved before there was a choice read and write the same.
+TEST(WriteWobbleScene, WritesTheSolverOnlyWhenNotTheDefault) {
+  TemporaryFolder folder;
+  Scene scene = load_scene("cloth");
+  ASSERT_EQ(scene.params.solver, "local-global");
+  EXPECT_FALSE(wobble_scene_json(scene, "default.obj", "")["simulation"].contains("solver"));
+  scene.params.solver = "lbfgs";
+  const nlohmann::json object = wobble_scene_json(scene, "lbfgs.obj", "");
+  EXPECT_EQ(object["simulation"]["solver"], "lbfgs");
+  write_wobble_scene(folder.file("lbfgs.json"), scene);
+  const Scene saved = load_scene(folder.file("lbfgs.json"));
+  EXPECT_EQ(saved.params.solver, "lbfgs");
+  expect_same_scene(scene, saved);
+  expect_same_steps(scene, saved, 5);
+}
+
 // Self-collision on survives with its thickness; off, the file has no key (its presence would
 // turn it on).
 TEST(WriteWobbleScene, KeepsSelfCollisionOnlyWhenOn) {

@@ -14,9 +14,14 @@ namespace {
 using wobble::PanelSettings;
 using wobble::testing::PanelDriver;
 
+// The solvers as the viewer offers them.
+const std::vector<wobble::SolverOption> solvers = {{"local-global", true}, {"L-BFGS", false}};
+
 // Every row the panel can show at once: the split view's, self-collision's, the colliders',
-// a warning, a recording and two notes.
+// the solver combos, a warning, a recording and two notes.
 void show_everything(PanelDriver& panel) {
+  panel.stats.solvers = solvers;
+  panel.stats.solver = "local-global";
   panel.settings.split = true;
   panel.settings.self_collision = true;
   panel.stats.has_colliders = true;
@@ -59,6 +64,8 @@ TEST_P(PanelFits, TheStatsStayInViewAndEveryRowIsReachable) {
                               "k (N/m)",
                               "dt (s)",
                               "iterations",
+                              "solver",
+                              "Chebyshev acceleration",
                               "Restore defaults",
                               "environment",
                               "damping (1/s)",
@@ -80,6 +87,7 @@ TEST_P(PanelFits, TheStatsStayInViewAndEveryRowIsReachable) {
                               "k right",
                               "dt right",
                               "iterations right",
+                              "solver right",
                               "Chebyshev right",
                               "timings",
                               "scene notes"};
@@ -241,6 +249,41 @@ TEST(ControlPanel, CtrlClickTypesAnExactK) {
   EXPECT_EQ(panel.settings.k, 1234.5f);
   type("5e7");
   EXPECT_EQ(panel.settings.k, PanelSettings::max_k);
+}
+
+// Chebyshev applies to local-global only: with L-BFGS chosen its checkbox, on either side, is
+// greyed out and a click leaves it as it was.
+TEST(ControlPanel, ChebyshevIsGreyedOutForASolverItDoesNotApplyTo) {
+  struct Case {
+    const char* checkbox;
+    int PanelSettings::*solver;
+    bool PanelSettings::*chebyshev;
+  };
+  for (const Case c :
+       {Case{"Chebyshev acceleration", &PanelSettings::solver, &PanelSettings::chebyshev},
+        Case{"Chebyshev right", &PanelSettings::right_solver, &PanelSettings::right_chebyshev}}) {
+    SCOPED_TRACE(c.checkbox);
+    PanelDriver panel(1920.0f, 1080.0f, 1.0f);
+    show_everything(panel);
+    panel.settings.*c.solver = 1;  // L-BFGS
+    panel.settle();
+    const std::optional<ImVec2> box = panel.find(c.checkbox);
+    ASSERT_TRUE(box);
+    panel.click(*box);
+    EXPECT_FALSE(panel.settings.*c.chebyshev) << "greyed out";
+    panel.settings.*c.solver = 0;  // local-global
+    panel.frame();
+    panel.click(*box);
+    EXPECT_TRUE(panel.settings.*c.chebyshev);
+  }
+}
+
+// Without solvers offered (a panel drawn on its own), there is no combo.
+TEST(ControlPanel, NoSolversOfferedNoCombo) {
+  PanelDriver panel(1920.0f, 1080.0f, 1.0f);
+  panel.settle();
+  EXPECT_FALSE(panel.find("solver"));
+  EXPECT_TRUE(panel.find("Chebyshev acceleration"));
 }
 
 TEST(LogDrag, SpeedMakesAFactorAPixelOverTheRange) {

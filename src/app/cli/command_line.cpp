@@ -5,9 +5,11 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <tuple>
 
 #include "app/cli/parse_number.h"
 #include "app/cli/scene_catalog.h"
+#include "app/cli/solver_choice.h"
 #include "io/output_target.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
@@ -102,6 +104,24 @@ void check_distinct_outputs(const CommandLine& command) {
   }
 }
 
+// --compare's settings for the left side ("solver=local-global,solver=lbfgs") against the
+// options that set the same: given both ways, which was meant?
+void check_left_side(const CommandLine& command) {
+  const SideSettings& left = command.compare->left;
+  const std::tuple<bool, const char*, const char*> overlaps[] = {
+      {left.iterations && command.iterations, "--iterations", "iterations"},
+      {left.solver && command.solver, "--solver", "solver"},
+      {left.chebyshev && command.chebyshev, "--chebyshev", "chebyshev"},
+      {left.dt && command.dt, "--dt", "dt"},
+      {left.k && command.k, "--k", "k"}};
+  for (const auto& [both, option, setting] : overlaps) {
+    if (both) {
+      throw InputError(std::string(option) + ", --compare: both set the left side's " + setting +
+                       ", expected one of them");
+    }
+  }
+}
+
 }  // namespace
 
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
@@ -121,7 +141,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
       record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness,
-      threads;
+      threads, solver;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -134,17 +154,22 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                  "coloured by its distance from Wobble's (split view)");
   app.add_option("--compare", compare,
                  "Split view: the right side with these settings, e.g. \"iterations=5\" "
-                 "(iterations, chebyshev=on|off, dt, k; comma-separated)");
-  app.add_option("--convergence-csv", convergence_csv,
-                 "Write frame,iteration,energy,gradient_norm of every iterate of every step");
+                 "(iterations, solver, chebyshev=on|off, dt, k; comma-separated; a setting "
+                 "named twice sets the left side, then the right)");
+  app.add_option(
+      "--convergence-csv", convergence_csv,
+      "Write frame,iteration,energy,gradient_norm,solver of every iterate of every step");
   app.add_option("--energy-csv", energy_csv,
                  "Write frame,time,kinetic,spring,gravity,potential,total of every frame (J)");
   app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
   app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
   app.add_option("--iterations", iterations, "Local-global iterations per step");
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
+  app.add_option("--solver", solver,
+                 "Step solver: local-global (the course's method, default) or lbfgs (L-BFGS, "
+                 "Liu et al. 2017); the scene's otherwise");
   app.add_flag("--chebyshev", command.chebyshev,
-               "Chebyshev acceleration of the iterations (Wang 2015)");
+               "Chebyshev acceleration of the local-global iterations (Wang 2015)");
   app.add_option("--damping", damping,
                  "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, "
                  "0)");
@@ -248,7 +273,11 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (convergence_csv) {
     command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
   }
-  if (compare) command.compare = parse_compare_settings(*compare);
+  if (solver) command.solver = parse_solver("--solver", *solver);
+  if (compare) {
+    command.compare = parse_compare_settings(*compare);
+    check_left_side(command);
+  }
   if (student) command.student = path_value("--student", *student, "folder path");
   if (!command.student.empty() && command.compare) {
     throw InputError("--student, --compare: both take the split view's right side; choose one");
@@ -297,8 +326,14 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
   // and ignored or reported as on. A course scene runs the reference program's method exactly
   // (its k, dt, iterations and wind are the reference's own settings).
   if (params.gravity_model == GravityModel::force_per_vertex) {
+    const std::string course_solver = solver_names().front();  // the course's local-global
+    const SideSettings* left = command.compare ? &command.compare->left : nullptr;
     const std::pair<bool, const char*> changes_method[] = {
         {command.chebyshev, "--chebyshev"},
+        {command.solver.value_or(course_solver) != course_solver, "--solver"},
+        {left && (left->chebyshev.value_or(false) ||
+                  left->solver.value_or(course_solver) != course_solver),
+         "--compare (its left side)"},
         {command.damping.has_value(), "--damping"},
         {command.friction.has_value(), "--friction"},
         {command.self_collision_thickness.has_value(), "--self-collision-thickness"},

@@ -29,7 +29,10 @@ struct CommandLine {
   std::optional<double> dt;
   std::optional<int> iterations;
   bool stats = false;
-  bool chebyshev = false;           // Chebyshev acceleration of the iterations
+  bool chebyshev = false;  // Chebyshev acceleration of the iterations
+  // --solver: the step solver by its registered name (app/cli/solver_choice.h); unset: the
+  // scene's.
+  std::optional<std::string> solver;
   std::optional<double> damping;    // 1/s, within limits::damping
   std::optional<double> friction;   // the material's μ against every collider, limits::friction
   bool wind = false;                // turn the scene's wind on (or the default breeze)
@@ -68,11 +71,14 @@ struct CommandLine {
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
 
 // Puts the command line's --damping, --friction, --wind and --self-collision into a scene's
-// parameters. --wind turns on the wind the scene has (the course wind for a course scene); a scene
-// whose aerodynamic wind has no velocity gets WindParams::default_breeze(). --self-collision
-// turns self-collision on with the scene's thickness (default 0.01 m) unless
-// --self-collision-thickness gives one. Throws InputError when either self-collision option meets
-// a course scene (params.gravity_model force_per_vertex): those keep the reference's behaviour.
+// parameters (--solver, --k and the rest are applied where the simulation starts). --wind turns on
+// the wind the scene has (the course wind for a course scene); a scene whose aerodynamic wind has
+// no velocity gets WindParams::default_breeze(). --self-collision turns self-collision on with the
+// scene's thickness (default 0.01 m) unless
+// --self-collision-thickness gives one. Throws InputError when --chebyshev, another solver than
+// the default (--solver, or --compare's for the left side), --damping, --friction or either
+// self-collision option meets a course scene (params.gravity_model force_per_vertex): those keep
+// the reference's behaviour.
 void apply_scene_overrides(const CommandLine& command, SimulationParams& params);
 
 }  // namespace wobble

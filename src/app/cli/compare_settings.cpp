@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/cli/parse_number.h"
+#include "app/cli/solver_choice.h"
 #include "sim/input_error.h"
 #include "sim/value_limits.h"
 
@@ -28,6 +29,16 @@ std::vector<std::string> split_settings(const std::string& text) {
   return parts;
 }
 
+// `left` with the setting `name` of `right` (already read) as its own.
+SideSettings moved_to_left(const SideSettings& right, const std::string& name, SideSettings left) {
+  if (name == "iterations") left.iterations = right.iterations;
+  if (name == "chebyshev") left.chebyshev = right.chebyshev;
+  if (name == "solver") left.solver = right.solver;
+  if (name == "dt") left.dt = right.dt;
+  if (name == "k") left.k = right.k;
+  return left;
+}
+
 double value_in(const std::string& name, const std::string& text, const ValueRange& range) {
   const std::optional<double> value = parse_number<double>(text);
   if (!value || !range.contains(*value)) {
@@ -39,9 +50,10 @@ double value_in(const std::string& name, const std::string& text, const ValueRan
 
 }  // namespace
 
-SimulationParams CompareSettings::applied_to(SimulationParams params) const {
+SimulationParams SideSettings::applied_to(SimulationParams params) const {
   if (iterations) params.iterations = *iterations;
   if (chebyshev) params.chebyshev = *chebyshev;
+  if (solver) params.solver = *solver;
   if (dt) params.dt = *dt;
   if (k) params.k = *k;
   return params;
@@ -63,12 +75,18 @@ CompareSettings parse_compare_settings(const std::string& text) {
       throw InputError("--compare: expected name=value, got '" + part + "'");
     }
     const std::string name = part.substr(0, equals), value = part.substr(equals + 1);
-    // As in a scene file, a setting given twice is refused: which one was meant?
-    if (std::find(named.begin(), named.end(), name) != named.end()) {
-      throw InputError("--compare: " + name + " is given twice in '" + text +
-                       "', expected each setting once");
+    // Named twice, a setting gives both sides theirs, the left side's first (read as the two
+    // sides stand); a third time, which side was meant?
+    const auto times = std::count(named.begin(), named.end(), name);
+    if (times == 2) {
+      throw InputError("--compare: " + name + " is given three times in '" + text +
+                       "', expected it once (the right side) or twice (left, then right)");
     }
     named.push_back(name);
+    if (times == 1) {
+      // The first value moves to the left side, and this one is read for the right.
+      settings.left = moved_to_left(settings, name, settings.left);
+    }
     if (name == "iterations") {
       const std::optional<long> count = parse_number<long>(value);
       if (!count || *count < 1 || *count > Simulation::max_iterations) {
@@ -84,23 +102,33 @@ CompareSettings parse_compare_settings(const std::string& text) {
       } else {
         throw InputError("--compare: chebyshev: expected on or off, got '" + value + "'");
       }
+    } else if (name == "solver") {
+      settings.solver = parse_solver("--compare: solver", value);
     } else if (name == "dt") {
       settings.dt = value_in(name, value, limits::time_step);
     } else if (name == "k") {
       settings.k = value_in(name, value, limits::stiffness);
     } else {
       throw InputError("--compare: unknown setting '" + name +
-                       "' (expected iterations, chebyshev, dt or k)");
+                       "' (expected iterations, solver, chebyshev, dt or k)");
     }
   }
   return settings;
 }
 
-std::string describe_side(const SimulationParams& params) {
+std::string describe_side(const SimulationParams& params, bool name_solver) {
   char text[160];
-  std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
-                params.iterations == 1 ? "" : "s", params.chebyshev ? "Chebyshev" : "plain",
-                1000.0 * params.dt, params.k);
+  const char* plural = params.iterations == 1 ? "" : "s";
+  if (name_solver) {
+    // A line of its own: "local-global (Chebyshev)" and the iterations would not fit beside
+    // each other in a half beside the panel and the plots.
+    std::snprintf(text, sizeof(text), "%s\n%d iteration%s\ndt %.3g ms, k %g N/m",
+                  solver_label(params.solver, params.chebyshev).c_str(), params.iterations, plural,
+                  1000.0 * params.dt, params.k);
+  } else {
+    std::snprintf(text, sizeof(text), "%d iteration%s, %s\ndt %.3g ms, k %g N/m", params.iterations,
+                  plural, params.chebyshev ? "Chebyshev" : "plain", 1000.0 * params.dt, params.k);
+  }
   return text;
 }
 

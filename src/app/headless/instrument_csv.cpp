@@ -49,7 +49,7 @@ InstrumentCsv::InstrumentCsv(std::string convergence_path, std::string energy_pa
     check_rows(
         "--convergence-csv", frames * (iterations + 1L),
         std::to_string(frames) + " frames of " + std::to_string(iterations + 1) + " iterates");
-    convergence_ = "frame,iteration,energy,gradient_norm\n";
+    convergence_ = "frame,iteration,energy,gradient_norm,solver\n";
   }
   if (!energy_path_.empty()) {
     check_output_path("--energy-csv", energy_path_);
@@ -72,6 +72,8 @@ void InstrumentCsv::record(long frame, const Simulation& simulation) {
       convergence_ += std::to_string(i);
       append_value(convergence_, trace.energy[i]);
       append_value(convergence_, trace.gradient_norm[i]);
+      convergence_.push_back(',');
+      convergence_ += trace.solver;
       convergence_.push_back('\n');
     }
   }

@@ -9,11 +9,13 @@ namespace wobble {
 
 // --convergence-csv and --energy-csv: the classroom instruments as files, for graders and CI.
 //
-// convergence: frame,iteration,energy,gradient_norm
+// convergence: frame,iteration,energy,gradient_norm,solver
 //   one row per iterate of every step: iteration 0 is the step's first iterate, iteration i the
-//   iterate after i local-global iterations; energy is the step's objective in J (springs,
-//   inertia, −pᵀf_ext and the pin term; see sim/instruments/step_objective.h), gradient_norm the
-//   norm of its gradient in N.
+//   iterate after i iterations; energy is the step's objective in J (springs, inertia, −pᵀf_ext
+//   and the pin term; see sim/instruments/step_objective.h), gradient_norm the norm of its
+//   gradient in N, solver the registered name of the solver that took the step ("local-global",
+//   "lbfgs"). The solver is the last column, so that readers of the first four by position or
+//   by name read them as before.
 // energy: frame,time,kinetic,spring,gravity,potential,total
 //   one row per frame, frame 0 being the initial state; J (see sim/instruments/frame_energy.h).
 //

@@ -82,6 +82,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   if (command.dt) params.dt = *command.dt;
   if (command.iterations) params.iterations = *command.iterations;
   if (command.chebyshev) params.chebyshev = true;
+  if (command.solver) params.solver = *command.solver;
   const auto simulation_pointer = naming_scene(command.scene, [&] {
     return std::make_unique<Simulation>(scene.network, scene.pins, params, scene.initial_velocity);
   });

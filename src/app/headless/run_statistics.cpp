@@ -39,6 +39,7 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"springs", scene.network.E.rows()},
       {"pinned", simulation.pin_count()},
       {"iterations", params.iterations},
+      {"solver", params.solver},
       {"chebyshev", params.chebyshev},
       {"chebyshev_rho", simulation.chebyshev_spectral_radius()},
       {"frames", frames},

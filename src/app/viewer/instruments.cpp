@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "app/cli/solver_choice.h"
 #include "ui/instrument_windows.h"
 
 namespace wobble {
@@ -25,6 +26,23 @@ ConvergenceLight light_for(const ConvergenceTrace& trace) {
       return ConvergenceLight::red;
   }
   return ConvergenceLight::red;
+}
+
+// A side's last step as the convergence window shows it, named by the solver that took it.
+ConvergenceCurve curve_of(const ConvergenceTrace& trace, long step) {
+  ConvergenceCurve curve;
+  curve.energy = &trace.energy;
+  curve.gradient_norm = &trace.gradient_norm;
+  curve.solver = solver_label(trace.solver, trace.chebyshev);
+  const bool local_global = solver_takes_chebyshev(trace.solver);
+  curve.method = !local_global     ? solver_label(trace.solver)
+                 : trace.chebyshev ? "Chebyshev"
+                                   : "plain";
+  curve.chebyshev_applies = local_global;
+  curve.light = light_for(trace);
+  curve.reduction = trace.gradient_reduction();
+  curve.step = step;
+  return curve;
 }
 
 }  // namespace
@@ -49,20 +67,40 @@ void EnergyHistory::add(double at, const FrameEnergy& energy) {
   total.push_back(energy.total);
 }
 
+void Instruments::Shown::take(ConvergenceTrace& taken, long step,
+                              const std::vector<std::pair<double, FrameEnergy>>& samples) {
+  if (step > 0) {
+    std::swap(trace, taken);
+    trace_step = step;
+  }
+  for (const auto& [time, sample] : samples)
+    energy.add(time, sample);
+}
+
+void Instruments::Shown::clear() {
+  trace = ConvergenceTrace();
+  trace_step = 0;
+  energy.clear();
+}
+
 void Instruments::clear() {
-  shown_trace_ = ConvergenceTrace();
-  shown_trace_step_ = 0;
-  energy_history_.clear();
+  left_.clear();
+  right_.clear();
 }
 
 void Instruments::take(ConvergenceTrace& trace, long trace_step,
                        const std::vector<std::pair<double, FrameEnergy>>& energy) {
-  if (trace_step > 0) {
-    std::swap(shown_trace_, trace);
-    shown_trace_step_ = trace_step;
-  }
-  for (const auto& [time, sample] : energy)
-    energy_history_.add(time, sample);
+  left_.take(trace, trace_step, energy);
+}
+
+void Instruments::take_right(ConvergenceTrace& trace, long trace_step,
+                             const std::vector<std::pair<double, FrameEnergy>>& energy) {
+  right_.take(trace, trace_step, energy);
+}
+
+void Instruments::set_sides(PlottedSides sides) {
+  if (!sides.split) right_.clear();
+  sides_ = std::move(sides);
 }
 
 float Instruments::draw(float ui_scale) {
@@ -74,25 +112,31 @@ float Instruments::draw(float ui_scale) {
       convergence_open || energy_open ? instrument_column_left(display, ui_scale) : -1.0f;
   if (convergence_open) {
     ConvergencePlotData data;
-    data.energy = &shown_trace_.energy;
-    data.gradient_norm = &shown_trace_.gradient_norm;
-    data.chebyshev = shown_trace_.chebyshev;
-    data.light = light_for(shown_trace_);
-    data.reduction = shown_trace_.gradient_reduction();
-    data.step = shown_trace_step_;
+    data.left = curve_of(left_.trace, left_.trace_step);
+    if (sides_.split) data.right = curve_of(right_.trace, right_.trace_step);
     draw_convergence_window(data, convergence_open, ui_scale);
   }
   if (energy_open) {
     EnergyPlotData data;
-    data.time = &energy_history_.time;
-    data.kinetic = &energy_history_.kinetic;
-    data.spring = &energy_history_.spring;
-    data.gravity = &energy_history_.gravity;
-    data.total = &energy_history_.total;
+    const EnergyHistory& left = left_.energy;
+    data.time = &left.time;
+    data.kinetic = &left.kinetic;
+    data.spring = &left.spring;
+    data.gravity = &left.gravity;
+    data.total = &left.total;
+    if (sides_.split) {
+      data.right_time = &right_.energy.time;
+      data.right_total = &right_.energy.total;
+      data.left_solver = sides_.left_solver;
+      data.right_solver = sides_.right_solver;
+    }
     draw_energy_window(data, energy_open, ui_scale);
   }
   // A window closed here stops its recording from the next batch on.
-  if (!energy_open) energy_history_.clear();
+  if (!energy_open) {
+    left_.energy.clear();
+    right_.energy.clear();
+  }
   return column_left;
 }
 

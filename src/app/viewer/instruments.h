@@ -1,6 +1,7 @@
 #ifndef WOBBLE_APP_VIEWER_INSTRUMENTS_H
 #define WOBBLE_APP_VIEWER_INSTRUMENTS_H
 
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -17,10 +18,18 @@ struct EnergyHistory {
   void clear();
 };
 
+// Which sides the plots show: the simulation alone, or with the view split both sides, each
+// named by its solver's label ("local-global (Chebyshev)", "L-BFGS").
+struct PlottedSides {
+  bool split = false;
+  std::string left_solver, right_solver;
+};
+
 // The classroom instruments, a component of the viewer: the convergence of the last step and
-// the energy over time. It owns which plots are open (the panel's "instruments" section, which
-// it draws, and G) and what they show; the viewer hands it each finished batch's results (on
-// the UI's side, between batches) and lets it draw once a frame.
+// the energy over time, of the simulation or, with the view split, of both sides. It owns which
+// plots are open (the panel's "instruments" section, which it draws, and G) and what they show;
+// the viewer hands it each finished batch's results (on the UI's side, between batches) and
+// lets it draw once a frame.
 class Instruments {
  public:
   // The panel's "instruments" section (panel_sections.h).
@@ -44,20 +53,36 @@ class Instruments {
   // `trace` is taken) and the (time, energy) after each of its steps.
   void take(ConvergenceTrace& trace, long trace_step,
             const std::vector<std::pair<double, FrameEnergy>>& energy);
+  // The same for the split view's right side, whose steps the batch also took.
+  void take_right(ConvergenceTrace& trace, long trace_step,
+                  const std::vector<std::pair<double, FrameEnergy>>& energy);
+  // Which sides there are now; the right side's curves are forgotten when the view is not split.
+  void set_sides(PlottedSides sides);
   // ImGui, between NewFrame and Render: the open plots, in a column at the window's right. A
   // plot the user closes is closed. Returns the column's left edge (ImGui's units), or a
   // negative number when no plot is open.
   float draw(float ui_scale);
 
-  const ConvergenceTrace& shown_trace() const { return shown_trace_; }
-  const EnergyHistory& energy_history() const { return energy_history_; }
+  const ConvergenceTrace& shown_trace() const { return left_.trace; }
+  const EnergyHistory& energy_history() const { return left_.energy; }
+  const ConvergenceTrace& shown_right_trace() const { return right_.trace; }
+  const EnergyHistory& right_energy_history() const { return right_.energy; }
 
  private:
+  // What the plots show of one side.
+  struct Shown {
+    ConvergenceTrace trace;  // its last step's
+    long trace_step = 0;     // which step that was; 0: none yet
+    EnergyHistory energy;
+    void take(ConvergenceTrace& trace, long trace_step,
+              const std::vector<std::pair<double, FrameEnergy>>& energy);
+    void clear();
+  };
+
   InstrumentSettings open_;  // which plots are open
   bool convergence_required_ = false;
-  ConvergenceTrace shown_trace_;  // what the convergence window shows
-  long shown_trace_step_ = 0;
-  EnergyHistory energy_history_;
+  PlottedSides sides_;
+  Shown left_, right_;  // the simulation's (the left side's), and the split view's right side's
 };
 
 }  // namespace wobble

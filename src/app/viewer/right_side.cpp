@@ -1,13 +1,14 @@
 // The split view's right side: the same scene twice, left and right, each with its own
-// iterations, Chebyshev, dt and k, stepping together from the same state under the same camera;
-// or, with wobble --student, a student's fast_mass_springs_step_sparse on the right, each vertex
-// coloured by how far it is from Wobble's. The student's step runs in its own process
+// iterations, solver, Chebyshev, dt and k, stepping together from the same state under the same
+// camera; or, with wobble --student, a student's fast_mass_springs_step_sparse on the right, each
+// vertex coloured by how far it is from Wobble's. The student's step runs in its own process
 // (student_step.h): a crash or an endless loop stops the right side with the reason written in
 // its corner, and the viewer goes on.
 #include "app/viewer/right_side.h"
 
 #include <algorithm>
 
+#include "app/cli/solver_choice.h"
 #include "app/viewer/quantity_colors.h"
 
 namespace wobble {
@@ -37,15 +38,18 @@ void RightSide::start_compare(const Scene& scene, const Simulation& left,
   auto simulation = std::make_unique<Simulation>(
       scene.network, scene.pins, settings.applied_to(left.params()), scene.initial_velocity);
   simulation->set_state(left.positions(), left.previous_positions());
+  simulation->set_convergence_recording(record_convergence_);
   simulation_ = std::move(simulation);
   behind_ = 0.0;
   warning_.clear();
+  samples_ = RightSideSamples();
   sync(left);
   const SimulationParams& params = simulation_->params();
   panel_.split = true;
   panel_.right_k = static_cast<float>(params.k);
   panel_.right_dt = static_cast<float>(params.dt);
   panel_.right_iterations = params.iterations;
+  panel_.right_solver = solver_index(params.solver);
   panel_.right_chebyshev = params.chebyshev;
 }
 
@@ -79,6 +83,7 @@ CompareSettings RightSide::settings() const {
   const SimulationParams& params = simulation_->params();
   settings.iterations = params.iterations;
   settings.chebyshev = params.chebyshev;
+  settings.solver = params.solver;
   settings.dt = params.dt;
   settings.k = params.k;
   return settings;
@@ -92,7 +97,32 @@ void RightSide::apply() {
   if (static_cast<float>(params.dt) != panel.right_dt) right.set_dt(panel.right_dt);
   panel.right_iterations = std::min(panel.right_iterations, right.max_iterations_for_mesh());
   if (params.iterations != panel.right_iterations) right.set_iterations(panel.right_iterations);
+  const std::string solver = solver_names().at(panel.right_solver);
+  if (params.solver != solver) right.set_solver(solver);
   if (params.chebyshev != panel.right_chebyshev) right.set_chebyshev(panel.right_chebyshev);
+}
+
+void RightSide::record(bool convergence, bool energy) {
+  record_convergence_ = convergence;
+  record_energy_ = energy;
+  // A student's side is never stepped here: nothing to record.
+  if (simulation_ && !student_ && simulation_->records_convergence() != convergence) {
+    simulation_->set_convergence_recording(convergence);
+  }
+}
+
+void RightSide::take_samples() {
+  const Simulation& right = *simulation_;
+  if (record_convergence_ && right.records_convergence()) {
+    // Into the buffers the last batch's trace left, as the left side's batch does.
+    const ConvergenceTrace& trace = right.last_convergence();
+    samples_.trace.energy.assign(trace.energy.begin(), trace.energy.end());
+    samples_.trace.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
+    samples_.trace.chebyshev = trace.chebyshev;
+    samples_.trace.solver = trace.solver;
+    samples_.trace_step = right.steps_taken();
+  }
+  if (record_energy_) samples_.energy.emplace_back(right.time(), frame_energy(right));
 }
 
 void RightSide::sync(const Simulation& left) {
@@ -153,6 +183,7 @@ void RightSide::advance(const Simulation& left, double seconds) {
       return;
     }
     behind_ -= dt;
+    take_samples();
   }
   // What a capped frame could not catch up is dropped, not carried into a burst later.
   behind_ = std::min(behind_, dt);
@@ -198,6 +229,7 @@ void RightSide::reset(const Scene& scene, const Simulation& left) {
     return;
   }
   warning_.clear();
+  samples_ = RightSideSamples();
   sync(left);
 }
 

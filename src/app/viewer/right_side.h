@@ -3,18 +3,28 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/cli/compare_settings.h"
 #include "app/student/student_step.h"
+#include "sim/instruments/convergence_trace.h"
+#include "sim/instruments/frame_energy.h"
 #include "sim/scene.h"
 #include "sim/simulation.h"
 #include "ui/panel_sections.h"
 
 namespace wobble {
 
+// What the right side's steps recorded for the plots since the viewer last took them.
+struct RightSideSamples {
+  ConvergenceTrace trace;  // its last step's, while its convergence is recorded
+  long trace_step = 0;     // which of its steps that was; 0: none recorded
+  std::vector<std::pair<double, FrameEnergy>> energy;  // (time, energy) after each of its steps
+};
+
 // The split view's right side, a component of the viewer: the same scene stepped with its own
-// iterations, Chebyshev, dt and k (--compare, the 2 key), or a student's
+// iterations, solver, Chebyshev, dt and k (--compare, the 2 key), or a student's
 // fast_mass_springs_step_sparse in a process of its own (--student). It owns that simulation,
 // how far it is behind the left side, why it stopped, and the student's step; everything else
 // (pins and drags, gravity, damping, wind, friction, colliders) it copies from the left side,
@@ -33,7 +43,10 @@ class RightSide {
   explicit RightSide(std::string student_server) : student_server_(std::move(student_server)) {}
 
   // The UI's side: the panel's "compare" section (panel_sections.h).
-  void draw_panel_section() { draw_split_section(panel_, student()); }
+  // `solvers`: what its solver combo offers, in the registry's order.
+  void draw_panel_section(const std::vector<SolverOption>& solvers) {
+    draw_split_section(panel_, solvers, student());
+  }
   // Whether the section's checkbox asks for a split view (2 flips it).
   bool split_asked() const { return panel_.split; }
   void ask_split(bool split) { panel_.split = split; }
@@ -68,12 +81,20 @@ class RightSide {
   void advance(const Simulation& left, double seconds);
   // Back to the left side's state (Reset); a student's server that crashed is started afresh.
   void reset(const Scene& scene, const Simulation& left);
+  // Record for the plots from the next step on, as the left side does while they are open: the
+  // last step's convergence (the simulation records it only then) and the energy after each
+  // step. Between batches.
+  void record(bool convergence, bool energy);
+  // What its steps recorded; the viewer takes them between batches and clears them.
+  RightSideSamples& samples() { return samples_; }
 
  private:
   // Pins and their targets, colliders, gravity, damping, friction, wind and self-collision from
   // the left side.
   void sync(const Simulation& left);
   void advance_student(const Simulation& left);
+  // After each of its good steps: what record() asked for.
+  void take_samples();
 
   SplitSettings panel_;  // the "compare" section's, on the UI's side
   std::unique_ptr<Simulation> simulation_;
@@ -83,6 +104,8 @@ class RightSide {
   std::unique_ptr<StudentStep> student_;
   double student_distance_ = 0.0;
   std::vector<float> student_colors_;
+  bool record_convergence_ = false, record_energy_ = false;
+  RightSideSamples samples_;
 };
 
 // The parameters under which Wobble's step is the seed's fast_mass_springs_step_sparse: 50 plain

@@ -85,6 +85,7 @@ void SimulationHost::run_batch() {
       batch_.trace.energy.assign(trace.energy.begin(), trace.energy.end());
       batch_.trace.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
       batch_.trace.chebyshev = trace.chebyshev;
+      batch_.trace.solver = trace.solver;
       batch_.trace_step = step;
     }
     if (batch_.record_energy) {

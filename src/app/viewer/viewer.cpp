@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "app/cli/scene_catalog.h"
+#include "app/cli/solver_choice.h"
 #include "app/student/student_server.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
@@ -40,6 +41,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.dt = command.dt;
   settings.iterations = command.iterations;
   settings.chebyshev = command.chebyshev;
+  settings.solver = command.solver;
   settings.layers.wireframe = command.wireframe;
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
@@ -64,6 +66,9 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
   if (settings.dt) scene.params.dt = *settings.dt;
   if (settings.iterations) scene.params.iterations = *settings.iterations;
   if (settings.chebyshev) scene.params.chebyshev = true;
+  if (settings.solver) scene.params.solver = *settings.solver;
+  // What --compare set for the left side ("solver=local-global,solver=lbfgs": the first).
+  if (settings.compare) scene.params = settings.compare->left.applied_to(scene.params);
   panel_.surface = settings.layers.surface;
   panel_.wireframe = settings.layers.wireframe;
   panel_.springs = settings.layers.springs;
@@ -142,6 +147,7 @@ void Viewer::load(Scene scene) {
   panel_.dt = static_cast<float>(scene_.params.dt);
   panel_.iterations = scene_.params.iterations;
   panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
+  panel_.solver = solver_index(scene_.params.solver);
   panel_.chebyshev = scene_.params.chebyshev;
   show_environment_in_panel();
 
@@ -214,6 +220,9 @@ PanelStats Viewer::simulation_stats() const {
   stats.self_contacts = host_.simulation().self_contact_count();
   stats.student_side = right_.student();
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
+  for (const std::string& name : solver_names())
+    stats.solvers.push_back({solver_label(name), solver_takes_chebyshev(name)});
+  stats.solver = solver_label(host_.simulation().params().solver);
   stats.warning = step_warning_;
   return stats;
 }

@@ -38,6 +38,8 @@ struct ViewerSettings {
   std::optional<double> k, dt;
   std::optional<int> iterations;
   bool chebyshev = false;  // turn Chebyshev acceleration on
+  // The step solver by its registered name (app/cli/solver_choice.h); unset: the scene's.
+  std::optional<std::string> solver;
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
@@ -170,6 +172,8 @@ class Viewer {
   void draw_overlays(float ui_scale);
   // Whether draw_overlays has anything to draw.
   bool has_overlays() const { return right_.simulation() || instruments_.column_open(); }
+  // The convergence and energy plots, and what they show.
+  const Instruments& instruments() const { return instruments_; }
   // The split view's right side, or null when the view is not split.
   const Simulation* right_side() const { return right_.simulation(); }
   // Why the right side stopped (a student's step that crashed or hung, a failed step), or empty.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "app/cli/solver_choice.h"
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/viewer.h"
 #include "ui/color_legend.h"
@@ -78,9 +79,21 @@ void Viewer::describe_sides() {
   shown_left_label_.clear();
   shown_right_label_.clear();
   const Simulation* right_side = right_.simulation();
+  const SimulationParams& left = host_.simulation().params();
+  PlottedSides sides;
+  sides.split = right_side && !right_.student();
+  sides.left_solver = solver_label(left.solver, left.chebyshev);
+  if (sides.split) {
+    sides.right_solver = solver_label(right_side->params().solver, right_side->params().chebyshev);
+  }
+  instruments_.set_sides(sides);
   if (!right_side) return;
-  shown_left_label_ = describe_side(host_.simulation().params());
-  shown_right_label_ = describe_side(right_side->params());
+  // The corners name the solvers once they differ or are not the default; two local-global
+  // sides read as before, plain or Chebyshev.
+  const std::string& right_solver = right_side->params().solver;
+  const bool name_solver = left.solver != right_solver || left.solver != solver_names().front();
+  shown_left_label_ = describe_side(left, name_solver);
+  shown_right_label_ = describe_side(right_side->params(), name_solver);
   if (!right_.student()) return;
   const SimulationParams& params = right_side->params();
   char right[200];

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "app/cli/solver_choice.h"
 #include "app/interaction/environment_controls.h"
 #include "app/viewer/viewer.h"
 
@@ -44,7 +45,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
       static_cast<PlayRequests&>(requests) = draw_play_rows(panel_, stats.warning);
     };
     parts.simulation = [&] {
-      requests.restore_defaults = draw_simulation_section(panel_, stats.course_scene);
+      requests.restore_defaults =
+          draw_simulation_section(panel_, stats.solvers, stats.course_scene);
     };
     parts.environment = [&] {
       EnvironmentOffer offer;
@@ -55,7 +57,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     };
     parts.view = [&] { draw_view_section(panel_); };
     parts.instruments = [&] { instruments_.draw_panel_section(); };
-    parts.compare = [&] { right_.draw_panel_section(); };
+    parts.compare = [&] { right_.draw_panel_section(stats.solvers); };
     panel_place_ = draw_control_panel(parts, stats, panel_.paused, ui_scale);
   } else {
     panel_place_ = PanelPlace();  // a hidden panel covers nothing: F frames in the whole window
@@ -112,6 +114,9 @@ void Viewer::apply_panel_settings() {
   // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
   panel_.iterations = std::min(panel_.iterations, host_.simulation().max_iterations_for_mesh());
   if (params.iterations != panel_.iterations) host_.simulation().set_iterations(panel_.iterations);
+  // Another solver takes over from the next step, from the state this one left.
+  const std::string solver = solver_names().at(panel_.solver);
+  if (params.solver != solver) host_.simulation().set_solver(solver);
   if (params.chebyshev != panel_.chebyshev) host_.simulation().set_chebyshev(panel_.chebyshev);
   // The slider is gravity's strength: the scene's direction stays, sideways part included.
   if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {

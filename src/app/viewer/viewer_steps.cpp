@@ -26,6 +26,8 @@ int Viewer::steps_to_start(std::optional<double> now, double frame_seconds) {
 }
 
 void Viewer::start_batch(int steps) {
+  // The split view's right side steps in the same batch and records for the same plots.
+  right_.record(instruments_.convergence_open(), instruments_.energy_open());
   host_.start_batch(steps, instruments_.convergence_open(), instruments_.energy_open());
 }
 
@@ -39,6 +41,10 @@ void Viewer::finish_batch() {
   }
   if (!batch->timings.empty()) last_timing_ = batch->timings.back();
   instruments_.take(batch->trace, batch->trace_step, batch->energy);
+  RightSideSamples& right = right_.samples();
+  instruments_.take_right(right.trace, right.trace_step, right.energy);
+  right.trace_step = 0;
+  right.energy.clear();
   if (batch->steps_taken > 0) step_warning_.clear();
   if (batch->status != StepStatus::ok) {
     panel_.paused = true;

@@ -42,7 +42,7 @@ TEST(CommandLine, HelpListsTheOptionsAndSucceeds) {
   const Result result = run_wobble("--help");
   EXPECT_EQ(result.exit_code, 0);
   for (const char* option : {"--headless", "--frames", "--export-obj", "--k", "--dt",
-                             "--iterations", "--stats", "--version"}) {
+                             "--iterations", "--solver", "--stats", "--version"}) {
     EXPECT_NE(result.out.find(option), std::string::npos) << option;
   }
   EXPECT_EQ(result.err, "");
@@ -83,6 +83,13 @@ TEST(CommandLine, BadUsageExitsWithCode2AndOneLine) {
        "--student /nonexistent: check-assignment: /nonexistent: no such folder"},
       {"--student d --compare k=5", "--student, --compare: both take the split view"},
       {"--headless --convergence-csv ''", "--convergence-csv: expected a file path"},
+      {"--headless --solver bfgs", "--solver: expected local-global or lbfgs, got 'bfgs'"},
+      {"--headless --solver ''", "--solver: expected local-global or lbfgs, got ''"},
+      {"--headless --solver", "--solver"},
+      {"--headless --compare solver=newton --screenshot x.png",
+       "--compare: solver: expected local-global or lbfgs, got 'newton'"},
+      {"--compare solver=local-global,solver=lbfgs --solver lbfgs",
+       "--solver, --compare: both set the left side's solver"},
   };
   for (const auto& [arguments, expected] : cases) {
     SCOPED_TRACE(arguments);
@@ -211,6 +218,33 @@ TEST(CommandLine, StatsGivesTheEstimatedSpectralRadiusWithChebyshev) {
   // The jelly's plain iterations shrink their updates by about 0.94 each.
   EXPECT_GT(stats.at("chebyshev_rho").get<double>(), 0.8);
   EXPECT_LT(stats.at("chebyshev_rho").get<double>(), 0.999);
+}
+
+// --solver picks the step solver over the scene's; local-global is the default, to the bit.
+TEST(CommandLine, SolverOverridesTheScenesAndLocalGlobalIsTheDefault) {
+  TemporaryFolder folder;
+  std::ofstream(folder.file("lbfgs.json"))
+      << R"({"mesh": {"generator": "cloth", "resolution": 12}, "pins": "top-corners",
+             "simulation": {"solver": "lbfgs"}})";
+  const auto solver_of = [&](const std::string& arguments) {
+    const Result result = run_wobble("'" + folder.file("lbfgs.json") + "' --headless --frames 2 " +
+                                     arguments + " --stats");
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return nlohmann::json::parse(last_line(result.out)).at("solver").get<std::string>();
+  };
+  EXPECT_EQ(solver_of(""), "lbfgs");
+  EXPECT_EQ(solver_of("--solver local-global"), "local-global");
+  EXPECT_EQ(solver_of("--solver lbfgs"), "lbfgs");
+
+  const auto positions = [&](const std::string& name, const std::string& arguments) {
+    const Result result = run_wobble("cloth --headless --frames 20 " + arguments +
+                                     " --export-obj '" + folder.file(name) + "'");
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return read(folder.file(name));
+  };
+  const std::string plain = positions("plain.obj", "");
+  EXPECT_EQ(positions("local_global.obj", "--solver local-global"), plain);
+  EXPECT_NE(positions("lbfgs.obj", "--solver lbfgs"), plain) << "another method, other positions";
 }
 
 TEST(CommandLine, HeadlessRunsAreDeterministic) {

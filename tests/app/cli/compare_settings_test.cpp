@@ -21,6 +21,43 @@ TEST(CompareSettings, ParsesEachSettingSeparatedByCommasOrSpaces) {
   EXPECT_FALSE(parse_compare_settings("k=10").iterations.has_value());
 }
 
+TEST(CompareSettings, ParsesTheSolverForTheRightSide) {
+  const CompareSettings settings = parse_compare_settings("solver=lbfgs");
+  EXPECT_EQ(settings.solver, "lbfgs");
+  EXPECT_TRUE(settings.left.empty());
+  wobble::SimulationParams left;
+  left.chebyshev = true;
+  const wobble::SimulationParams right = settings.applied_to(left);
+  EXPECT_EQ(right.solver, "lbfgs");
+  EXPECT_EQ(left.solver, "local-global");
+  EXPECT_TRUE(right.chebyshev) << "only what it names changes";
+}
+
+// A setting named twice gives both sides theirs, read as the sides stand: left, then right.
+TEST(CompareSettings, ASettingNamedTwiceSetsTheLeftSideFirst) {
+  const CompareSettings settings =
+      parse_compare_settings("solver=local-global,solver=lbfgs iterations=8");
+  EXPECT_EQ(settings.left.solver, "local-global");
+  EXPECT_EQ(settings.solver, "lbfgs");
+  EXPECT_EQ(settings.iterations, 8);
+  EXPECT_FALSE(settings.left.iterations.has_value()) << "named once: the right side's only";
+  const CompareSettings both = parse_compare_settings(
+      "k=100,dt=0.01,k=900,chebyshev=on,"
+      "chebyshev=off,iterations=3,iterations=30");
+  EXPECT_EQ(both.left.k, 100.0);
+  EXPECT_EQ(both.k, 900.0);
+  EXPECT_EQ(both.left.chebyshev, true);
+  EXPECT_EQ(both.chebyshev, false);
+  EXPECT_EQ(both.left.iterations, 3);
+  EXPECT_EQ(both.iterations, 30);
+  EXPECT_FALSE(both.left.dt.has_value());
+  EXPECT_EQ(both.dt, 0.01);
+  wobble::SimulationParams scene;
+  scene.solver = "lbfgs";
+  EXPECT_EQ(settings.left.applied_to(scene).solver, "local-global");
+  EXPECT_EQ(settings.applied_to(scene).solver, "lbfgs");
+}
+
 TEST(CompareSettings, AppliesOnlyWhatItNames) {
   wobble::SimulationParams left;
   left.iterations = 50;
@@ -51,6 +88,13 @@ TEST(CompareSettings, RefusesWithTheSettingNamed) {
   EXPECT_NE(message("stiffness=3").find("unknown setting 'stiffness'"), std::string::npos);
   EXPECT_NE(message("iterations").find("expected name=value"), std::string::npos);
   EXPECT_NE(message(" , ").find("expected settings"), std::string::npos);
+  EXPECT_EQ(message("solver=newton"),
+            "--compare: solver: expected local-global or lbfgs, got 'newton'");
+  EXPECT_EQ(message("solver=L-BFGS").find("--compare: solver: expected"), 0u);
+  EXPECT_NE(
+      message("solver=lbfgs,solver=lbfgs,solver=local-global").find("solver is given three times"),
+      std::string::npos);
+  EXPECT_NE(message("k=1,k=2,k=3").find("twice (left, then right)"), std::string::npos);
 }
 
 TEST(CompareSettings, DefaultRightSideIsATenthOrTenTimesTheIterations) {
@@ -61,13 +105,23 @@ TEST(CompareSettings, DefaultRightSideIsATenthOrTenTimesTheIterations) {
   EXPECT_EQ(wobble::default_compare_settings(left).iterations, 30);
 }
 
-TEST(CompareSettings, DescribesASideOnTwoLines) {
+TEST(CompareSettings, DescribesASideOnTwoLinesOrThreeWithTheSolver) {
   wobble::SimulationParams params;
   params.iterations = 1;
   params.chebyshev = true;
   params.dt = 0.01;
   params.k = 400.0;
   EXPECT_EQ(wobble::describe_side(params), "1 iteration, Chebyshev\ndt 10 ms, k 400 N/m");
+  // Once the sides' solvers differ, each corner names its own, on a line of its own.
+  EXPECT_EQ(wobble::describe_side(params, true),
+            "local-global (Chebyshev)\n1 iteration\ndt 10 ms, k 400 N/m");
+  params.iterations = 30;
+  params.solver = "lbfgs";
+  EXPECT_EQ(wobble::describe_side(params, true), "L-BFGS\n30 iterations\ndt 10 ms, k 400 N/m");
+  params.chebyshev = false;
+  params.solver = "local-global";
+  EXPECT_EQ(wobble::describe_side(params, true),
+            "local-global\n30 iterations\ndt 10 ms, k 400 N/m");
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "../run_wobble.h"
@@ -17,18 +18,28 @@ using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
 // The rows of a CSV file after its header, each as numbers; the header is returned in `header`.
-std::vector<std::vector<double>> read_csv(const std::string& path, std::string& header) {
+// The columns after the first `numbers` (all by default) are text, into `text` row by row.
+std::vector<std::vector<double>> read_csv(const std::string& path, std::string& header,
+                                          std::size_t numbers = 1000,
+                                          std::vector<std::vector<std::string>>* text = nullptr) {
   std::istringstream in(read_text(path));
   std::getline(in, header);
   std::vector<std::vector<double>> rows;
   std::string line;
   while (std::getline(in, line)) {
     std::vector<double> row;
+    std::vector<std::string> words;
     std::istringstream cells(line);
     std::string cell;
-    while (std::getline(cells, cell, ','))
-      row.push_back(std::stod(cell));
+    while (std::getline(cells, cell, ',')) {
+      if (row.size() < numbers) {
+        row.push_back(std::stod(cell));
+      } else {
+        words.push_back(cell);
+      }
+    }
     rows.push_back(row);
+    if (text) text->push_back(words);
   }
   return rows;
 }
@@ -81,10 +92,14 @@ TEST(InstrumentCsv, ConvergenceRowsForEveryIterationOfEveryStep) {
                  "DISPLAY= ");
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::string header;
-  const auto rows = read_csv(convergence, header);
-  EXPECT_EQ(header, "frame,iteration,energy,gradient_norm");
+  std::vector<std::vector<std::string>> solvers;
+  const auto rows = read_csv(convergence, header, 4, &solvers);
+  // The solver last, so that the first four columns read as before.
+  EXPECT_EQ(header, "frame,iteration,energy,gradient_norm,solver");
   ASSERT_EQ(rows.size(), 4u * 8u) << "iterations 0 to 7 of frames 1 to 4";
   for (std::size_t r = 0; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), 4u);
+    EXPECT_EQ(solvers[r], std::vector<std::string>{"local-global"}) << "row " << r;
     EXPECT_EQ(rows[r][0], 1 + static_cast<int>(r / 8));
     EXPECT_EQ(rows[r][1], static_cast<int>(r % 8));
     EXPECT_GT(rows[r][3], 0.0);
@@ -92,6 +107,38 @@ TEST(InstrumentCsv, ConvergenceRowsForEveryIterationOfEveryStep) {
       EXPECT_LE(rows[r][2], rows[r - 1][2] + 1e-12 * std::abs(rows[r - 1][2])) << "row " << r;
     }
   }
+}
+
+// --solver lbfgs: every row says so, and the statistics name the solver too. L-BFGS's line search
+// never lets the energy rise from one iterate to the next (lbfgs_solver.h).
+TEST(InstrumentCsv, TheSolverColumnNamesTheSolverThatTookEachStep) {
+  TemporaryFolder folder;
+  const std::string convergence = folder.file("convergence.csv");
+  const wobble::testing::Result result = run_wobble(
+      "cloth --headless --frames 3 --iterations 6 --solver lbfgs --stats "
+      "--convergence-csv '" +
+      convergence + "'");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::string header;
+  std::vector<std::vector<std::string>> solvers;
+  const auto rows = read_csv(convergence, header, 4, &solvers);
+  EXPECT_EQ(header, "frame,iteration,energy,gradient_norm,solver");
+  ASSERT_GE(rows.size(), 3u) << "at least each step's first iterate";
+  ASSERT_LE(rows.size(), 3u * 7u);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    EXPECT_EQ(solvers[r], std::vector<std::string>{"lbfgs"}) << "row " << r;
+    if (r > 0 && rows[r][0] == rows[r - 1][0]) {
+      EXPECT_LE(rows[r][2], rows[r - 1][2]) << "row " << r;
+    }
+  }
+  EXPECT_EQ(rows.back()[0], 3);
+  // The statistics are the last line.
+  std::string out = result.out;
+  while (!out.empty() && out.back() == '\n')
+    out.pop_back();
+  const nlohmann::json stats = nlohmann::json::parse(out.substr(out.rfind('\n') + 1));
+  EXPECT_EQ(stats.at("solver"), "lbfgs");
+  EXPECT_EQ(stats.at("iterations"), 6);
 }
 
 TEST(InstrumentCsv, RefusedBeforeAnyWork) {

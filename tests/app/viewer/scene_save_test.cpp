@@ -54,6 +54,7 @@ TEST(SaveCurrentScene, KeepsEverySettingChangedSinceTheSceneOpened) {
   simulation.set_dt(0.01);
   simulation.set_iterations(17);
   simulation.set_chebyshev(true);
+  simulation.set_solver("lbfgs");
   simulation.set_gravity(Eigen::Vector3d(0.5, -4.25, 0.125), GravityModel::acceleration);
   simulation.set_damping(0.3);
   simulation.set_wind(WindParams::default_breeze());
@@ -76,6 +77,7 @@ TEST(SaveCurrentScene, KeepsEverySettingChangedSinceTheSceneOpened) {
   EXPECT_EQ(saved.params.dt, 0.01);
   EXPECT_EQ(saved.params.iterations, 17);
   EXPECT_TRUE(saved.params.chebyshev);
+  EXPECT_EQ(saved.params.solver, "lbfgs");
   EXPECT_TRUE(same_matrix(saved.params.gravity, Eigen::Vector3d(0.5, -4.25, 0.125)));
   EXPECT_EQ(saved.params.damping, 0.3);
   EXPECT_TRUE(saved.params.wind.on);
