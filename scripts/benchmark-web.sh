@@ -2,8 +2,9 @@
 # The web step against the native step (docs/web.md): the median step of a scene (default the
 # curtain, assets/curtain.json) over 120 steps, on one thread, natively (build/, as
 # scripts/test.sh builds it) and in WebAssembly under node (build-web/, scripts/build-web.sh),
-# which runs wasm with the same engine (V8) as Chrome. Prints a table and the ratio; a benchmark,
-# never a pass or fail.
+# which runs wasm with the same engine (V8) as Chrome, and in the page itself in headless Chromium
+# (index.html?bench: the steps run before the page draws). Prints a table and the ratios; a
+# benchmark, never a pass or fail.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene="${1:-assets/curtain.json}"
@@ -15,7 +16,12 @@ done
 median() { python3 -c 'import json, sys; print(json.load(sys.stdin)["step_ms_median"])'; }
 native_ms=$("$native" "$scene" --frames 120 --threads 1 | median)
 web_ms=$(PATH="/usr/bin:/bin:$PATH" node "$web" "$scene" --frames 120 --threads 1 | median)
+# The same steps inside the page, in headless Chromium, before it draws anything.
+browser_ms=$(python3 tests/web/bench_page.py build-web/site \
+               --query "scene=$(basename "$scene" .json)&frames=120")
 printf '%-10s %-28s %10s\n' build runs "step (ms)"
 printf '%-10s %-28s %10.2f\n' native "x86-64, --threads 1" "$native_ms"
 printf '%-10s %-28s %10.2f\n' web "wasm under node $(node --version)" "$web_ms"
-python3 -c "print(f'web / native: {$web_ms / $native_ms:.2f}x')"
+printf '%-10s %-28s %10.2f\n' web "wasm in headless Chromium" "$browser_ms"
+python3 -c "print(f'web / native: node {$web_ms / $native_ms:.2f}x, '
+               f'Chromium {$browser_ms / $native_ms:.2f}x')"

@@ -128,9 +128,10 @@ void race(const RaceScene& scene) {
   const Run lbfgs = run_step(scene, "lbfgs", std::max(needed, 1));
   std::printf(
       "solvers/%-26s local-global %2d it %8.2f ms | lbfgs %3d it %8.2f ms | time ratio %.3f  "
-      "(E0 %.9g  E_target %.9g  lbfgs min %.9g, energy %s)\n",
+      "(after 1 iteration E %.9g, after 50 local-global E %.9g, lbfgs's lowest %.9g; its "
+      "energy %s)\n",
       scene.name.c_str(), plain, local_global.milliseconds, needed, lbfgs.milliseconds,
-      lbfgs.milliseconds / local_global.milliseconds, local_global.energy.front(), target,
+      lbfgs.milliseconds / local_global.milliseconds, local_global.energy[1], target,
       traced.energy.back(), monotone ? "never rose" : "ROSE");
 }
 

@@ -6,6 +6,7 @@
 #include <exception>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "app/cli/thread_setting.h"
 #include "app/web/page_arguments.h"
 #include "app/web/run_browser.h"
+#include "app/web/step_positions.h"
 
 namespace {
 
@@ -38,6 +40,14 @@ int main() {
     command = parse(arguments);
     if (command) {
       wobble::obey_thread_setting(*command, std::cerr);
+      if (wobble::page_wants_bench(search != nullptr ? search : "")) {
+        // The same steps as the node and native runs of scripts/benchmark-web.sh, before the
+        // page draws anything.
+        std::ostringstream json;
+        wobble::step_positions(*command, json);
+        EM_ASM({ Module.wobbleBenchStepMs = JSON.parse(UTF8ToString($0)).step_ms_median; },
+               json.str().c_str());
+      }
       wobble::run_browser(*command);
       return 0;
     }

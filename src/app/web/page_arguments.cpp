@@ -66,4 +66,16 @@ std::vector<std::string> page_arguments(const std::string& query,
   return arguments;
 }
 
+bool page_wants_bench(const std::string& query) {
+  std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
+  while (start < query.size()) {
+    std::size_t end = query.find('&', start);
+    if (end == std::string::npos) end = query.size();
+    const std::string pair = query.substr(start, end - start);
+    if (decode(pair.substr(0, pair.find('='))) == "bench") return true;
+    start = end + 1;
+  }
+  return false;
+}
+
 }  // namespace wobble

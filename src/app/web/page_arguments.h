@@ -17,6 +17,11 @@ namespace wobble {
 std::vector<std::string> page_arguments(const std::string& query,
                                         const std::vector<std::string>& catalog);
 
+// Whether the address asks for the step benchmark (`bench` among its keys): the page then first
+// takes `frames` steps of the scene without drawing (step_positions.h) and leaves their median
+// step time (ms) in Module.wobbleBenchStepMs, for scripts/benchmark-web.sh.
+bool page_wants_bench(const std::string& query);
+
 }  // namespace wobble
 
 #endif
