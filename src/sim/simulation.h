@@ -58,8 +58,9 @@ enum class StepStatus {
 //   contact set  the vertices near a collider (contact/solve_contact.h); Q refactorized when
 //                it changed
 //   solver       the registered StepSolver named by params.solver (solver/step_solver.h;
-//                local-global by default, or lbfgs), with Q from solver/system_matrix.h, reporting to the
-//                observers (instruments/step_observer.h: the convergence trace, the callback)
+//                local-global by default, or lbfgs), with Q from solver/system_matrix.h, reporting
+//                to the observers (instruments/step_observer.h: the convergence trace, the
+//                callback)
 //   constraints  each PositionConstraint in turn (step_terms.h): the colliders, then
 //                self-collision
 //

@@ -115,13 +115,7 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     requests.restore_defaults =
         draw_simulation_section(settings, stats.solvers, stats.course_scene);
   };
-  parts.environment = [&] {
-    EnvironmentOffer offer;
-    offer.colliders = stats.has_colliders;
-    offer.aerodynamic_wind = stats.aerodynamic_wind;
-    offer.course_scene = stats.course_scene;
-    draw_environment_section(settings, offer);
-  };
+  parts.environment = [&] { draw_environment_section(settings, environment_offer(stats)); };
   parts.view = [&] { draw_view_section(settings); };
   parts.instruments = [&] { draw_instruments_section(settings); };
   parts.compare = [&] { draw_split_section(settings, stats.solvers, stats.student_side); };

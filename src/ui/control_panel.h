@@ -45,6 +45,15 @@ struct PanelStats {
   float self_detection_ms = 0.0f, self_response_ms = 0.0f;
 };
 
+// What the environment section offers for the scene these stats describe.
+inline EnvironmentOffer environment_offer(const PanelStats& stats) {
+  EnvironmentOffer offer;
+  offer.colliders = stats.has_colliders;
+  offer.aerodynamic_wind = stats.aerodynamic_wind;
+  offer.course_scene = stats.course_scene;
+  return offer;
+}
+
 // Where the panel lies, in ImGui's display units (the window's, from its top-left corner), so
 // that the viewer can frame the shape beside it.
 struct PanelPlace {

@@ -12,13 +12,13 @@
 
 #include "benchmark_scenes.h"
 #include "chebyshev_curve.h"
-#include "solver_race.h"
 #include "contact_cost.h"
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
 #include "self_collision_cost.h"
 #include "sim/simulation.h"
 #include "solve_cost.h"
+#include "solver_race.h"
 
 namespace {
 

@@ -7,17 +7,13 @@ it draws anything, src/app/web/main_web.cpp) and print their median step time in
 A benchmark, never a pass or fail: scripts/benchmark-web.sh prints it beside native and node.
 """
 import argparse
-import functools
-import http.server
 import os
 import shutil
 import sys
-import tempfile
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from page_check import Chromium, QuietHandler  # noqa: E402
+from page_check import Chromium, serve_site  # noqa: E402
 
 
 def main():
@@ -27,12 +23,9 @@ def main():
     parser.add_argument('--chromium', default=shutil.which('chromium') or 'chromium')
     parser.add_argument('--timeout', type=float, default=300.0)
     args = parser.parse_args()
-    server = http.server.ThreadingHTTPServer(
-        ('127.0.0.1', 0), functools.partial(QuietHandler, directory=args.site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    url = f'http://127.0.0.1:{server.server_address[1]}/index.html?bench&{args.query}'
-    profile = tempfile.mkdtemp(prefix='wobble-chromium-')
-    browser = Chromium(args.chromium, profile)
+    server, page = serve_site(args.site)
+    url = f'{page}?bench&{args.query}'
+    browser = Chromium(args.chromium)
     try:
         browser.call('Runtime.enable')
         browser.call('Page.navigate', {'url': url})
@@ -52,7 +45,6 @@ def main():
     finally:
         browser.close()
         server.shutdown()
-        shutil.rmtree(profile, ignore_errors=True)
 
 
 if __name__ == '__main__':

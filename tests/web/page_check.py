@@ -43,10 +43,22 @@ class QuietHandler(http.server.SimpleHTTPRequestHandler):
         pass
 
 
-class Chromium:
-    """Headless Chromium with one page, driven over the DevTools protocol on a pipe."""
+def serve_site(site):
+    """Serve the folder `site` on a free port of localhost, on a thread of its own: the server
+    (shutdown() ends it) and the page's address without its query."""
+    server = http.server.ThreadingHTTPServer(
+        ('127.0.0.1', 0), functools.partial(QuietHandler, directory=site))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server, f'http://127.0.0.1:{server.server_address[1]}/index.html'
 
-    def __init__(self, executable, profile):
+
+class Chromium:
+    """Headless Chromium with one page, driven over the DevTools protocol on a pipe, with a
+    profile of its own in a temporary folder that close() removes."""
+
+    def __init__(self, executable):
+        self.profile = tempfile.mkdtemp(prefix='wobble-chromium-')
+        profile = self.profile
         to_chromium_read, to_chromium_write = os.pipe()
         from_chromium_read, from_chromium_write = os.pipe()
 
@@ -115,6 +127,7 @@ class Chromium:
         except subprocess.TimeoutExpired:
             self.process.kill()
             self.process.wait()
+        shutil.rmtree(self.profile, ignore_errors=True)
 
 
 def compare(actual, golden, tolerance):
@@ -157,12 +170,9 @@ def main():
     steps = int(dict(pair.split('=') for pair in args.query.split('&') if '=' in pair)
                 .get('frames', '0'))
 
-    server = http.server.ThreadingHTTPServer(
-        ('127.0.0.1', 0), functools.partial(QuietHandler, directory=args.site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    url = f'http://127.0.0.1:{server.server_address[1]}/index.html?{args.query}'
-    profile = tempfile.mkdtemp(prefix='wobble-chromium-')
-    browser = Chromium(args.chromium, profile)
+    server, page = serve_site(args.site)
+    url = f'{page}?{args.query}'
+    browser = Chromium(args.chromium)
     try:
         browser.call('Runtime.enable')
         browser.call('Emulation.setDeviceMetricsOverride',
@@ -202,7 +212,6 @@ def main():
         console = browser.console
         browser.close()
         server.shutdown()
-        shutil.rmtree(profile, ignore_errors=True)
 
     out = args.out or os.path.join(tempfile.gettempdir(), 'wobble-web-' +
                                    os.path.basename(args.golden)[:-4])

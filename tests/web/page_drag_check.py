@@ -11,17 +11,14 @@ the panel's "wind (W)" box (its pixels change from the unticked box's).
 Exit 0 when every check holds; otherwise one line each that failed.
 """
 import base64
-import functools
-import http.server
 import os
 import shutil
 import sys
 import tempfile
-import threading
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from page_check import Chromium, QuietHandler  # noqa: E402
+from page_check import Chromium, serve_site  # noqa: E402
 from png_files import read_png  # noqa: E402
 
 
@@ -108,18 +105,14 @@ def drag(page, start, end, finger):
 
 def main():
     site = sys.argv[1]
-    server = http.server.ThreadingHTTPServer(
-        ('127.0.0.1', 0), functools.partial(QuietHandler, directory=site))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    url = f'http://127.0.0.1:{server.server_address[1]}/index.html'
+    server, url = serve_site(site)
     failures = []
     # (size, mobile, the pinned corner's pixel as the cloth opens, where the drag ends)
     cases = [((1280, 720), False, (767, 155), (647, 305)),
              ((390, 844), True, (168, 297), (93, 417))]
     for size, finger, corner, end in cases:
         what = f'{size[0]}x{size[1]} {"finger" if finger else "mouse"}'
-        profile = tempfile.mkdtemp(prefix='wobble-chromium-')
-        browser = Chromium(shutil.which('chromium') or 'chromium', profile)
+        browser = Chromium(shutil.which('chromium') or 'chromium')
         try:
             browser.call('Runtime.enable')
             page = Page(browser, size, finger)
@@ -152,7 +145,6 @@ def main():
                     failures.append('W did not tick the wind box')
         finally:
             browser.close()
-            shutil.rmtree(profile, ignore_errors=True)
     server.shutdown()
     for failure in failures:
         print(f'page_drag_check: FAILED: {failure}')

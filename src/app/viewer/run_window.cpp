@@ -15,8 +15,7 @@
 #include "app/headless/instrument_csv.h"
 #include "app/headless/obj_sequence.h"
 #include "app/headless/run_statistics.h"
-#include "app/viewer/moving_median.h"
-#include "app/viewer/real_time_meter.h"
+#include "app/viewer/frame_meters.h"
 #include "app/viewer/viewer.h"
 #include "platform/glfw_window.h"
 #include "render/offscreen_target.h"
@@ -80,9 +79,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
   RgbaImage image;
   long recorded_steps = 0;
   viewer.record_window_into(".", progress);
-  RealTimeMeter real_time;
-  MovingMedian frame_ms;            // the panel's fps: from one frame to the next
-  MovingMedian ui_work_ms;          // the panel's UI frame time: poll to swap
+  FrameMeters meters;               // the panel's fps, UI frame time and real-time factor
   std::vector<double> ui_frame_ms;  // --stats: each frame's own time while the simulation plays
   const auto start = std::chrono::steady_clock::now();
   const auto seconds_since_start = [&start] {
@@ -99,21 +96,19 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
   constexpr int settle_frames = 3;
   constexpr double idle_wait_seconds = 0.5;
   int quiet_frames = 0;
-  double last_frame = -1.0;
   try {
     while (!window.should_close() && !viewer.quit_requested()) {
       // 1. poll
       const bool nothing_new =
           quiet_frames >= settle_frames && (viewer.stepping() || !viewer.animating());
-      const double frame_left = last_frame + frame_seconds - seconds_since_start();
+      const double frame_left = meters.last_frame + frame_seconds - seconds_since_start();
       const std::vector<InputEvent> events =
           nothing_new
               ? window.poll_events(idle_wait_seconds)
               : (frame_left > 0.0 ? window.wait_for_input(frame_left) : window.poll_events());
       quiet_frames = events.empty() ? quiet_frames + 1 : 0;
       const double now = seconds_since_start();
-      if (last_frame >= 0.0) frame_ms.add(static_cast<float>(1e3 * (now - last_frame)));
-      last_frame = now;
+      meters.start_frame(now);
       // Files dropped on the window open as the picker's scenes do; the last one stays.
       for (const std::string& path : window.take_dropped_paths()) {
         viewer.open_file(path);
@@ -131,16 +126,11 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
       const ImGuiIO& io = ImGui::GetIO();
       viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window_size);
       // 3. UI
-      PanelStats timings;
-      timings.fps = frame_ms.median() > 0.0f ? 1e3f / frame_ms.median() : 0.0f;
-      timings.ui_frame_ms = ui_work_ms.median();
-      timings.real_time_factor = static_cast<float>(real_time.real_time_factor());
-      timings.steps_per_second = static_cast<float>(real_time.steps_per_second());
-      viewer.build_ui(timings, ui_scale);
+      viewer.build_ui(meters.timings(), ui_scale);
       // 4. hand the changes to the simulation and take the latest state (between its batches)
       const bool new_state = viewer.exchange(now, frame_seconds);
       const PanelStats shown = viewer.stats();
-      if (new_state) real_time.record(now, shown.simulated_seconds, shown.steps);
+      if (new_state) meters.real_time.record(now, shown.simulated_seconds, shown.steps);
       if (command.frames && !viewer.step_warning().empty()) {
         // A scripted run stops where a step failed, as headless does.
         throw std::runtime_error("step " + std::to_string(shown.steps + 1) + ": " +
@@ -186,10 +176,9 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
       window.swap_buffers();
       // The UI's own time for a frame, from input to a picture, while the simulation plays:
       // what a drag or a click waits for, and never a step.
-      ui_work_ms.add(static_cast<float>(1e3 * (seconds_since_start() - now)));
-      if (command.stats && !viewer.paused()) {
-        ui_frame_ms.push_back(1e3 * (seconds_since_start() - now));
-      }
+      const double done = seconds_since_start();
+      meters.end_frame(now, done);
+      if (command.stats && !viewer.paused()) ui_frame_ms.push_back(1e3 * (done - now));
       if (last) break;
     }
     viewer.finish_steps();

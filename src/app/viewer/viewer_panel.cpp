@@ -48,13 +48,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
       requests.restore_defaults =
           draw_simulation_section(panel_, stats.solvers, stats.course_scene);
     };
-    parts.environment = [&] {
-      EnvironmentOffer offer;
-      offer.colliders = stats.has_colliders;
-      offer.aerodynamic_wind = stats.aerodynamic_wind;
-      offer.course_scene = stats.course_scene;
-      draw_environment_section(panel_, offer);
-    };
+    parts.environment = [&] { draw_environment_section(panel_, environment_offer(stats)); };
     parts.view = [&] { draw_view_section(panel_); };
     parts.instruments = [&] { instruments_.draw_panel_section(); };
     parts.compare = [&] { right_.draw_panel_section(stats.solvers); };

@@ -17,8 +17,7 @@
 #include <vector>
 
 #include "app/cli/scene_catalog.h"
-#include "app/viewer/moving_median.h"
-#include "app/viewer/real_time_meter.h"
+#include "app/viewer/frame_meters.h"
 #include "app/viewer/viewer.h"
 #include "platform/glfw_window.h"
 
@@ -41,10 +40,7 @@ void fill_missing_gl_functions() {
 struct BrowserApp {
   Viewer viewer;
   std::unique_ptr<GlfwWindow> window;
-  RealTimeMeter real_time;
-  MovingMedian frame_ms;    // the panel's fps: from one frame to the next
-  MovingMedian ui_work_ms;  // the panel's UI frame time
-  double last_frame = -1.0;
+  FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
   std::string title;
   long frames_drawn = 0;
 };
@@ -74,8 +70,7 @@ void frame(BrowserApp& app) {
   // 1. poll
   const std::vector<InputEvent> events = window.poll_events();
   const double now = seconds_now();
-  if (app.last_frame >= 0.0) app.frame_ms.add(static_cast<float>(1e3 * (now - app.last_frame)));
-  app.last_frame = now;
+  app.meters.start_frame(now);
   // Files dropped on the page (copied into the page's file system by emscripten's GLFW).
   for (const std::string& path : window.take_dropped_paths())
     viewer.open_file(path);
@@ -89,21 +84,16 @@ void frame(BrowserApp& app) {
   const ImGuiIO& io = ImGui::GetIO();
   viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window_size);
   // 3. UI
-  PanelStats timings;
-  timings.fps = app.frame_ms.median() > 0.0f ? 1e3f / app.frame_ms.median() : 0.0f;
-  timings.ui_frame_ms = app.ui_work_ms.median();
-  timings.real_time_factor = static_cast<float>(app.real_time.real_time_factor());
-  timings.steps_per_second = static_cast<float>(app.real_time.steps_per_second());
   const float ui_scale = 1.0f;
   // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens it),
   // so that the scene shows. The panel is the first window build_ui begins.
   if (app.frames_drawn == 0 && width < 600) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
-  viewer.build_ui(timings, ui_scale);
+  viewer.build_ui(app.meters.timings(), ui_scale);
   // 4. hand the changes to the simulation, take the latest state, step (on this thread)
   constexpr double frame_seconds = 1.0 / 60.0;
   if (viewer.exchange(now, frame_seconds)) {
     const PanelStats shown = viewer.stats();
-    app.real_time.record(now, shown.simulated_seconds, shown.steps);
+    app.meters.real_time.record(now, shown.simulated_seconds, shown.steps);
   }
   viewer.build_legend(ui_scale);
   if ("Wobble: " + viewer.scene().name != app.title) {
@@ -117,7 +107,7 @@ void frame(BrowserApp& app) {
     viewer.render(width, height, window_size, 1.0f);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
-  app.ui_work_ms.add(static_cast<float>(1e3 * (seconds_now() - now)));
+  app.meters.end_frame(now, seconds_now());
   // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they show.
   ++app.frames_drawn;
   EM_ASM(
@@ -140,7 +130,7 @@ void frame_or_report(void* app) {
 
 void run_browser(const CommandLine& command) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
-  app.reset(new BrowserApp{open_viewer(command), nullptr, {}, {}, {}, -1.0, {}, 0});
+  app.reset(new BrowserApp{open_viewer(command), nullptr, {}, {}, 0});
   app->viewer.show_notices(true);
   if (command.frames) app->viewer.set_step_limit(*command.frames);
   double css_width = 0.0, css_height = 0.0;
