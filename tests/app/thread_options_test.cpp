@@ -7,7 +7,7 @@
 #include <string>
 
 #include "run_wobble.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include "io/load_scene.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 #include <gtest/gtest.h>
 #include <time.h>

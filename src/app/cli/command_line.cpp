@@ -15,7 +15,7 @@
 #include "sim/input_limits.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 #include "sim/value_limits.h"
 
 #ifndef WOBBLE_VERSION

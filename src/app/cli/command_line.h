@@ -41,7 +41,7 @@ struct CommandLine {
   // limits::self_collision_thickness) gives its thickness and implies it.
   bool self_collision = false;
   std::optional<double> self_collision_thickness;
-  // --threads: threads the solver may use, 1 to max_setting_threads (sim/solver/worker_pool.h);
+  // --threads: threads the solver may use, 1 to max_setting_threads (sim/parallel/worker_pool.h);
   // unset: OMP_NUM_THREADS, else the processors (at most 4).
   std::optional<int> threads;
   // Images (both modes) and what they show.

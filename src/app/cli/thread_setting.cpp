@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

@@ -10,7 +10,7 @@ namespace wobble {
 // Obey the user's thread setting, before any simulation is made, in every parallel part of the
 // process:
 // - the solver's shared pool gets --threads, else OMP_NUM_THREADS, capped by OMP_THREAD_LIMIT
-//   (sim/solver/worker_pool.h, decide_thread_setting); a variable that cannot be obeyed is
+//   (sim/parallel/worker_pool.h, decide_thread_setting); a variable that cannot be obeyed is
 //   reported on `err` as one warning line;
 // - when the user set the threads (not the default from the processors) and LP_NUM_THREADS is
 //   unset, Mesa's llvmpipe renderer gets as many rasterizer threads as the pool has helpers

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

@@ -11,7 +11,7 @@
 #include "app/student/student_server.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

@@ -7,7 +7,7 @@
 
 #include "sim/contact/self_collision_surface.h"
 #include "sim/contact/spatial_grid.h"
-#include "sim/solver/worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "substitute_lanes.h"
-#include "worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 

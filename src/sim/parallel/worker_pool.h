@@ -1,5 +1,5 @@
-#ifndef WOBBLE_SIM_WORKER_POOL_H
-#define WOBBLE_SIM_WORKER_POOL_H
+#ifndef WOBBLE_SIM_PARALLEL_WORKER_POOL_H
+#define WOBBLE_SIM_PARALLEL_WORKER_POOL_H
 
 #include <atomic>
 #include <chrono>

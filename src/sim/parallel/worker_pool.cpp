@@ -1,4 +1,4 @@
-#include "worker_pool.h"
+#include "sim/parallel/worker_pool.h"
 
 #include <algorithm>
 #include <cstdlib>
