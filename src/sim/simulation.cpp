@@ -4,12 +4,12 @@
 #include <cmath>
 #include <string>
 
-#include "forces/force_registry.h"
 #include "forces/gravity.h"
 #include "input_error.h"
 #include "instruments/stopwatch.h"
 #include "solver/damped_inertia.h"
 #include "solver/solver_registry.h"
+#include "terms/term_registry.h"
 
 namespace wobble {
 
@@ -57,17 +57,18 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
       n == 0 ? 0.0 : (network_.V.colwise().maxCoeff() - network_.V.colwise().minCoeff()).norm();
   jump_limit_ = 100.0 * (diagonal > 0.0 ? diagonal : 1.0);  // a single vertex: 1 m
   rest_diagonal_ = diagonal > 0.0 ? diagonal : 1.0;
-  contact_ = ColliderContact(params_.contact.colliders, params_.contact.friction,
-                             resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_));
+  colliders_ = ColliderContactTerm(
+      ColliderContact(params_.contact.colliders, params_.contact.friction,
+                      resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_)));
   // Self-collision's grids and rest neighbourhoods are made only once it is turned on.
   self_collision_.set(params_.self_collision);
-  rebuild_forces();
   solver_ = make_step_solver(params_.solver, n);
   previous_.resize(n, 3);
   current_.resize(n, 3);
   next_.resize(n, 3);
   y_.resize(n, 3);
   pins_ = Pins(initial_pins, network_.V);
+  rebuild_terms();
   gravity_fext_ = wobble::gravity_forces(network_.m, params_.gravity, params_.gravity_model);
   fext_ = gravity_fext_;
 
@@ -88,10 +89,10 @@ void Simulation::reset() {
   steps_taken_ = 0;
   time_ = 0.0;
   last_status_ = StepStatus::ok;
-  contact_ = ColliderContact(params_.contact.colliders, contact_.friction(), contact_.offset());
+  const bool contact_was_held = colliders_.restart(params_.contact.colliders);
   self_collision_.clear();
-  const bool contact_was_set = solve_contact_.clear();
-  if (pins_.reset(network_.V) || contact_was_set) refactorize();
+  const bool pins_changed = pins_.reset(network_.V);
+  if (terms_.reset() || pins_changed || contact_was_held) refactorize();
 }
 
 void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous) {
@@ -108,16 +109,13 @@ StepStatus Simulation::step() {
   const double forces_ms = forces_stopwatch.milliseconds();
   compute_y();
   start_iterate();
-  choose_solve_contact();
-  solver_->solve(step_problem(), observers_, next_, timing_);
-  if (!solve_contact_.empty()) solve_contact_.record_forces(contact_, next_);
-
   const StepContext context = step_context();
-  for (PositionConstraint* constraint : constraints_)
-    constraint->project(context, next_);
-  if (!solve_contact_.empty()) contact_.mark_pressed(solve_contact_.touching());
-  for (const PositionConstraint* constraint : constraints_)
-    constraint->report_timing(timing_);
+  colliders_.set_gravity_reach(params_.gravity.norm() * params_.dt * params_.dt);
+  colliders_.set_lagging(!(params_.chebyshev && params_.solver == "local-global"));
+  if (terms_.begin_step(context, next_)) refactorize();
+  solver_->solve(step_problem(), observers_, next_, timing_);
+  terms_.project(context, next_);
+  terms_.report(timing_.figures);
 
   last_status_ = check_step();
   if (last_status_ == StepStatus::ok) {
@@ -125,8 +123,7 @@ StepStatus Simulation::step() {
     current_.swap(next_);
     ++steps_taken_;
     time_ += params_.dt;
-    for (PositionConstraint* constraint : constraints_)
-      constraint->end_step();
+    terms_.end_step();
   }
   timing_.forces_ms = forces_ms;
   timing_.total_ms = step_stopwatch.milliseconds();
@@ -168,7 +165,7 @@ void Simulation::compute_y() {
   // y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target: fixed for the whole step.
   inertial_right_hand_side(network_.m, current_, previous_, params_.dt, params_.damping, y_);
   y_ += fext_;
-  pins_.add_targets(y_);
+  terms_.add_fixed_rhs(y_);
 }
 
 void Simulation::start_iterate() {
@@ -186,52 +183,36 @@ void Simulation::prepare_solver() {
 }
 
 StepProblem Simulation::step_problem() {
-  bool in_contact = false;
-  for (const PositionConstraint* constraint : constraints_)
-    in_contact = in_contact || constraint->contact_count() > 0;
-  StepProblem problem{network_, r_, params_, current_,     previous_,    fext_,
-                      pins_,    y_, system_, *local_step_, constraints_, in_contact};
-  problem.solve_contact = &solve_contact_;
-  problem.colliders = &contact_;
-  problem.time = time_;
-  return problem;
+  return StepProblem{network_, r_,      params_, current_,        previous_, fext_,
+                     y_,       system_, *local_step_, terms_, step_context(), terms_.in_contact()};
 }
 
 StepContext Simulation::step_context() const {
   return StepContext{network_, current_, previous_, pins_.flags(), params_.dt, time_};
 }
 
-void Simulation::rebuild_forces() {
-  forces_ = make_forces(ForceSetup{params_, network_, rest_diagonal_});
+void Simulation::rebuild_terms() {
+  made_terms_ = make_terms(TermSetup{params_, network_, rest_diagonal_});
+  std::vector<StepTerm*> list{&pins_};
+  for (const auto& term : made_terms_)
+    list.push_back(term.get());
+  list.push_back(&colliders_);
+  list.push_back(&self_collision_);
+  terms_.set(std::move(list));
 }
 
 void Simulation::apply_forces() {
-  if (forces_.empty()) return;  // fext_ already holds gravity alone
+  if (made_terms_.empty()) return;  // fext_ already holds gravity alone
   fext_ = gravity_fext_;
-  const StepContext context = step_context();
-  for (const auto& force : forces_)
-    force->apply_forces(context, fext_);
+  terms_.add_forces(step_context(), fext_);
 }
 
 void Simulation::refactorize() {
-  if (!contact_.empty()) {
-    solve_contact_.set_base_diagonal(
-        system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m));
-  }
-  system_.refactorize(params_.k, params_.dt, params_.damping, network_.m, pins_.flags(), pin_weight,
-                      solve_contact_.weights());
-}
-
-void Simulation::choose_solve_contact() {
-  // A scene without colliders never gets here with anything to do: its Q and its steps stay
-  // those of the plain method, to the bit.
-  if (contact_.empty()) {
-    if (solve_contact_.clear()) refactorize();
-    return;
-  }
-  const double gravity_reach = params_.gravity.norm() * params_.dt * params_.dt;
-  if (solve_contact_.choose(contact_, step_context(), next_, gravity_reach)) refactorize();
-  if (!solve_contact_.empty()) solve_contact_.lag_friction(contact_, step_context());
+  const Eigen::VectorXd base =
+      system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m);
+  terms_.set_base_diagonal(base, inertia_scale(params_.dt, params_.damping) * network_.m);
+  system_.refactorize(params_.k, params_.dt, params_.damping, network_.m,
+                      terms_.diagonal(network_.V.rows()));
 }
 
 void Simulation::update_observers() {
@@ -242,10 +223,10 @@ void Simulation::update_observers() {
 }
 
 double Simulation::step_energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient) const {
-  return step_objective(
-      StepObjectiveTerms{network_.E, r_, network_.m, params_.k, params_.dt, params_.damping,
-                         current_, previous_, fext_, pins_.flags(), pins_.targets(), pin_weight},
-      p, gradient);
+  return step_objective(StepObjectiveTerms{network_.E, r_, network_.m, params_.k, params_.dt,
+                                           params_.damping, current_, previous_, fext_},
+                        p, gradient) +
+         terms_.add_energy(step_context(), p, gradient);
 }
 
 Eigen::MatrixXd Simulation::velocities() const {

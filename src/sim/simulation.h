@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "sim/constraints/pins.h"
-#include "sim/contact/collider_contact.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/contact/self_collision_constraint.h"
 #include "sim/instruments/convergence_recorder.h"
 #include "sim/instruments/iteration_callback.h"
@@ -20,7 +20,8 @@
 #include "sim/solver/local_step.h"
 #include "sim/solver/step_solver.h"
 #include "sim/solver/system_matrix.h"
-#include "sim/step_terms.h"
+#include "sim/terms/step_term.h"
+#include "sim/terms/step_terms.h"
 #include "spring_network.h"
 #include "value_limits.h"
 
@@ -44,32 +45,34 @@ enum class StepStatus {
 //   local:  d_e = r_e (p_i − p_j)/‖p_i − p_j‖
 //   global: Q p = k Aᵀd + y,  Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC,
 //           y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10,
-// c the damping (0 by default). Forces (wind) are added to f_ext at the start of the step.
-// Contact is a term of the energy for the vertices near a collider (contact/solve_contact.h:
-// their κ on Q's diagonal, refactorized only when that set changes), and the colliders project
-// the solved positions once more after the last iteration. With every pin target at its rest
-// position, no damping, no wind and no collider this is exactly fast_mass_springs_step_sparse.
+// c the damping (0 by default). Every term beyond the springs and the inertia is one object in
+// one list (terms/step_terms.h), in this order: the pins (constraints/pins.h: w CᵀC on Q's
+// diagonal, w CᵀC p_target in y), the made terms (terms/term_registry.h: the wind's forces, and
+// any term registered from outside), contact with the colliders (contact/collider_contact_term.h:
+// inside the solve for the vertices near a collider, then a projection after it) and
+// self-contact. With every pin target at its rest position, no damping, no wind and no collider
+// this is exactly fast_mass_springs_step_sparse.
 //
-// It composes parts, each in files of its own, and calls them in this order each step:
-//   forces       f_ext = gravity (forces/gravity.h) + each registered force
-//                (forces/force_registry.h: wind, ...)
-//   y            the damped inertia (solver/damped_inertia.h), f_ext, the pins
-//                (constraints/pins.h)
-//   contact set  the vertices near a collider (contact/solve_contact.h); Q refactorized when
-//                it changed
-//   solver       the registered StepSolver named by params.solver (solver/step_solver.h;
-//                local-global by default, or lbfgs), with Q from solver/system_matrix.h, reporting
-//                to the observers (instruments/step_observer.h: the convergence trace, the
-//                callback)
-//   constraints  each PositionConstraint in turn (step_terms.h): the colliders, then
-//                self-collision
+// Each step calls, in this order:
+//   forces      f_ext = gravity (forces/gravity.h) + each term's forces
+//   y           the damped inertia (solver/damped_inertia.h), f_ext, the terms' fixed part
+//   begin       each term chooses its set from the first iterate; Q refactorized when a term's
+//               weights on its diagonal changed
+//   solver      the registered StepSolver named by params.solver (solver/step_solver.h;
+//               local-global by default, or lbfgs), with Q from solver/system_matrix.h, every
+//               term through the StepProblem, reporting to the observers
+//               (instruments/step_observer.h: the convergence trace, the callback)
+//   project     each term's last guard after the solve, in list order
+//   report      each term's figures into last_step_timing().figures
 //
 // Cost of each change:
 //   set_pin_target           right-hand side only: no factorization
 //   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
 //   unpin, reset,              (Q's sparsity pattern never changes: its diagonal is always stored)
 //   set_damping, a step whose
-//   contact set changed
+//   term changed its weights
+//   (collider contact: at most
+//   once in lag_steps steps)
 //   set_iterations, gravity, nothing precomputed
 //   set_state, set_wind,
 //   set_friction, colliders
@@ -132,15 +135,17 @@ class Simulation {
   void set_friction(double friction);
 
   // The colliders where they are now (reset() puts them back where the scene placed them).
-  const std::vector<Collider>& colliders() const { return contact_.colliders(); }
+  const std::vector<Collider>& colliders() const { return colliders_.colliders().colliders(); }
   // Moves collider `index` rigidly by `offset` (m). Throws std::out_of_range for a bad index.
   void translate_collider(int index, const Eigen::Vector3d& offset);
   // The contact offset in use (m): the scene's, or the automatic one.
-  double contact_offset() const { return contact_.offset(); }
+  double contact_offset() const { return colliders_.colliders().offset(); }
   // Vertices the last step moved out of a collider.
-  int contact_count() const { return contact_.contact_count(); }
+  int contact_count() const { return colliders_.colliders().contact_count(); }
   // The same as #V flags (empty when there is no collider).
-  const std::vector<char>& collider_contact_vertices() const { return contact_.contact_vertices(); }
+  const std::vector<char>& collider_contact_vertices() const {
+    return colliders_.colliders().contact_vertices();
+  }
   // Self-collision on or off, or a new thickness; nothing precomputed. Throws InputError for a
   // thickness out of limits::self_collision_thickness.
   void set_self_collision(const SelfCollisionParams& self_collision);
@@ -195,7 +200,10 @@ class Simulation {
   const Eigen::MatrixXd& gravity_forces() const { return gravity_fext_; }
   long steps_taken() const { return steps_taken_; }
 
+  // The last step's timing, with every term's figures by name.
   const StepTiming& last_step_timing() const { return timing_; }
+  // The step's terms in step order.
+  const StepTerms& terms() const { return terms_; }
   // Time spent in the constructor: rest lengths, Q's pattern, analysis and first factorization.
   double precompute_ms() const { return precompute_ms_; }
   // How often Q was analysed symbolically (once, in the constructor) and factorized numerically.
@@ -213,10 +221,12 @@ class Simulation {
   }
 
  private:
-  void rebuild_forces();
+  // The made terms (terms/term_registry.h) for the current params, and the list again.
+  void rebuild_terms();
   // fext_ = gravity plus this step's forces (wind).
   void apply_forces();
-  // y_ = the damped inertia + f_ext + w CᵀC p_target: fixed for the whole step.
+  // y_ = the damped inertia + f_ext + the terms' fixed part (w CᵀC p_target): fixed for the
+  // whole step.
   void compute_y();
   // next_ = the first iterate of a step, as params_.first_iterate says.
   void start_iterate();
@@ -224,9 +234,8 @@ class Simulation {
   void prepare_solver();
   StepContext step_context() const;
   StepProblem step_problem();
+  // Q's values from k, Δt, damping, the masses and every term's diagonal, factorized.
   void refactorize();
-  // Picks the step's contact set from its first iterate; refactorizes Q when it changed.
-  void choose_solve_contact();
   void update_observers();
   // InputError unless `iterations` fit max_iterations_for_mesh; before the analysis
   // (`analyzed` false) the factor is taken as its diagonal alone, a lower bound.
@@ -242,11 +251,10 @@ class Simulation {
   Eigen::MatrixXd previous_, current_, next_;  // pᵗ⁻ᐞᵗ, pᵗ and the iterate, #V by 3
   Eigen::MatrixXd gravity_fext_;               // #V by 3 gravity alone (N)
   Eigen::MatrixXd fext_, y_;                   // #V by 3 buffers kept to avoid allocation
-  std::vector<std::unique_ptr<ForceTerm>> forces_;
-  ColliderContact contact_;
-  SolveContact solve_contact_;  // contact inside the solve: its set and κ on Q's diagonal
-  SelfCollisionConstraint self_collision_{network_, contact_};
-  std::vector<PositionConstraint*> constraints_{&contact_, &self_collision_};  // in step order
+  std::vector<std::unique_ptr<StepTerm>> made_terms_;  // terms/term_registry.h
+  ColliderContactTerm colliders_;
+  SelfCollisionConstraint self_collision_{network_, colliders_.colliders()};
+  StepTerms terms_;  // pins_, made_terms_, colliders_, self_collision_: in step order
   double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
   double time_ = 0.0;
 

@@ -120,8 +120,8 @@ void Simulation::set_damping(double damping) {
 void Simulation::set_wind(const WindParams& wind) {
   validate_wind(wind);
   params_.wind = wind;
-  rebuild_forces();
-  if (forces_.empty()) fext_ = gravity_fext_;
+  rebuild_terms();
+  if (made_terms_.empty()) fext_ = gravity_fext_;
 }
 
 void Simulation::set_friction(double friction) {
@@ -129,12 +129,12 @@ void Simulation::set_friction(double friction) {
   changed.contact.friction = friction;
   validate_simulation_params(changed);
   params_.contact.friction = friction;
-  contact_.set_friction(friction);
+  colliders_.colliders().set_friction(friction);
 }
 
 void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
   if (!offset.allFinite()) throw std::invalid_argument("translate_collider: offset is not finite");
-  contact_.translate(index, offset);
+  colliders_.colliders().translate(index, offset);
 }
 
 void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {

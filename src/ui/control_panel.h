@@ -17,7 +17,7 @@ struct PanelStats {
   float fps = 0.0f;          // frames drawn per second, from the median frame time of the last 15
   float ui_frame_ms = 0.0f;  // the UI's own time for a frame (median of the last 15), no step in it
   float step_ms = 0.0f, local_ms = 0.0f, global_ms = 0.0f;
-  float forces_ms = 0.0f, contact_ms = 0.0f;  // wind; collider projection and friction
+  float forces_ms = 0.0f;  // the terms' forces (wind)
   // Over about the last second: simulated seconds per wall-clock second (< 1: slow motion), and
   // steps per wall-clock second.
   float real_time_factor = 0.0f, steps_per_second = 0.0f;
@@ -38,11 +38,18 @@ struct PanelStats {
   // stepping the simulation ("L-BFGS"), which the stats name.
   std::vector<SolverOption> solvers;
   std::string solver;
-  // Self-collision on (its row shows only then), the vertices the last step's self-collision
-  // moved, and that step's time detecting pairs and pushing them apart (ms).
+  // Self-collision on (its row shows only then), and the vertices the last step's self-collision
+  // held or moved.
   bool self_collision = false;
   int self_contacts = 0;
-  float self_detection_ms = 0.0f, self_response_ms = 0.0f;
+  // Each figure the step's terms reported of the last step, by name ("self-contact detection"),
+  // shown with the timings whatever the term.
+  struct TermFigure {
+    std::string label;
+    std::string unit;  // "ms", or empty for a count
+    float value = 0.0f;
+  };
+  std::vector<TermFigure> term_figures;
 };
 
 // What the environment section offers for the scene these stats describe.

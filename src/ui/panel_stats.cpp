@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 namespace wobble {
 
 namespace {
@@ -66,10 +68,13 @@ void draw_panel_timings(const PanelStats& stats) {
   stat_row("  global", "%.2f ms", stats.global_ms);
   if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
   if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
-  if (stats.has_colliders) stat_row("  contact", "%.2f ms", stats.contact_ms);
-  if (stats.self_collision) {
-    stat_row("  self detect", "%.2f ms", stats.self_detection_ms);
-    stat_row("  self respond", "%.2f ms", stats.self_response_ms);
+  for (const PanelStats::TermFigure& figure : stats.term_figures) {
+    const std::string label = "  " + figure.label;
+    if (figure.unit.empty()) {
+      stat_row(label.c_str(), "%.0f", figure.value);
+    } else {
+      stat_row(label.c_str(), ("%.2f " + figure.unit).c_str(), figure.value);
+    }
   }
   stat_row("steps", "%.0f /s", stats.steps_per_second);
   stat_row("threads", "%.0f", stats.threads);

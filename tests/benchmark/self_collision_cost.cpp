@@ -25,8 +25,8 @@ struct PhaseTimes {
   std::vector<double> total, detection, response;
   void add(const StepTiming& timing) {
     total.push_back(timing.total_ms);
-    detection.push_back(timing.self_detection_ms);
-    response.push_back(timing.self_response_ms);
+    detection.push_back(timing.figure("self-contact", "detection"));
+    response.push_back(timing.figure("self-contact", "response"));
   }
 };
 

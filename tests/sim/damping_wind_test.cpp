@@ -95,7 +95,7 @@ TEST(Wind, DragPushesAFaceAlongItsNormalAndLiftActsAcrossTheFlow) {
   // Face-on: pure drag ½ρC_dA|u·n|(u·n) n, no lift.
   wind.velocity = Eigen::Vector3d(0, 0, 4);
   Eigen::MatrixXd f = Eigen::MatrixXd::Zero(3, 3);
-  wobble::AerodynamicWind(wind).apply_forces(at_rest, f);
+  wobble::AerodynamicWind(wind).add_forces(at_rest, f);
   const double drag = 0.5 * 1.25 * 1.2 * 0.5 * 16.0;
   for (int corner = 0; corner < 3; ++corner) {
     EXPECT_NEAR((f.row(corner) - Eigen::RowVector3d(0, 0, drag / 3)).norm(), 0.0, 1e-12);
@@ -104,13 +104,13 @@ TEST(Wind, DragPushesAFaceAlongItsNormalAndLiftActsAcrossTheFlow) {
   // Edge-on: nothing.
   wind.velocity = Eigen::Vector3d(3, -2, 0);
   f.setZero();
-  wobble::AerodynamicWind(wind).apply_forces(at_rest, f);
+  wobble::AerodynamicWind(wind).add_forces(at_rest, f);
   EXPECT_LT(f.norm(), 1e-12);
 
   // At 45°: drag along n and lift across u; their sum has no part along u from the lift.
   wind.velocity = Eigen::Vector3d(3, 0, 3);
   f.setZero();
-  wobble::AerodynamicWind(wind).apply_forces(at_rest, f);
+  wobble::AerodynamicWind(wind).add_forces(at_rest, f);
   const Eigen::Vector3d total = 3.0 * f.row(0).transpose();
   const Eigen::Vector3d u = wind.velocity, n(0, 0, 1), along = u.normalized();
   const double un = u.dot(n);
@@ -126,7 +126,7 @@ TEST(Wind, DragPushesAFaceAlongItsNormalAndLiftActsAcrossTheFlow) {
   const Eigen::MatrixXd behind = network.V.rowwise() - Eigen::RowVector3d(0, 0, 0.04);
   const wobble::StepContext moving{network, network.V, behind, pinned, 0.01, 0.0};
   f.setZero();
-  wobble::AerodynamicWind(wind).apply_forces(moving, f);
+  wobble::AerodynamicWind(wind).add_forces(moving, f);
   EXPECT_LT(f.norm(), 1e-12);
 }
 
@@ -203,7 +203,7 @@ TEST(Wind, TheCourseWindFollowsTheProgramsFormulaWithSimulatedTime) {
   const double time = 0.7;
   const wobble::StepContext step{net, current, net.V, pinned, 1.0 / 30.0, time};
   Eigen::MatrixXd f = Eigen::RowVector3d(0.5, -9.8, 0.25).replicate(net.V.rows(), 1);
-  wobble::CourseWind(diagonal).apply_forces(step, f);
+  wobble::CourseWind(diagonal).add_forces(step, f);
   for (Eigen::Index i = 0; i < f.rows(); ++i) {
     const double phi = current(i, 0) / diagonal + time;
     EXPECT_DOUBLE_EQ(f(i, 0), 3.0 + 1.5 * (1.0 + std::cos(5.0 * phi)));

@@ -185,7 +185,8 @@ TEST(SolveContactEnergy, GradientMatchesFiniteDifferences) {
        wobble::testing::sphere_collider(Eigen::Vector3d(0.5, 0.0, 0.5), 0.2)},
       0.5, 0.01);
   wobble::SolveContact solve;
-  solve.set_base_diagonal(Eigen::VectorXd::Constant(network.V.rows(), 1000.0));
+  solve.set_base_diagonal(Eigen::VectorXd::Constant(network.V.rows(), 1000.0),
+                          Eigen::VectorXd::Constant(network.V.rows(), 10.0));
   ASSERT_TRUE(solve.choose(contact, step, current, 0.0));
   Eigen::MatrixXd pressed = current;
   pressed.col(1).array() -= 0.004;  // inside the offset: the members carry a normal force

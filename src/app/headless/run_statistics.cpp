@@ -1,23 +1,41 @@
 #include "app/headless/run_statistics.h"
 
 #include <algorithm>
+#include <cctype>
 
 #include "sim/parallel/worker_pool.h"
 
 namespace wobble {
 
 void StepTimes::reserve(long steps) {
-  for (std::vector<double>* times :
-       {&step_ms, &local_ms, &global_ms, &self_detection_ms, &self_response_ms})
+  for (std::vector<double>* times : {&step_ms, &local_ms, &global_ms})
     times->reserve(steps);
+}
+
+std::string term_figure_key(const TermFigure& figure) {
+  std::string key = std::string(figure.term) + "_" + figure.name;
+  if (figure.unit[0] != '\0') key += std::string("_") + figure.unit;
+  for (char& c : key) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return key;
 }
 
 void StepTimes::add(const StepTiming& timing) {
   step_ms.push_back(timing.total_ms);
   local_ms.push_back(timing.local_ms);
   global_ms.push_back(timing.global_ms);
-  self_detection_ms.push_back(timing.self_detection_ms);
-  self_response_ms.push_back(timing.self_response_ms);
+  for (const TermFigure& figure : timing.figures) {
+    const std::string key = term_figure_key(figure);
+    auto found = std::find_if(figures.begin(), figures.end(),
+                              [&](const auto& entry) { return entry.first == key; });
+    if (found == figures.end()) {
+      figures.emplace_back(key, std::vector<double>());
+      found = figures.end() - 1;
+      found->second.reserve(step_ms.capacity());
+    }
+    found->second.push_back(figure.value);
+  }
 }
 
 double median(std::vector<double> values) {
@@ -33,7 +51,7 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
                                       const StepTimes& times) {
   const SimulationParams& params = simulation.params();
   const std::vector<double>& step_ms = times.step_ms;
-  return {
+  nlohmann::ordered_json statistics = {
       {"scene", scene.name},
       {"vertices", scene.network.V.rows()},
       {"springs", scene.network.E.rows()},
@@ -58,11 +76,12 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"self_collision_thickness", params.self_collision.thickness},
       {"self_collision_thickness_kept", simulation.self_collision_thickness_kept()},
       {"self_contacts", simulation.self_contact_count()},
-      {"self_detection_ms_median", median(times.self_detection_ms)},
-      {"self_response_ms_median", median(times.self_response_ms)},
       {"threads", shared_thread_setting().threads},
       {"threads_from", shared_thread_setting().source},
   };
+  for (const auto& [key, values] : times.figures)
+    statistics[key + "_median"] = median(values);
+  return statistics;
 }
 
 }  // namespace wobble

@@ -23,9 +23,11 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.global_ms = global_ms_.median();
   stats.forces_ms = static_cast<float>(step.forces_ms);
   stats.instruments_ms = static_cast<float>(step.instruments_ms);
-  stats.contact_ms = static_cast<float>(step.contact_ms);
-  stats.self_detection_ms = static_cast<float>(step.self_detection_ms);
-  stats.self_response_ms = static_cast<float>(step.self_response_ms);
+  stats.term_figures.clear();
+  for (const wobble::TermFigure& figure : step.figures) {
+    stats.term_figures.push_back(PanelStats::TermFigure{
+        std::string(figure.term) + " " + figure.name, figure.unit, static_cast<float>(figure.value)});
+  }
 
   // The panel's UI scale (for projectors) multiplies the screen's.
   ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;

@@ -49,10 +49,32 @@ void Pins::set_target(int i, const Eigen::Vector3d& target) {
   targets_.row(i) = target.transpose();
 }
 
-void Pins::add_targets(Eigen::MatrixXd& y) const {
+void Pins::add_diagonal(Eigen::VectorXd& diagonal) const {
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
+    if (pinned_[i]) diagonal(i) += weight;
+  }
+}
+
+void Pins::add_fixed_rhs(Eigen::MatrixXd& y) const {
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
     if (pinned_[i]) y.row(i) += weight * targets_.row(i);
   }
+}
+
+double Pins::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
+                        Eigen::MatrixXd* gradient) const {
+  double squared = 0.0;
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
+    if (!pinned_[i]) continue;
+    const Eigen::RowVector3d off = p.row(i) - targets_.row(i);
+    squared += off.squaredNorm();
+    if (gradient) gradient->row(i) += weight * off;
+  }
+  return 0.5 * weight * squared;
+}
+
+void Pins::report(std::vector<TermFigure>& figures) const {
+  figures.push_back(TermFigure{"pins", "pinned", "", static_cast<double>(count_)});
 }
 
 void Pins::check_vertex(int i, const char* what) const {

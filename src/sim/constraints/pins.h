@@ -4,12 +4,15 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "sim/terms/step_term.h"
+
 namespace wobble {
 
 // Pinned vertices and their targets: the penalty (w/2)‖Cp − C p_target‖² of the step energy,
 // C the #pins by #V selection matrix. It puts w CᵀC on Q's diagonal (so pinning or unpinning
-// re-factorizes Q) and w CᵀC p_target into y (so moving a target costs nothing).
-class Pins {
+// re-factorizes Q) and w CᵀC p_target into y (so moving a target costs nothing). The first term
+// of the step's list (terms/step_terms.h).
+class Pins : public StepTerm {
  public:
   static constexpr double weight = 1e10;  // w
 
@@ -27,8 +30,15 @@ class Pins {
   bool unpin(int i);
   // Throws std::invalid_argument if i is not pinned or the target is not finite.
   void set_target(int i, const Eigen::Vector3d& target);
+  const char* name() const override { return "pins"; }
+  // diagonal (#V) += w at each pinned vertex.
+  void add_diagonal(Eigen::VectorXd& diagonal) const override;
   // y += w CᵀC p_target, y #V by 3.
-  void add_targets(Eigen::MatrixXd& y) const;
+  void add_fixed_rhs(Eigen::MatrixXd& y) const override;
+  // (w/2)‖Cp − C p_target‖² (J); gradient += w CᵀC(p − p_target).
+  double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
+                    Eigen::MatrixXd* gradient) const override;
+  void report(std::vector<TermFigure>& figures) const override;
 
   // Throws std::out_of_range, naming `what`, unless 0 ≤ i < #V.
   void check_vertex(int i, const char* what) const;

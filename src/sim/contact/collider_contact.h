@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "sim/contact/collider.h"
-#include "sim/step_terms.h"
+#include "sim/terms/step_term.h"
 
 namespace wobble {
 
@@ -31,17 +31,17 @@ struct ContactParams {
 // otherwise t shrinks by μδ. δ is the normal impulse Δt²·F/m the collider had to supply, so this
 // is Coulomb's law with equal static and kinetic coefficients. Restitution is 0: the next step's
 // velocity (pᵗ⁺ᐞᵗ − pᵗ)/Δt has no normal part into the surface.
-class ColliderContact : public PositionConstraint {
+class ColliderContact {
  public:
   ColliderContact() = default;
   // `offset` must already be resolved (not negative).
   ColliderContact(std::vector<Collider> colliders, double friction, double offset);
 
-  void project(const StepContext& step, Eigen::MatrixXd& next) override;
+  void project(const StepContext& step, Eigen::MatrixXd& next);
   // The same again after something else moved `next` (self-collision): vertices it moves now are
   // added to those the last project() moved.
   void project_again(const StepContext& step, Eigen::MatrixXd& next);
-  void end_step() override;
+  void end_step();
 
   const std::vector<Collider>& colliders() const { return colliders_; }
   // Collider c's translation since the last step (m): what friction measures slides against.
@@ -53,9 +53,9 @@ class ColliderContact : public PositionConstraint {
   double friction() const { return friction_; }
   double offset() const { return offset_; }
   // Vertices moved out of a collider by the last projection.
-  int contact_count() const override { return contact_count_; }
-  // contact_ms: the last project() and any project_again() after it.
-  void report_timing(StepTiming& timing) const override { timing.contact_ms = milliseconds_; }
+  int contact_count() const { return contact_count_; }
+  // The last project() and any project_again() after it (ms).
+  double milliseconds() const { return milliseconds_; }
   // Counts as touching too each vertex flagged in `touching` (#V): those the solve held against
   // a collider (solve_contact.h), which the projection may not have had to move. After
   // project().

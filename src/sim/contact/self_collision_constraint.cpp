@@ -51,9 +51,12 @@ int SelfCollisionConstraint::contact_count() const {
   return on_ && self_collision_ ? self_collision_->contact_count() : 0;
 }
 
-void SelfCollisionConstraint::report_timing(StepTiming& timing) const {
-  timing.self_detection_ms = on_ ? self_collision_->detection_ms() : 0.0;
-  timing.self_response_ms = on_ ? self_collision_->response_ms() : 0.0;
+void SelfCollisionConstraint::report(std::vector<TermFigure>& figures) const {
+  if (!on_) return;
+  const char* term = name();
+  figures.push_back(TermFigure{term, "detection", "ms", self_collision_->detection_ms()});
+  figures.push_back(TermFigure{term, "response", "ms", self_collision_->response_ms()});
+  figures.push_back(TermFigure{term, "contacts", "", static_cast<double>(contact_count())});
 }
 
 const std::vector<char>& SelfCollisionConstraint::contact_vertices() const {

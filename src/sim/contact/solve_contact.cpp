@@ -28,42 +28,81 @@ bool SolveContact::choose(const ColliderContact& contact, const StepContext& ste
   const Eigen::Index n = first.rows();
   if (contact.empty() || base_.size() != n) return clear();
   if (static_cast<Eigen::Index>(member_flags_.size()) != n) member_flags_.assign(n, 0);
-  bool changed = false;
+  if (static_cast<Eigen::Index>(held_flags_.size()) != n) held_flags_.assign(n, 0);
+  if (normal_force_.size() != n) normal_force_.setZero(n);
+  if (static_cast<Eigen::Index>(touching_.size()) != n) touching_.assign(n, 0);
+  members_.clear();
+  int outside = 0;
+  bool wide_changed = false;  // a vertex within the wide margin is not in H, or one in H is not
   for (Eigen::Index i = 0; i < n; ++i) {
-    bool member = false;
+    bool member = false, wide = false;
     if (!step.pinned[i]) {
       const Eigen::Vector3d p = first.row(i).transpose();
       const double motion = (p - step.current.row(i).transpose()).norm();
       const double margin = contact.offset() + 2.0 * motion + gravity_reach;
       const double distance = nearest_collider(contact.colliders(), p) - contact.offset();
       member = distance < (member_flags_[i] ? 2.0 * margin : margin);
+      wide = distance < wide_margin_scale * margin;
     }
-    if (member != static_cast<bool>(member_flags_[i])) {
-      member_flags_[i] = member;
-      changed = true;
-    }
-  }
-  if (!changed) return false;
-  if (normal_force_.size() != n) normal_force_.setZero(n);
-  members_.clear();
-  weights_.setZero(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (!member_flags_[i]) {
+    member_flags_[i] = member;
+    if (member) {
+      members_.push_back(static_cast<int>(i));
+      if (!held_flags_[i]) ++outside;
+    } else {
       normal_force_(i) = 0.0;
-      if (static_cast<Eigen::Index>(touching_.size()) == n) touching_[i] = 0;
-      continue;
+      touching_[i] = 0;
     }
-    members_.push_back(static_cast<int>(i));
-    weights_(i) = weight_scale * base_(i);
+    if (wide != static_cast<bool>(held_flags_[i])) wide_changed = true;
   }
-  if (members_.empty()) weights_.resize(0);
-  return true;
+  ++steps_since_chosen_;
+  // H is chosen again when a member is outside it (or it holds vertices far from every
+  // collider), no sooner than lag_steps after the last time, and at once for a first contact.
+  int held_only = 0;
+  for (int i : held_) held_only += !member_flags_[i];
+  const bool due = held_.empty() ? !members_.empty()
+                                 : steps_since_chosen_ >= (lagging_ ? lag_steps : 1) &&
+                                       (outside > 0 || held_only > 0 || wide_changed);
+  bool changed = false;
+  if (due) {
+    held_.clear();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      bool held = false;
+      if (!step.pinned[i]) {
+        const Eigen::Vector3d p = first.row(i).transpose();
+        const double motion = (p - step.current.row(i).transpose()).norm();
+        const double margin = contact.offset() + 2.0 * motion + gravity_reach;
+        const double distance = nearest_collider(contact.colliders(), p) - contact.offset();
+        held = member_flags_[i] || distance < wide_margin_scale * margin;
+      }
+      held_flags_[i] = held;
+      if (held) held_.push_back(static_cast<int>(i));
+    }
+    weights_.setZero(n);
+    for (int i : held_)
+      weights_(i) = weight_scale * base_(i);
+    if (held_.empty()) weights_.resize(0);
+    steps_since_chosen_ = 0;
+    ++held_changes_;
+    changed = true;
+    outside = 0;
+  }
+  outside_held_ = outside;
+  held_only_.clear();
+  for (int i : held_) {
+    if (!member_flags_[i]) held_only_.push_back(i);
+  }
+  return changed;
 }
 
-void SolveContact::set_base_diagonal(Eigen::VectorXd base) {
-  base_ = std::move(base);
-  for (int i : members_)
+void SolveContact::set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) {
+  base_ = base;
+  inertia_ = inertia;
+  for (int i : held_)
     weights_(i) = weight_scale * base_(i);
+}
+
+double SolveContact::member_weight(int i) const {
+  return held_flags_[i] ? weights_(i) : rhs_weight_scale * inertia_(i);
 }
 
 void SolveContact::record_forces(const ColliderContact& contact, const Eigen::MatrixXd& p) {
@@ -75,15 +114,20 @@ void SolveContact::record_forces(const ColliderContact& contact, const Eigen::Ma
   for (int i : members_) {
     const double depth =
         contact.offset() - nearest_collider(contact.colliders(), p.row(i).transpose());
-    normal_force_(i) = weights_(i) * std::max(depth, 0.0);
+    normal_force_(i) = member_weight(i) * std::max(depth, 0.0);
     touching_[i] = depth > -reach;
   }
 }
 
 bool SolveContact::clear() {
-  const bool held = !members_.empty();
+  const bool held = !held_.empty();
   members_.clear();
   member_flags_.clear();
+  held_.clear();
+  held_flags_.clear();
+  held_only_.clear();
+  steps_since_chosen_ = 0;
+  outside_held_ = 0;
   weights_.resize(0);
   normal_force_.resize(0);
   touching_.clear();
@@ -97,10 +141,18 @@ void SolveContact::add_targets(const ColliderContact& contact, const StepContext
   for (int i : members_) {
     const Eigen::Vector3d at = p.row(i).transpose();
     const Eigen::Vector3d target = contact.outside_point(step, i, at);
-    rhs.row(i) += weights_(i) * target.transpose();
-    sum += 0.5 * weights_(i) * (at - target).squaredNorm();
+    const double kappa = member_weight(i);
+    if (held_flags_[i]) {
+      rhs.row(i) += kappa * target.transpose();
+    } else {
+      rhs.row(i) += kappa * (target - at).transpose();
+    }
+    sum += 0.5 * kappa * (at - target).squaredNorm();
   }
-  if (energy) *energy = sum;
+  // H less S: the target is the vertex itself, so κ on the diagonal only slows it.
+  for (int i : held_only_)
+    rhs.row(i) += weights_(i) * p.row(i);
+  if (energy) *energy += sum;
 }
 
 void SolveContact::lag_friction(const ColliderContact& contact, const StepContext& step) {
@@ -133,7 +185,7 @@ double SolveContact::energy(const ColliderContact& contact, const StepContext& s
   double energy = 0.0;
   for (std::size_t s = 0; s < members_.size(); ++s) {
     const int i = members_[s];
-    const double kappa = weights_(i);
+    const double kappa = member_weight(i);
     const Eigen::Vector3d at = p.row(i).transpose();
     for (const Collider& collider : contact.colliders()) {
       const ColliderSurface surface = collider_surface(collider, at);

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "sim/contact/collider_contact.h"
-#include "sim/step_terms.h"
+#include "sim/terms/step_term.h"
 
 namespace wobble {
 
@@ -16,12 +16,21 @@ namespace wobble {
 // Pᵢ(p) the point ColliderContact::outside_point puts it at: out of every collider to the contact
 // offset, held back by Coulomb friction. κᵢ = weight_scale × (k·degᵢ + (1 + cΔt)mᵢ/Δt²), Q's own
 // diagonal entry for the vertex, so that the contact is as stiff as what holds the vertex
-// already. κ goes on Q's diagonal for the vertices of S (refactorized only when S changes), so:
-//   local-global: the local step adds κᵢPᵢ(p) to the right-hand side of vertex i (its target is
-//     itself while it is outside every collider: the term is zero and only slows that vertex);
-//   L-BFGS: the energy adds (κᵢ/2) Σ_c max(0, offset − φ_c(pᵢ))² and friction (see energy()).
+// already. κ goes on Q's diagonal for a lagged set H ⊇ what S was when H was last chosen, so
+// that a contact set that changes as a cloth slides does not refactorize Q each step:
+//   - H is chosen again only when S has members outside it, and at most once every
+//     lag_steps steps (at once only for a first contact); it then takes every vertex within
+//     wide_margin_scale margins, so that the vertices about to arrive are in it already;
+//   - a member of S in H: the local step adds κᵢPᵢ(p) to the right-hand side of vertex i;
+//   - a vertex of H not in S (or outside every collider): κᵢpᵢ, its target is itself, the term
+//     is zero and only slows that vertex;
+//   - a member of S not yet in H: its whole force κ'ᵢ(Pᵢ(p) − pᵢ) in the right-hand side, with
+//     κ'ᵢ = rhs_weight_scale (1 + cΔt)mᵢ/Δt², small against the inertia on Q's diagonal so that
+//     the iteration stays a contraction even for a whole layer landing at once;
+//   - L-BFGS: the energy adds (κᵢ/2) Σ_c max(0, offset − φ_c(pᵢ))² and friction (see energy()),
+//     κ'ᵢ in place of κᵢ outside H.
 // Then the usual projection after the iterations (ColliderContact) only mops up what the last
-// iterate left: typically κ's compliance, micrometres.
+// iterate left: typically κ's compliance, micrometres, and the few vertices not yet in H.
 class SolveContact {
  public:
   // κ as a multiple of the vertex's own Q diagonal. The term slows a member's motion along the
@@ -29,22 +38,37 @@ class SolveContact {
   // tablecloth no longer slides off its table in 5 s (mean x 0.31, 0.33, 0.44 m against 0.7);
   // at 0.05 it does, while the jelly_drop still lands within 0.05% of its shape (0.01: 0.1%).
   static constexpr double weight_scale = 0.05;
+  // How long H is kept while S changes (steps), and how far ahead it looks (in margins). With
+  // Chebyshev acceleration H follows S every step: the acceleration's extrapolation needs Q to
+  // describe the contact it meets (with a lagged H the drape over a sphere was driven through it).
+  static constexpr int lag_steps = 10;
+  static constexpr double wide_margin_scale = 1.0;
+  // κ' outside H, as a multiple of the vertex's inertia on Q's diagonal.
+  static constexpr double rhs_weight_scale = 0.5;
 
-  // The base diagonal (k·degᵢ + (1 + cΔt)mᵢ/Δt², #V) after k, Δt, damping or masses changed;
-  // rescales the weights of S.
-  void set_base_diagonal(Eigen::VectorXd base);
+  // The base diagonal (k·degᵢ + (1 + cΔt)mᵢ/Δt², #V) and its inertia part ((1 + cΔt)mᵢ/Δt²)
+  // after k, Δt, damping or masses changed; rescales the weights.
+  void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia);
   // Chooses S for the step about to be taken from its first iterate `first` (#V by 3): a vertex
   // joins when it starts within its margin of a collider (the offset, twice its motion over the
   // step, and gravity's reach), and leaves when twice that far. Pinned vertices never join.
-  // Returns whether S changed, and with it κ on Q's diagonal.
+  // Chooses H again when due (see the class comment). Returns whether H changed, and with it κ
+  // on Q's diagonal.
   bool choose(const ColliderContact& contact, const StepContext& step, const Eigen::MatrixXd& first,
               double gravity_reach);
-  // Empties S (a reset, or colliders gone); returns whether it held anything.
+  // Whether H lags behind S (see lag_steps); on by default.
+  void set_lagging(bool on) { lagging_ = on; }
+  // Empties S and H (a reset, or colliders gone); returns whether H held anything.
   bool clear();
-  // κ for each vertex (#V; 0 outside S), what goes on Q's diagonal; empty while S is.
+  // κ for each vertex (#V; 0 outside H), what goes on Q's diagonal; empty while H is.
   const Eigen::VectorXd& weights() const { return weights_; }
-  bool empty() const { return members_.empty(); }
+  // Whether S is empty (nothing near a collider) and H too (nothing in the solve).
+  bool empty() const { return members_.empty() && held_.empty(); }
   const std::vector<int>& members() const { return members_; }
+  // Members of S not in H this step, whose force is in the right-hand side alone.
+  int outside_held() const { return outside_held_; }
+  // Times H was chosen again since the start.
+  long held_changes() const { return held_changes_; }
 
   // Local-global: rhs_i += κᵢ Pᵢ(p) for i in S (rhs #V by 3). If `energy` is given it receives
   // the term's value Σ (κᵢ/2)‖pᵢ − Pᵢ(p)‖² (J), for the convergence trace.
@@ -71,10 +95,20 @@ class SolveContact {
   void lag_friction(const ColliderContact& contact, const StepContext& step);
 
  private:
-  Eigen::VectorXd base_;
-  Eigen::VectorXd weights_;
-  std::vector<char> member_flags_;
-  std::vector<int> members_;
+  // κ the solve uses for member s of S: κᵢ in H, κ'ᵢ outside.
+  double member_weight(int i) const;
+
+  Eigen::VectorXd base_, inertia_;
+  Eigen::VectorXd weights_;         // #V: κ on H, else 0; empty when H is
+  std::vector<char> member_flags_;  // #V: in S
+  std::vector<int> members_;        // S
+  std::vector<char> held_flags_;    // #V: in H
+  std::vector<int> held_;           // H
+  std::vector<int> held_only_;      // H less S, this step
+  int steps_since_chosen_ = 0;
+  bool lagging_ = true;
+  int outside_held_ = 0;
+  long held_changes_ = 0;
   Eigen::VectorXd normal_force_;  // #V (N), from record_forces
   std::vector<char> touching_;    // #V, from record_forces
   // Per member, for the L-BFGS friction: the contact normal at the start and μλ (N).

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "sim/forces/force_registry.h"
+#include "sim/terms/term_registry.h"
 #include "sim/input_error.h"
 #include "sim/simulation_params.h"
 #include "sim/value_limits.h"
@@ -59,7 +59,7 @@ Eigen::Vector3d wind_velocity_at(const WindParams& wind, const Eigen::Vector3d& 
   return wind.velocity * (1.0 + wind.gusts * gust_profile(s));
 }
 
-void AerodynamicWind::apply_forces(const StepContext& step, Eigen::MatrixXd& fext) const {
+void AerodynamicWind::add_forces(const StepContext& step, Eigen::MatrixXd& fext) {
   const Eigen::MatrixXi& F = step.rest.F;
   const Eigen::MatrixXd& p = step.current;
   const double inverse_dt = 1.0 / step.dt;
@@ -92,7 +92,7 @@ void AerodynamicWind::apply_forces(const StepContext& step, Eigen::MatrixXd& fex
   }
 }
 
-void CourseWind::apply_forces(const StepContext& step, Eigen::MatrixXd& fext) const {
+void CourseWind::add_forces(const StepContext& step, Eigen::MatrixXd& fext) {
   for (Eigen::Index i = 0; i < fext.rows(); ++i) {
     const double phi = step.current(i, 0) / rest_diagonal_ + step.time;
     fext(i, 0) = 3.0 + 1.5 * (1.0 + std::cos(5.0 * phi));
@@ -101,7 +101,7 @@ void CourseWind::apply_forces(const StepContext& step, Eigen::MatrixXd& fext) co
   }
 }
 
-std::unique_ptr<ForceTerm> make_wind_force(const ForceSetup& setup) {
+std::unique_ptr<StepTerm> make_wind_force(const TermSetup& setup) {
   const WindParams& wind = setup.params.wind;
   if (!wind.on) return nullptr;
   if (wind.model == WindModel::course) return std::make_unique<CourseWind>(setup.rest_diagonal);

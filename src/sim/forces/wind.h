@@ -4,7 +4,7 @@
 #include <Eigen/Core>
 #include <memory>
 
-#include "sim/step_terms.h"
+#include "sim/terms/step_term.h"
 
 namespace wobble {
 
@@ -41,10 +41,11 @@ Eigen::Vector3d wind_velocity_at(const WindParams& wind, const Eigen::Vector3d& 
 //   lift  f_l = ½ ρ C_l A (u·n) ‖u‖ (n − (n·û)û)   (across the air's flow, in the plane of u
 //         and n: ½ ρ C_l A ‖u‖² cos θ sin θ, zero edge-on and face-on)
 // each shared equally among the three corners.
-class AerodynamicWind : public ForceTerm {
+class AerodynamicWind : public StepTerm {
  public:
   explicit AerodynamicWind(const WindParams& wind) : wind_(wind) {}
-  void apply_forces(const StepContext& step, Eigen::MatrixXd& fext) const override;
+  const char* name() const override { return "wind"; }
+  void add_forces(const StepContext& step, Eigen::MatrixXd& fext) override;
 
  private:
   WindParams wind_;
@@ -55,20 +56,21 @@ class AerodynamicWind : public ForceTerm {
 // x_i the vertex's current x (m), bbd the rest bounding box's diagonal (m), t the simulated time
 // at the start of the step (s) in place of the program's clock, so that runs repeat. Forces in N
 // whatever the mass, like the course's gravity.
-class CourseWind : public ForceTerm {
+class CourseWind : public StepTerm {
  public:
   explicit CourseWind(double rest_diagonal) : rest_diagonal_(rest_diagonal) {}
-  void apply_forces(const StepContext& step, Eigen::MatrixXd& fext) const override;
+  const char* name() const override { return "wind"; }
+  void add_forces(const StepContext& step, Eigen::MatrixXd& fext) override;
 
  private:
   double rest_diagonal_;
 };
 
-struct ForceSetup;
+struct TermSetup;
 
-// The registered factory (sim/forces/registered_forces.cpp): the wind of params.wind, course or
+// The registered factory (sim/terms/registered_terms.cpp): the wind of params.wind, course or
 // aerodynamic, or nullptr when it is off.
-std::unique_ptr<ForceTerm> make_wind_force(const ForceSetup& setup);
+std::unique_ptr<StepTerm> make_wind_force(const TermSetup& setup);
 
 }  // namespace wobble
 

@@ -27,16 +27,14 @@ double step_objective(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p,
     }
   }
   if (gradient != nullptr) {
-    // The vertex terms' gradient: (1 + cΔt)/Δt² M(p − p̂) − f_ext + w(p − p_target) at pins.
+    // The vertex terms' gradient: (1 + cΔt)/Δt² M(p − p̂) − f_ext.
     const double cdt = terms.damping * terms.dt;
     const double inertia_weight = (1.0 + cdt) / (terms.dt * terms.dt);
     for (int c = 0; c < 3; ++c) {
       for (Eigen::Index i = 0; i < n; ++i) {
         const double predicted =
             ((2.0 + cdt) * terms.current(i, c) - terms.previous(i, c)) / (1.0 + cdt);
-        double g = inertia_weight * terms.m(i) * (p(i, c) - predicted) - terms.fext(i, c);
-        if (terms.pinned[i]) g += terms.pin_weight * (p(i, c) - terms.targets(i, c));
-        (*gradient)(i, c) += g;
+        (*gradient)(i, c) += inertia_weight * terms.m(i) * (p(i, c) - predicted) - terms.fext(i, c);
       }
     }
   }
@@ -45,7 +43,7 @@ double step_objective(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p,
 
 double step_objective_vertex_terms(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p) {
   const double cdt = terms.damping * terms.dt;
-  double inertia = 0.0, work = 0.0, pins = 0.0;
+  double inertia = 0.0, work = 0.0;
   for (int c = 0; c < 3; ++c) {
     // Column by column: the matrices are stored that way.
     const double* position = p.col(c).data();
@@ -56,13 +54,9 @@ double step_objective_vertex_terms(const StepObjectiveTerms& terms, const Eigen:
       const double away = position[i] - ((2.0 + cdt) * current[i] - previous[i]) / (1.0 + cdt);
       inertia += terms.m(i) * away * away;
       work += position[i] * force[i];
-      if (terms.pinned[i]) {
-        const double off = position[i] - terms.targets(i, c);
-        pins += off * off;
-      }
     }
   }
-  return 0.5 * (1.0 + cdt) / (terms.dt * terms.dt) * inertia - work + 0.5 * terms.pin_weight * pins;
+  return 0.5 * (1.0 + cdt) / (terms.dt * terms.dt) * inertia - work;
 }
 
 }  // namespace wobble

@@ -30,12 +30,9 @@ LbfgsSolver::LbfgsSolver(Eigen::Index vertices)
       rho_(history, 0.0),
       alpha_(history, 0.0) {}
 
-double LbfgsSolver::evaluate(const StepProblem& problem, const StepContext& context,
-                             const Eigen::MatrixXd& p, Eigen::MatrixXd& gradient) const {
-  double energy = step_objective(problem.objective_terms(), p, &gradient);
-  if (problem.has_solve_contact())
-    energy += problem.solve_contact->energy(*problem.colliders, context, p, &gradient);
-  return energy;
+double LbfgsSolver::evaluate(const StepProblem& problem, const Eigen::MatrixXd& p,
+                             Eigen::MatrixXd& gradient) const {
+  return problem.energy(p, &gradient);
 }
 
 void LbfgsSolver::find_direction(const StepProblem& problem) {
@@ -57,7 +54,6 @@ void LbfgsSolver::find_direction(const StepProblem& problem) {
 
 void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Eigen::MatrixXd& p,
                         StepTiming& timing) {
-  const StepContext context = problem.context();
   observers.begin_step(name(), false);
   stored_ = 0;
   newest_ = -1;
@@ -65,7 +61,7 @@ void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Ei
   last_extra_evaluations_ = 0;
   double local_ms = 0.0, global_ms = 0.0;
   Stopwatch local;
-  double energy = evaluate(problem, context, p, gradient_);
+  double energy = evaluate(problem, p, gradient_);
   local_ms += local.milliseconds();
   observers.measured(energy, gradient_.norm());
   for (int iteration = 0; iteration < problem.params.iterations; ++iteration) {
@@ -85,7 +81,7 @@ void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Ei
     bool lowered = false;
     for (int halving = 0; halving <= max_halvings && slope < 0.0; ++halving) {
       trial_ = p + alpha * direction_;
-      trial_energy = evaluate(problem, context, trial_, trial_gradient_);
+      trial_energy = evaluate(problem, trial_, trial_gradient_);
       if (halving > 0) ++last_extra_evaluations_;
       if (trial_energy <= energy + 1e-4 * alpha * slope) {
         lowered = true;
@@ -119,6 +115,14 @@ void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Ei
     energy = trial_energy;
     ++last_iterations_;
     global_ms += pair.milliseconds();
+    // Terms that bound how far a vertex may move (self-contact) take the iterate back within;
+    // the energy and gradient are then those of where it is, and the pairs start again.
+    const Stopwatch limit;
+    if (problem.limit_iterate(p)) {
+      energy = evaluate(problem, p, gradient_);
+      stored_ = 0;
+    }
+    local_ms += limit.milliseconds();
     observers.measured(energy, gradient_.norm());
     observers.iterated(iteration, p);
   }

@@ -18,8 +18,10 @@ namespace wobble {
 //   line search: p + αd, α = 1, ½, ¼, … until the energy falls by Armijo's rule
 //     E(p + αd) ≤ E(p) + 10⁻⁴ α gᵀd; a step that cannot lower it ends the iterations there, so
 //     the energy never rises from one iterate to the next.
-// E is the whole step energy: springs, inertia with damping, f_ext (gravity, wind), pins and the
-// contact term (sim/contact/solve_contact.h) with its friction. An iteration costs one solve with
+// E is the whole step energy: springs, inertia with damping, f_ext (gravity, wind) and every term
+// of the step's list (the pins, contact with its friction, self-contact: StepProblem::energy); a
+// term that bounds the iterate (self-contact) moves an accepted step back within its bounds, and
+// the history then starts again. An iteration costs one solve with
 // Q, one pass over the springs and vertices for E and ∇E, and 4·history products of #V by 3
 // arrays; usually α = 1 is taken and the line search costs nothing more. The same iteration cap
 // as local-global (params.iterations); params.chebyshev does not apply.
@@ -44,7 +46,7 @@ class LbfgsSolver : public StepSolver {
 
  private:
   // E(p) and ∇E(p) into `gradient`.
-  double evaluate(const StepProblem& problem, const StepContext& context, const Eigen::MatrixXd& p,
+  double evaluate(const StepProblem& problem, const Eigen::MatrixXd& p,
                   Eigen::MatrixXd& gradient) const;
   // direction_ = −H gradient_ (two-loop recursion, Q as the initial Hessian).
   void find_direction(const StepProblem& problem);

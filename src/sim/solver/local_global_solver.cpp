@@ -32,27 +32,24 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
   // the extrapolation then runs away (a cloth falling on a sphere left it at 48 m/s). While the
   // last step touched a collider, an iteration whose update grew restarts the recurrence.
   const bool restart_on_growth = problem.in_contact;
+  bool limited = false;  // the last iterate was moved after its solve
   double local_ms = 0.0, global_ms = 0.0;
-  // Contact inside the solve: each vertex of the contact set is drawn to where the colliders and
-  // friction put it (projective dynamics' collision constraint; its weight is already in Q).
-  const bool contact = problem.has_solve_contact();
-  const StepContext context = problem.context();
   for (int iteration = 0; iteration < params.iterations; ++iteration) {
     const Stopwatch local;
-    problem.local_step.apply(p, k, problem.y, rhs_, measuring ? &springs : nullptr);
-    double contact_energy = 0.0;
-    if (contact) {
-      problem.solve_contact->add_targets(*problem.colliders, context, p, rhs_,
-                                         measuring ? &contact_energy : nullptr);
-    }
+    double term_energy = 0.0;
+    // The local step, and every term's targets (contact draws its vertices out of the colliders
+    // and apart from the cloth's other layers; its weight is already in Q or its whole force here).
+    problem.right_hand_side(p, rhs_, measuring ? &springs : nullptr,
+                            measuring ? &term_energy : nullptr);
     local_ms += local.milliseconds();
     if (measuring) {
       const Stopwatch record;
-      // The first iterate is a prediction; an accelerated one is not the solve's output.
-      const bool plain_solve = iteration > 0 && !params.chebyshev;
+      // The first iterate is a prediction; an accelerated or limited one is not the solve's
+      // output.
+      const bool plain_solve = iteration > 0 && !params.chebyshev && !limited;
       const IterateMeasure::Result at =
           measure_.measure(terms, problem.system.Q(), p, rhs_, springs, plain_solve && exact_solve);
-      observers.measured(at.energy + contact_energy, at.gradient_norm);
+      observers.measured(at.energy + term_energy, at.gradient_norm);
       instruments_ms += record.milliseconds();
     }
     const Stopwatch global;
@@ -65,20 +62,21 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
       cholesky.solve(rhs_, p);
     }
     global_ms += global.milliseconds();
+    // Terms that bound how far a vertex may move (self-contact) take the iterate back within.
+    const Stopwatch limit;
+    limited = problem.limit_iterate(p);
+    local_ms += limit.milliseconds();
     observers.iterated(iteration, p);
   }
   if (measuring) {
     // The last iterate, which no local step has seen yet.
     const Stopwatch record;
-    problem.local_step.apply(p, k, problem.y, rhs_, &springs);
-    double contact_energy = 0.0;
-    if (contact) {
-      problem.solve_contact->add_targets(*problem.colliders, context, p, rhs_, &contact_energy);
-    }
+    double term_energy = 0.0;
+    problem.right_hand_side(p, rhs_, &springs, &term_energy);
     // The last iteration is never accelerated.
     const IterateMeasure::Result at =
-        measure_.measure(terms, problem.system.Q(), p, rhs_, springs, exact_solve);
-    observers.measured(at.energy + contact_energy, at.gradient_norm);
+        measure_.measure(terms, problem.system.Q(), p, rhs_, springs, exact_solve && !limited);
+    observers.measured(at.energy + term_energy, at.gradient_norm);
     instruments_ms += record.milliseconds();
   }
   timing.local_ms = local_ms;
@@ -112,7 +110,7 @@ void LocalGlobalSolver::calibrate(const StepProblem& problem, Eigen::MatrixXd& p
   // iteration, and a ρ that low gives away most of the gain; from 50–100 it reads 0.98–0.99.
   std::vector<double> update_norms;
   for (int iteration = 0; iteration < chebyshev_calibration_iterations; ++iteration) {
-    problem.local_step.apply(p, problem.params.k, problem.y, rhs_);
+    problem.right_hand_side(p, rhs_);
     problem.system.cholesky().solve(rhs_, solved_);
     update_norms.push_back((solved_ - p).norm());
     p.swap(solved_);

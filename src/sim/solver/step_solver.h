@@ -4,25 +4,28 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "sim/constraints/pins.h"
-#include "sim/contact/solve_contact.h"
 #include "sim/instruments/step_objective.h"
 #include "sim/instruments/step_observer.h"
 #include "sim/simulation_params.h"
 #include "sim/solver/local_step.h"
 #include "sim/solver/system_matrix.h"
 #include "sim/spring_network.h"
-#include "sim/step_terms.h"
+#include "sim/terms/step_terms.h"
 
 namespace wobble {
 
 // One time step's minimization problem, as the Simulation hands it to a solver: minimize over
-// p (#V by 3, m) the step energy (see step_objective.h)
-//   E(p) = ½k Σ(‖pᵢ−pⱼ‖−rᵢⱼ)² + (1 + cΔt)/(2Δt²)‖p − p̂‖²_M − pᵀf_ext + (w/2)‖Cp − C p_target‖²
-// whose quadratic part is ½pᵀQp − pᵀy with
-//   Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC  (prefactored),
-//   y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,
-// so that ∇E(p) = Q p − (k Aᵀd(p) + y), d(p) the local step's spring directions.
+// p (#V by 3, m) the step energy
+//   E(p) = ½k Σ(‖pᵢ−pⱼ‖−rᵢⱼ)² + (1 + cΔt)/(2Δt²)‖p − p̂‖²_M − pᵀf_ext + Σ_terms E_term(p)
+// (see step_objective.h), the terms those of the step's list (terms/step_terms.h): the pins'
+// (w/2)‖Cp − C p_target‖², contact with the colliders, self-contact, ... Its quadratic part is
+// ½pᵀQp − pᵀy with
+//   Q = k AᵀA + (1 + cΔt)M/Δt² + D  (prefactored; D the terms' diagonal: w CᵀC, contact's κ),
+//   y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + the terms' fixed part (w CᵀC p_target),
+// so that ∇E(p) = Q p − rhs(p), rhs(p) = k Aᵀd(p) + y + the terms' targets at p.
+//
+// A solver sees the terms only through right_hand_side(), energy() and limit_iterate(): it
+// cannot leave one out.
 struct StepProblem {
   const SpringNetwork& rest;            // V, E (#E by 2), masses m (#V, kg)
   const Eigen::VectorXd& rest_lengths;  // #E r (m)
@@ -30,32 +33,37 @@ struct StepProblem {
   const Eigen::MatrixXd& current;       // #V by 3 pᵗ (m)
   const Eigen::MatrixXd& previous;      // #V by 3 pᵗ⁻ᐞᵗ (m)
   const Eigen::MatrixXd& fext;          // #V by 3 f_ext (N): gravity and the forces
-  const Pins& pins;                     // C, w and p_target
   const Eigen::MatrixXd& y;             // #V by 3 (N), as above
   SystemMatrix& system;                 // Q and its Cholesky factorization
-  LocalStep& local_step;                // rhs = k Aᵀd(p) + y
-  // The constraints that project after the solve (colliders, self-collision), for a solver that
-  // takes contact inside its iterations; local-global leaves them to the Simulation.
-  const std::vector<PositionConstraint*>& constraints;
+  LocalStep& local_step;                // k Aᵀd(p) + y
+  StepTerms& terms;                     // every term beyond the springs and the inertia
+  StepContext context;                  // what the terms see of the step
   // The last step touched a collider or itself: the problem may change sharply between
   // iterations.
   bool in_contact = false;
-  // Contact inside the solve (solve_contact.h): its κ is on Q's diagonal for the vertices of its
-  // set. Null, or an empty set, when no vertex is near a collider.
-  const SolveContact* solve_contact = nullptr;
-  const ColliderContact* colliders = nullptr;
-  double time = 0.0;  // simulated time at the start of the step (s)
 
-  bool has_solve_contact() const { return solve_contact && !solve_contact->empty(); }
-  StepContext context() const {
-    return StepContext{rest, current, previous, pins.flags(), params.dt, time};
-  }
-
-  // E(p) and ∇E(p) through step_objective(objective_terms(), p, &gradient).
+  // The springs' and inertia's part of E (step_objective.h).
   StepObjectiveTerms objective_terms() const {
-    return StepObjectiveTerms{rest.E,    rest_lengths,   rest.m,         params.k,
-                              params.dt, params.damping, current,        previous,
-                              fext,      pins.flags(),   pins.targets(), Pins::weight};
+    return StepObjectiveTerms{rest.E,    rest_lengths,   rest.m,  params.k, params.dt,
+                              params.damping, current, previous, fext};
+  }
+  // rhs (#V by 3) = k Aᵀd(p) + y + every term's targets at p. If given, `springs` receives
+  // Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² and `term_energy` every term's energy at p (J).
+  void right_hand_side(const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs, double* springs = nullptr,
+                       double* term_energy = nullptr) const {
+    local_step.apply(p, params.k, y, rhs, springs);
+    if (term_energy) *term_energy = 0.0;
+    if (terms.in_solve() || term_energy) terms.add_targets(context, p, rhs, term_energy);
+  }
+  // E(p) (J); `gradient` (#V by 3, N), if given, receives ∇E(p).
+  double energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient) const {
+    return step_objective(objective_terms(), p, gradient) +
+           terms.add_energy(context, p, gradient);
+  }
+  // After an update of the iterate: the terms may move p back within their bounds. Returns
+  // whether any vertex moved.
+  bool limit_iterate(Eigen::MatrixXd& p) const {
+    return terms.in_solve() && terms.limit_iterate(context, p);
   }
 };
 

@@ -72,22 +72,17 @@ void SystemMatrix::analyze() {
 }
 
 void SystemMatrix::refactorize(double k, double dt, double damping, const Eigen::VectorXd& m,
-                               const std::vector<char>& pinned, double pin_weight,
-                               const Eigen::VectorXd& extra_diagonal) {
-  // Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC, written into the fixed pattern.
+                               const Eigen::VectorXd& terms_diagonal) {
+  // Q = k AᵀA + (1 + cΔt)M/Δt² + D, written into the fixed pattern.
   const double* laplacian = laplacian_.valuePtr();
   double* q = Q_.valuePtr();
   for (Eigen::Index s = 0; s < Q_.nonZeros(); ++s)
     q[s] = k * laplacian[s];
   // Damping scales the inertia term by (1 + cΔt).
   const double inertia = inertia_scale(dt, damping);
-  for (std::size_t i = 0; i < diagonal_slot_.size(); ++i) {
-    q[diagonal_slot_[i]] += m(i) * inertia + (pinned[i] ? pin_weight : 0.0);
-  }
-  if (extra_diagonal.size() == static_cast<Eigen::Index>(diagonal_slot_.size())) {
-    for (std::size_t i = 0; i < diagonal_slot_.size(); ++i)
-      q[diagonal_slot_[i]] += extra_diagonal(i);
-  }
+  const bool terms = terms_diagonal.size() == static_cast<Eigen::Index>(diagonal_slot_.size());
+  for (std::size_t i = 0; i < diagonal_slot_.size(); ++i)
+    q[diagonal_slot_[i]] += m(i) * inertia + (terms ? terms_diagonal(i) : 0.0);
   ++numeric_factorizations_;
   if (!solver_.factorize(Q_)) throw std::runtime_error("the Cholesky factorization of Q failed");
 }

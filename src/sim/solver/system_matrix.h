@@ -15,7 +15,7 @@ namespace wobble {
 Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::Index n);
 
 // The global step's matrix, #V by #V, and its Cholesky factorization:
-//   Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC
+//   Q = k AᵀA + (1 + cΔt)M/Δt² + D,  D the step's terms' diagonal (w CᵀC for the pins, ...)
 // in a pattern that never changes (AᵀA's, its diagonal always stored), so that k, Δt, damping,
 // masses and pins only ever change values: one symbolic analysis serves every factorization.
 class SystemMatrix {
@@ -28,11 +28,11 @@ class SystemMatrix {
   void analyze();
   // Refill Q's values and factorize numerically. Throws std::runtime_error if Q is not positive
   // definite.
-  //   m  #V masses (kg);  pinned  #V flags;  pin_weight  w
-  //   extra_diagonal  #V more on the diagonal (contact inside the solve), or empty for none
+  //   m  #V masses (kg)
+  //   terms_diagonal  #V the step's terms' weights (w CᵀC for the pins, contact's κ), or empty
+  //                   for none
   void refactorize(double k, double dt, double damping, const Eigen::VectorXd& m,
-                   const std::vector<char>& pinned, double pin_weight,
-                   const Eigen::VectorXd& extra_diagonal = Eigen::VectorXd());
+                   const Eigen::VectorXd& terms_diagonal = Eigen::VectorXd());
   // k·AᵀAᵢᵢ + (1 + cΔt)mᵢ/Δt² for each vertex (#V): Q's diagonal without pins or contact.
   Eigen::VectorXd base_diagonal(double k, double dt, double damping,
                                 const Eigen::VectorXd& m) const;

@@ -1,0 +1,15 @@
+// Wobble's made terms, in step order after the pins. Adding one: its own files (a StepTerm and a
+// TermFactory), one line here.
+#include "sim/forces/wind.h"
+#include "sim/terms/term_registry.h"
+
+namespace wobble {
+
+const std::vector<TermEntry>& built_in_terms() {
+  static const std::vector<TermEntry> terms = {
+      {"wind", make_wind_force},
+  };
+  return terms;
+}
+
+}  // namespace wobble

@@ -1,0 +1,52 @@
+#ifndef WOBBLE_SIM_TERMS_STEP_TERMS_H
+#define WOBBLE_SIM_TERMS_STEP_TERMS_H
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/terms/step_term.h"
+
+namespace wobble {
+
+// The step's terms in step order (pins, forces, collider contact, self-contact, then any term
+// registered from outside), and each hook called over all of them. The Simulation owns the
+// terms; the list only points at them. What a solver asks of the step goes through here, so a
+// solver cannot leave a term out.
+class StepTerms {
+ public:
+  void set(std::vector<StepTerm*> terms);
+  const std::vector<StepTerm*>& terms() const { return terms_; }
+
+  void add_forces(const StepContext& step, Eigen::MatrixXd& fext) const;
+  void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) const;
+  // Every term's weights on Q's diagonal (#V), or empty when none has any.
+  const Eigen::VectorXd& diagonal(Eigen::Index vertices);
+  void add_fixed_rhs(Eigen::MatrixXd& y) const;
+  // Whether any term's diagonal changed.
+  bool begin_step(const StepContext& step, const Eigen::MatrixXd& first);
+  // Whether any term acts inside this step's iterations.
+  bool in_solve() const { return in_solve_; }
+  // The terms in the solve add their targets; `energy`, if given, += every term's energy at p.
+  void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
+                   double* energy) const;
+  double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
+                    Eigen::MatrixXd* gradient) const;
+  bool limit_iterate(const StepContext& step, Eigen::MatrixXd& p) const;
+  void project(const StepContext& step, Eigen::MatrixXd& next) const;
+  void end_step() const;
+  bool reset() const;
+  bool in_contact() const;
+  // figures = every term's figures of the last step (no allocation once grown).
+  void report(std::vector<TermFigure>& figures) const;
+
+ private:
+  std::vector<StepTerm*> terms_;
+  std::vector<StepTerm*> solving_;  // the terms in_solve() this step
+  std::vector<char> solving_flags_;  // the same, by position in terms_
+  bool in_solve_ = false;
+  Eigen::VectorXd diagonal_;
+};
+
+}  // namespace wobble
+
+#endif
