@@ -90,7 +90,6 @@ void Simulation::reset() {
   time_ = 0.0;
   last_status_ = StepStatus::ok;
   const bool contact_was_held = colliders_.restart(params_.contact.colliders);
-  self_collision_.clear();
   const bool pins_changed = pins_.reset(network_.V);
   if (terms_.reset() || pins_changed || contact_was_held) refactorize();
 }

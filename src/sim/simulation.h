@@ -10,7 +10,7 @@
 
 #include "sim/constraints/pins.h"
 #include "sim/contact/collider_contact_term.h"
-#include "sim/contact/self_collision_constraint.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/instruments/convergence_recorder.h"
 #include "sim/instruments/iteration_callback.h"
 #include "sim/instruments/step_objective.h"
@@ -149,8 +149,8 @@ class Simulation {
   // Self-collision on or off, or a new thickness; nothing precomputed. Throws InputError for a
   // thickness out of limits::self_collision_thickness.
   void set_self_collision(const SelfCollisionParams& self_collision);
-  // Vertices the last step's self-collision moved (pushed apart from a layer of the same surface,
-  // or held back by the swept check), and the same as #V flags.
+  // Vertices a layer of the same surface pressed on in the last step (self-contact's force on
+  // them), and the same as #V flags.
   int self_contact_count() const;
   const std::vector<char>& self_contact_vertices() const;
   // The gap self-collision keeps (m): params().self_collision.thickness, clamped to what the
@@ -253,7 +253,7 @@ class Simulation {
   Eigen::MatrixXd fext_, y_;                   // #V by 3 buffers kept to avoid allocation
   std::vector<std::unique_ptr<StepTerm>> made_terms_;  // terms/term_registry.h
   ColliderContactTerm colliders_;
-  SelfCollisionConstraint self_collision_{network_, colliders_.colliders()};
+  SelfContactTerm self_collision_{network_, colliders_.colliders()};
   StepTerms terms_;  // pins_, made_terms_, colliders_, self_collision_: in step order
   double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
   double time_ = 0.0;

@@ -50,7 +50,7 @@ class Tether : public wobble::StepTerm {
   }
   bool in_solve() const override { return true; }
   void add_targets(const wobble::StepContext& /*step*/, const Eigen::MatrixXd& p,
-                   Eigen::MatrixXd& rhs, double* energy) const override {
+                   Eigen::MatrixXd& rhs, double* energy) override {
     rhs.rowwise() += stiffness_ * anchor_;
     if (energy) *energy += add_energy_at(p, nullptr);
   }

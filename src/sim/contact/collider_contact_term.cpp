@@ -29,7 +29,7 @@ bool ColliderContactTerm::begin_step(const StepContext& step, const Eigen::Matri
 }
 
 void ColliderContactTerm::add_targets(const StepContext& step, const Eigen::MatrixXd& p,
-                                      Eigen::MatrixXd& rhs, double* energy) const {
+                                      Eigen::MatrixXd& rhs, double* energy) {
   solve_.add_targets(contact_, step, p, rhs, energy);
 }
 

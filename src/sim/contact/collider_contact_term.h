@@ -26,7 +26,7 @@ class ColliderContactTerm : public StepTerm {
   bool begin_step(const StepContext& step, const Eigen::MatrixXd& first) override;
   bool in_solve() const override { return !solve_.empty(); }
   void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
-                   double* energy) const override;
+                   double* energy) override;
   double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
                     Eigen::MatrixXd* gradient) const override;
   void project(const StepContext& step, Eigen::MatrixXd& next) override;

@@ -33,16 +33,14 @@ bool SolveContact::choose(const ColliderContact& contact, const StepContext& ste
   if (static_cast<Eigen::Index>(touching_.size()) != n) touching_.assign(n, 0);
   members_.clear();
   int outside = 0;
-  bool wide_changed = false;  // a vertex within the wide margin is not in H, or one in H is not
   for (Eigen::Index i = 0; i < n; ++i) {
-    bool member = false, wide = false;
+    bool member = false;
     if (!step.pinned[i]) {
       const Eigen::Vector3d p = first.row(i).transpose();
       const double motion = (p - step.current.row(i).transpose()).norm();
       const double margin = contact.offset() + 2.0 * motion + gravity_reach;
       const double distance = nearest_collider(contact.colliders(), p) - contact.offset();
       member = distance < (member_flags_[i] ? 2.0 * margin : margin);
-      wide = distance < wide_margin_scale * margin;
     }
     member_flags_[i] = member;
     if (member) {
@@ -52,30 +50,21 @@ bool SolveContact::choose(const ColliderContact& contact, const StepContext& ste
       normal_force_(i) = 0.0;
       touching_[i] = 0;
     }
-    if (wide != static_cast<bool>(held_flags_[i])) wide_changed = true;
   }
   ++steps_since_chosen_;
-  // H is chosen again when a member is outside it (or it holds vertices far from every
-  // collider), no sooner than lag_steps after the last time, and at once for a first contact.
+  // H is chosen again when a member is outside it or it holds a vertex that left S, no sooner
+  // than lag_steps after the last time, and at once for a first contact.
   int held_only = 0;
   for (int i : held_) held_only += !member_flags_[i];
   const bool due = held_.empty() ? !members_.empty()
                                  : steps_since_chosen_ >= (lagging_ ? lag_steps : 1) &&
-                                       (outside > 0 || held_only > 0 || wide_changed);
+                                       (outside > 0 || held_only > 0);
   bool changed = false;
   if (due) {
     held_.clear();
     for (Eigen::Index i = 0; i < n; ++i) {
-      bool held = false;
-      if (!step.pinned[i]) {
-        const Eigen::Vector3d p = first.row(i).transpose();
-        const double motion = (p - step.current.row(i).transpose()).norm();
-        const double margin = contact.offset() + 2.0 * motion + gravity_reach;
-        const double distance = nearest_collider(contact.colliders(), p) - contact.offset();
-        held = member_flags_[i] || distance < wide_margin_scale * margin;
-      }
-      held_flags_[i] = held;
-      if (held) held_.push_back(static_cast<int>(i));
+      held_flags_[i] = member_flags_[i];
+      if (held_flags_[i]) held_.push_back(static_cast<int>(i));
     }
     weights_.setZero(n);
     for (int i : held_)

@@ -18,9 +18,8 @@ namespace wobble {
 // diagonal entry for the vertex, so that the contact is as stiff as what holds the vertex
 // already. κ goes on Q's diagonal for a lagged set H ⊇ what S was when H was last chosen, so
 // that a contact set that changes as a cloth slides does not refactorize Q each step:
-//   - H is chosen again only when S has members outside it, and at most once every
-//     lag_steps steps (at once only for a first contact); it then takes every vertex within
-//     wide_margin_scale margins, so that the vertices about to arrive are in it already;
+//   - H is chosen again (as S) only when S has members outside it or H holds vertices that
+//     left S, and at most once every lag_steps steps (at once only for a first contact);
 //   - a member of S in H: the local step adds κᵢPᵢ(p) to the right-hand side of vertex i;
 //   - a vertex of H not in S (or outside every collider): κᵢpᵢ, its target is itself, the term
 //     is zero and only slows that vertex;
@@ -38,11 +37,10 @@ class SolveContact {
   // tablecloth no longer slides off its table in 5 s (mean x 0.31, 0.33, 0.44 m against 0.7);
   // at 0.05 it does, while the jelly_drop still lands within 0.05% of its shape (0.01: 0.1%).
   static constexpr double weight_scale = 0.05;
-  // How long H is kept while S changes (steps), and how far ahead it looks (in margins). With
+  // How long H is kept while S changes (steps). With
   // Chebyshev acceleration H follows S every step: the acceleration's extrapolation needs Q to
   // describe the contact it meets (with a lagged H the drape over a sphere was driven through it).
   static constexpr int lag_steps = 10;
-  static constexpr double wide_margin_scale = 1.0;
   // κ' outside H, as a multiple of the vertex's inertia on Q's diagonal.
   static constexpr double rhs_weight_scale = 0.5;
 

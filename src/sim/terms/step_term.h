@@ -77,9 +77,10 @@ class StepTerm {
   // Whether it has anything to add inside this step's iterations; the solvers skip it if not.
   virtual bool in_solve() const { return false; }
   // Local-global: rhs (#V by 3) += its targets for the iterate p; `energy`, if given, += its
-  // energy at p (J).
+  // energy at p (J). Not const: a term may update its own multipliers from each iterate
+  // (self-contact's forces).
   virtual void add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& /*p*/,
-                           Eigen::MatrixXd& /*rhs*/, double* /*energy*/) const {}
+                           Eigen::MatrixXd& /*rhs*/, double* /*energy*/) {}
   // Its energy at p (J); `gradient`, if given, += its gradient (#V by 3, N).
   virtual double add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& /*p*/,
                             Eigen::MatrixXd* /*gradient*/) const {

@@ -1,0 +1,180 @@
+#ifndef WOBBLE_SIM_CONTACT_SELF_CONTACT_PROXIMITY_H
+#define WOBBLE_SIM_CONTACT_SELF_CONTACT_PROXIMITY_H
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "sim/contact/self_collision_surface.h"
+#include "sim/contact/self_contact_detection.h"
+#include "sim/contact/spatial_grid.h"
+#include "sim/parallel/worker_pool.h"
+
+namespace wobble {
+
+// Self-contact in the manner of Offset Geometric Contact (Chen et al. 2025): at the start of an
+// epoch, positions x that are free of crossings, find the surface's close pairs and, for each
+// vertex, how far it may move before anything could pass through anything else.
+//
+// Pairs: every vertex-triangle pair (the vertex not on the triangle) and edge-edge pair (no
+// shared vertex) closer than `contact_distance` at x that `rest` does not list (the rest shape's
+// own neighbourhood is never contact), as SelfContactPair:
+//   vertex  (v, a, b, c) for a vertex and a triangle; (p0, p1, q0, q1) for two edges, the
+//           lower-numbered edge first, each edge's lower vertex first
+//   beta    (1, −α_a, −α_b, −α_c) with α the barycentric closest point; (1−s, s, −(1−u), −u)
+//   normal  q/‖q‖ with q = Σ βₖ xₖ, from the second feature's closest point to the first's; at a
+//           distance of ~0, the triangle's face normal (vertex-triangle) or the edges' cross
+//           product (edge-edge), else any vector perpendicular to the first edge, else +z
+//   depth   the distance ‖q‖ at x (m): this field, not a push, in these pairs
+//   target  0: left to the caller, who chooses the offset to keep
+// Each vertex keeps its max_pairs_per_feature nearest triangles and each edge as many nearest
+// higher-numbered edges. Vertex-triangle pairs come first, by vertex; then edge-edge, by the
+// first edge's lower vertex, then by that edge.
+//
+// Bounds b (#V, m), with reaches R (#V, m) and γ = bound_fraction:
+//   b_v = γ · min(R_v, ½ d_v, ½ min_{t ∋ v} d_t, ½ min_{e ∋ v} d_e)
+// d_v: distance from v to its nearest found triangle not on it; d_t: from triangle t to its
+// nearest found vertex not on it; d_e: from edge e to its nearest found edge sharing no vertex.
+// A pair is found when its boxes at x, grown by the reaches, overlap: a vertex's point by R_v,
+// a triangle's box by the largest R of its vertices, an edge's by the largest of its two. Every
+// found pair counts, the rest neighbours and pairs beyond max_pairs_per_feature included.
+// Why no crossing follows when every vertex moves (relative to a common motion) by at most its
+// bound along a straight line: the points of a feature are convex mixes of its vertices, so
+// they move no farther than its farthest vertex; a found pair at distance d has each side move
+// less than d/2, and a pair not found is farther apart than R_a + R_b while each side moves at
+// most γR. A common motion of everything changes no distance.
+//
+// Search: every triangle's and edge's box at x goes into a spatial grid, grown by a seed: each
+// vertex's seed is min(2R_v, its distance to the far edge of one of its triangles where a
+// triangle lies across that edge and the two are found), an upper bound on its nearest found
+// distance, so that a pair farther apart than the larger seed of its vertices can lower no
+// bound. The seeds follow the mesh's spacing, not the reach, so a query meets a few dozen boxes
+// on any resolution. Boxes grow by half the contact distance at least, for the pairs. Each
+// vertex looks up the triangles, and the edges whose lower vertex it is look up, together, the
+// higher-numbered edges. A candidate goes without an exact distance when its box gap alone puts
+// it beyond the contact distance and beyond what could lower its vertices' bounds.
+//
+// Bounded by design: the grids and buffers are O(features) and kept between calls; a query
+// looks at no more than max_met boxes. A query that meets more (a pile denser than any cloth:
+// hundreds of features in a reach) stops, and then freezes what it might have missed: its
+// vertices and those of every triangle whose grown box overlaps its query box get b = 0, so
+// every pair it did not examine moves only with the common motion (a triangle's grown box holds
+// its edges'). Queries run on the worker pool in fixed chunks merged in order; the nearest
+// distances are lowered with atomic minima, which give the same result in any order. So the
+// pairs and bounds never depend on the thread count.
+//
+// Vertices on no triangle get b = +∞. A reach that is negative or not a number counts as 0, one
+// beyond the diagonal of x's surface bounding box as that diagonal.
+class SelfContactProximity {
+ public:
+  static constexpr int max_pairs_per_feature = 32;
+  static constexpr int max_met = 512;
+  static constexpr double bound_fraction = 0.9;  // γ
+
+  // pool: where the queries run; null for WorkerPool::shared().
+  explicit SelfContactProximity(WorkerPool* pool = nullptr) : pool_(pool) {}
+
+  //   surface, rest      the surface and its rest neighbourhood (rest.find already called)
+  //   x                  #V by 3 positions at the start of the epoch (m), finite
+  //   reach              #V reaches R (m)
+  //   contact_distance   m: pairs closer than this are listed
+  //   pairs              out: the pairs, as above
+  //   bounds             out: #V bounds b (m)
+  void find(const SelfCollisionSurface& surface, const RestNeighbours& rest,
+            const Eigen::MatrixXd& x, const Eigen::VectorXd& reach, double contact_distance,
+            std::vector<SelfContactPair>& pairs, Eigen::VectorXd& bounds);
+
+  // Whether the last find() had a query meet more than max_met boxes (and so froze vertices).
+  bool saturated() const { return saturated_; }
+  // Memory held by the buffers (bytes).
+  std::size_t memory_bytes() const;
+
+ private:
+  // One feature's nearest pairs so far.
+  struct Kept {
+    std::vector<std::pair<double, int>> near;  // a max-heap of (distance, slot)
+    std::vector<SelfContactPair> staged;       // the slots, at most max_pairs_per_feature
+  };
+  struct Chunk {
+    std::vector<SelfContactPair> pairs;
+    std::vector<Kept> kept;                   // one per feature of the query
+    std::vector<int> owned;                   // the edges of an edge query
+    std::vector<double> ends;                 // their upper vertices' nearest so far (m)
+    std::vector<Eigen::AlignedBox3d> frozen;  // query boxes of the queries that stopped
+  };
+  // A triangle or an edge at x: its bare box, the largest reach of its vertices (m), and its
+  // vertices (an edge's third is −1), together so that a candidate costs a cache line or two.
+  struct Feature {
+    Eigen::AlignedBox3d box;
+    double reach;
+    int vertex[3];
+  };
+  WorkerPool& pool() const { return pool_ ? *pool_ : WorkerPool::shared(); }
+  void prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach);
+  // seed_[v]: an upper bound on v's nearest found distance, from its mesh neighbourhood alone.
+  void seed_vertex(int v);
+  void query_vertex(int v, Chunk& chunk);
+  // The edges whose lower vertex is v, against the higher-numbered edges.
+  void query_edges(int v, Chunk& chunk);
+  // Edges e < f: their distance lowers the four vertices' nearest (own0, own1 for e's, held
+  // locally), and the pair is offered to e's kept pairs.
+  void examine_edges(int e, int f, double& own0, double& own1, Kept& kept);
+  // Offers a pair at `distance` to a feature's nearest max_pairs_per_feature.
+  void stage(const SelfContactPair& pair, double distance, Kept& kept) const;
+  // Appends the kept pairs to `pairs`, in the order of the other feature's vertices.
+  void commit(Kept& kept, std::vector<SelfContactPair>& pairs) const;
+  void freeze_near_saturated_queries(double cell);
+  // The nearest found distance of vertex v so far (m); lowered, never raised, from any thread.
+  void lower(int v, double distance) {
+    std::atomic<double>& slot = nearest_[v];
+    double current = slot.load(std::memory_order_relaxed);
+    while (distance < current &&
+           !slot.compare_exchange_weak(current, distance, std::memory_order_relaxed)) {
+    }
+  }
+  double nearest(int v) const { return nearest_[v].load(std::memory_order_relaxed); }
+
+  WorkerPool* pool_;
+  // The call's inputs, for the queries.
+  const SelfCollisionSurface* surface_ = nullptr;
+  const RestNeighbours* rest_ = nullptr;
+  double contact_distance_ = 0.0;
+
+  std::vector<Eigen::Vector3d> points_;  // #V: x row by row, packed (m)
+  std::vector<double> reach_;            // #V: R, made safe (m)
+  std::vector<double> seed_;             // #V: min(2R_v, some found pair's distance) (m)
+  std::vector<Feature> triangles_, edges_;
+  // Grown by max(the largest seed of their vertices, contact_distance/2), for the grids.
+  std::vector<Eigen::AlignedBox3d> triangle_grown_, edge_grown_;
+  std::vector<double> extents_;
+  SpatialGrid triangle_grid_, edge_grid_, frozen_grid_;
+  // #V: min(seed, the nearest found distance): b_v = γ/2 × it.
+  std::unique_ptr<std::atomic<double>[]> nearest_;
+  std::size_t nearest_capacity_ = 0;
+  std::vector<Eigen::AlignedBox3d> frozen_boxes_;
+  std::vector<char> triangle_frozen_;  // #F
+  std::vector<Chunk> chunks_;
+  SharingPayoff payoff_, seed_payoff_, frozen_payoff_;
+  bool saturated_ = false;
+};
+
+// Moves p so that every vertex v with a finite bound satisfies ‖(p_v − x_v) − common‖ ≤ b_v, by
+// scaling that relative displacement down: p_v = x_v + common + s·(p_v − x_v − common), s < 1.
+// A bound that is negative or not a number counts as 0; a displacement that is not finite
+// becomes the common motion alone. O(#V), allocates nothing.
+//
+//   x       #V by 3 positions at the start of the epoch (m)
+//   common  the epoch's common motion (m)
+//   bounds  #V bounds (m), as SelfContactProximity::find gives them
+//   p       #V by 3 positions (m), changed in place
+// Returns how many vertices it moved.
+int clamp_to_bounds(const Eigen::MatrixXd& x, const Eigen::Vector3d& common,
+                    const Eigen::VectorXd& bounds, Eigen::MatrixXd& p);
+
+}  // namespace wobble
+
+#endif

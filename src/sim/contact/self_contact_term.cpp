@@ -1,0 +1,323 @@
+#include "sim/contact/self_contact_term.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "sim/contact/vertex_row.h"
+#include "sim/instruments/stopwatch.h"
+#include "sim/value_limits.h"
+
+namespace wobble {
+
+namespace {
+
+// Pairs closer than this many thicknesses in the rest shape are the mesh's own neighbourhood.
+constexpr double rest_skip_factor = 2.0;
+// A pair that starts closer than the thickness opens by this fraction of it a step: pushed out at
+// once it would leave with the whole shortfall as speed.
+constexpr double recovery_fraction = 0.1;
+// Reaches: this many times a vertex's predicted motion apart from the common motion.
+constexpr double reach_factor = 1.5;
+
+std::uint64_t pair_key(const SelfContactPair& pair) {
+  std::uint64_t key = pair.vertex_triangle ? 0x9e3779b97f4a7c15ull : 0xc2b2ae3d27d4eb4full;
+  for (const int v : pair.vertex) {
+    key ^= static_cast<std::uint64_t>(static_cast<std::uint32_t>(v)) + 0x9e3779b97f4a7c15ull +
+           (key << 6) + (key >> 2);
+    key *= 0xff51afd7ed558ccdull;
+  }
+  return key;
+}
+
+}  // namespace
+
+SelfContactTerm::SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders)
+    : rest_(&rest), colliders_(&colliders) {}
+
+void SelfContactTerm::build_surface() {
+  surface_ = SelfCollisionSurface(*rest_);
+  built_ = true;
+}
+
+void SelfContactTerm::set(const SelfCollisionParams& params) {
+  on_ = params.on;
+  params_ = params;
+  if (!on_) {
+    reset();
+    return;
+  }
+  if (!built_) build_surface();
+  const double kept = thickness_kept(params.thickness);
+  if (kept != thickness_) {
+    thickness_ = kept;
+    rest_neighbours_.find(surface_, rest_skip_factor * thickness_);
+    remembered_.clear();
+  }
+}
+
+double SelfContactTerm::thickness_kept(double asked) const {
+  if (!built_) return asked;
+  return std::min(asked, std::max(limits::self_collision_thickness.low, 1.5 * surface_.mean_edge));
+}
+
+void SelfContactTerm::set_base_diagonal(const Eigen::VectorXd& /*base*/,
+                                        const Eigen::VectorXd& inertia) {
+  inertia_ = inertia;
+}
+
+bool SelfContactTerm::reset() {
+  remembered_.clear();
+  pairs_.clear();
+  std::fill(in_contact_.begin(), in_contact_.end(), 0);
+  contact_count_ = clamped_ = repaired_ = epochs_ = 0;
+  return false;
+}
+
+bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd& first) {
+  if (!on_) return false;
+  epochs_ = clamped_ = repaired_ = 0;
+  detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
+  x_ = step.current;
+  start_epoch(step, first);
+  return false;
+}
+
+void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd& heading) {
+  const Stopwatch stopwatch;
+  const Eigen::Index n = x_.rows();
+  common_.setZero();
+  for (const int v : surface_.vertices)
+    common_ += vertex_row(heading, v) - vertex_row(x_, v);
+  if (!surface_.vertices.empty()) common_ /= static_cast<double>(surface_.vertices.size());
+  reach_.setZero(n);
+  for (const int v : surface_.vertices) {
+    const double wander = (vertex_row(heading, v) - vertex_row(x_, v) - common_).norm();
+    reach_(v) = std::max(thickness_, reach_factor * wander);
+  }
+  proximity_.find(surface_, rest_neighbours_, x_, reach_, contact_reach * thickness_, found_,
+                  bounds_);
+
+  pair_count_.assign(n, 0);
+  for (const SelfContactPair& pair : found_) {
+    for (int k = 0; k < 4; ++k) {
+      if (pair.beta[k] != 0.0) ++pair_count_[pair.vertex[k]];
+    }
+  }
+  const double mu = colliders_->friction();
+  pairs_.resize(found_.size());
+  for (std::size_t i = 0; i < found_.size(); ++i) {
+    Pair& pair = pairs_[i];
+    pair.features = found_[i];
+    // The gap to keep: the thickness, or a little more than the pair has if it starts closer.
+    pair.features.target = std::min(thickness_, found_[i].depth + recovery_fraction * thickness_);
+    double compliance = 0.0;
+    int most = 1;
+    for (int k = 0; k < 4; ++k) {
+      const int v = pair.features.vertex[k];
+      const double beta = pair.features.beta[k];
+      if (beta == 0.0) continue;
+      if (!step.pinned[v] && inertia_.size() == n) compliance += beta * beta / inertia_(v);
+      most = std::max(most, pair_count_[v]);
+    }
+    pair.stiffness = compliance > 0.0 ? gain / compliance : 0.0;
+    pair.key = pair_key(pair.features);
+    const auto remembered =
+        std::lower_bound(remembered_.begin(), remembered_.end(), std::make_pair(pair.key, -1.0));
+    pair.force =
+        remembered != remembered_.end() && remembered->first == pair.key ? remembered->second : 0.0;
+    pair.friction = mu * pair.force;
+  }
+  ++epochs_;
+  detection_ms_ += stopwatch.milliseconds();
+}
+
+double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
+                                  Eigen::Vector3d* slide) const {
+  const SelfContactPair& f = pair.features;
+  Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) {
+    q += f.beta[k] * vertex_row(p, f.vertex[k]);
+    if (slide) moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(x_, f.vertex[k]));
+  }
+  if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
+  return f.target - q.dot(f.normal);
+}
+
+void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& p,
+                                  Eigen::MatrixXd& rhs, double* energy) {
+  const Stopwatch stopwatch;
+  double sum = 0.0;
+  for (const Pair& pair : pairs_) {
+    if (!(pair.force > 0.0)) continue;
+    const Eigen::Vector3d force = pair.force * pair.features.normal;
+    for (int k = 0; k < 4; ++k) {
+      const double beta = pair.features.beta[k];
+      if (beta != 0.0) rhs.row(pair.features.vertex[k]) += beta * force.transpose();
+    }
+    // The work the force does against the pair's gap, for the convergence trace.
+    if (energy) sum -= pair.force * (pair.features.target - violation(pair, p, nullptr));
+  }
+  if (energy) *energy += sum;
+  solve_ms_ += stopwatch.milliseconds();
+}
+
+double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
+                                   Eigen::MatrixXd* gradient) const {
+  if (!on_) return 0.0;
+  // Huber's width: slides below it are held as by a stiff spring (static friction).
+  const double epsilon = 0.01 * thickness_;
+  double energy = 0.0;
+  for (const Pair& pair : pairs_) {
+    if (!(pair.stiffness > 0.0)) continue;
+    Eigen::Vector3d slide;
+    const double g = violation(pair, p, pair.friction > 0.0 ? &slide : nullptr);
+    const double pressed = std::max(0.0, g + pair.force / pair.stiffness);
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // −∂E/∂q, q the pair's Σβₖpₖ
+    if (pressed > 0.0) {
+      energy += 0.5 * pair.stiffness * pressed * pressed;
+      force = pair.stiffness * pressed * pair.features.normal;
+    }
+    if (pair.friction > 0.0) {
+      const double length = slide.norm();
+      if (length < epsilon) {
+        energy += pair.friction * length * length / (2.0 * epsilon);
+        force -= (pair.friction / epsilon) * slide;
+      } else {
+        energy += pair.friction * (length - 0.5 * epsilon);
+        force -= (pair.friction / length) * slide;
+      }
+    }
+    if (!gradient) continue;
+    for (int k = 0; k < 4; ++k) {
+      const double beta = pair.features.beta[k];
+      if (beta != 0.0) gradient->row(pair.features.vertex[k]) -= beta * force.transpose();
+    }
+  }
+  return energy;
+}
+
+int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
+  // One Gauss-Seidel sweep over the pairs: each pair short of its gap is pushed apart along its
+  // normal, its vertices weighted by inverse mass, and its closest points' slide over the step
+  // held back by Coulomb's μ times that push. The push also becomes the pair's force λ in the
+  // next right-hand sides (what would have moved free masses as far), so that the global step
+  // learns the contact instead of meeting it anew each iteration.
+  const double mu = colliders_->friction();
+  int pushed = 0;
+  for (Pair& pair : pairs_) {
+    if (!(pair.stiffness > 0.0)) continue;
+    Eigen::Vector3d slide;
+    const double g = violation(pair, p, mu > 0.0 ? &slide : nullptr);
+    if (!(g > 0.0)) continue;
+    const SelfContactPair& f = pair.features;
+    double weight = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      const int v = f.vertex[k];
+      if (f.beta[k] != 0.0 && !step.pinned[v]) weight += f.beta[k] * f.beta[k] / step.rest.m(v);
+    }
+    if (!(weight > 0.0)) continue;
+    Eigen::Vector3d push = (g / weight) * f.normal;
+    if (mu > 0.0) {
+      const double length = slide.norm();
+      if (length > 0.0) push -= (std::min(mu * g, length) / length / weight) * slide;
+    }
+    for (int k = 0; k < 4; ++k) {
+      const int v = f.vertex[k];
+      if (f.beta[k] == 0.0 || step.pinned[v]) continue;
+      p.row(v) += (f.beta[k] / step.rest.m(v)) * push.transpose();
+    }
+    pair.force += pair.stiffness * g;
+    ++pushed;
+  }
+  return pushed;
+}
+
+bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p) {
+  const Stopwatch stopwatch;
+  separate(step, p);
+  heading_ = p;
+  const int moved = clamp_to_bounds(x_, common_, bounds_, p);
+  clamped_ += moved;
+  solve_ms_ += stopwatch.milliseconds();
+  // The bounded iterate is free of crossings: the next epoch starts there, its reaches from where
+  // the solve was heading.
+  if (moved > 0 && epochs_ < max_epochs) {
+    x_ = p;
+    start_epoch(step, heading_);
+  }
+  return true;
+}
+
+void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
+  if (!on_) return;
+  const Stopwatch stopwatch;
+  // What the colliders' projection moved stays within the bounds too.
+  clamped_ += clamp_to_bounds(x_, common_, bounds_, next);
+  // The forces at the solved positions, for the next step's start (and L-BFGS's λ̄).
+  const double mu = colliders_->friction();
+  const Eigen::Index n = next.rows();
+  in_contact_.assign(n, 0);
+  contact_count_ = 0;
+  for (Pair& pair : pairs_) {
+    pair.friction = mu * pair.force;
+    if (!(pair.force > 0.0) && !(violation(pair, next, nullptr) > -0.01 * thickness_)) continue;
+    for (int k = 0; k < 4; ++k) {
+      const int v = pair.features.vertex[k];
+      if (pair.features.beta[k] != 0.0 && !in_contact_[v]) {
+        in_contact_[v] = 1;
+        ++contact_count_;
+      }
+    }
+  }
+  solve_ms_ += stopwatch.milliseconds();
+  // The last resort: a crossing the bounds did not prevent (a pinned vertex dragged through).
+  const Stopwatch guard;
+  inverse_mass_.resize(n);
+  for (Eigen::Index v = 0; v < n; ++v)
+    inverse_mass_(v) = step.pinned[v] ? 0.0 : 1.0 / step.rest.m(v);
+  put_back_.assign(n, 0);
+  repaired_ = guard_.undo_crossings(surface_, step.current, inverse_mass_, next, put_back_);
+  guard_ms_ = guard.milliseconds();
+}
+
+void SelfContactTerm::end_step() {
+  if (!on_) return;
+  remembered_.clear();
+  for (const Pair& pair : pairs_) {
+    if (pair.force > 0.0) remembered_.emplace_back(pair.key, pair.force);
+  }
+  std::sort(remembered_.begin(), remembered_.end());
+}
+
+const std::vector<char>& SelfContactTerm::contact_vertices() const {
+  static const std::vector<char> none;
+  return on_ ? in_contact_ : none;
+}
+
+void SelfContactTerm::report(std::vector<TermFigure>& figures) const {
+  if (!on_) return;
+  const char* term = name();
+  figures.push_back(TermFigure{term, "detection", "ms", detection_ms_});
+  figures.push_back(TermFigure{term, "solve", "ms", solve_ms_});
+  figures.push_back(TermFigure{term, "guard", "ms", guard_ms_});
+  figures.push_back(TermFigure{term, "pairs", "", static_cast<double>(pairs_.size())});
+  figures.push_back(TermFigure{term, "contacts", "", static_cast<double>(contact_count_)});
+  figures.push_back(TermFigure{term, "epochs", "", static_cast<double>(epochs_)});
+  figures.push_back(TermFigure{term, "bounded", "", static_cast<double>(clamped_)});
+  figures.push_back(TermFigure{term, "guard repairs", "", static_cast<double>(repaired_)});
+}
+
+std::size_t SelfContactTerm::memory_bytes() const {
+  const auto matrix = [](const Eigen::MatrixXd& m) { return m.size() * sizeof(double); };
+  return matrix(surface_.rest) + (surface_.triangles.size() + surface_.edges.size()) * sizeof(int) +
+         surface_.vertex_edges.memory_bytes() + surface_.vertex_triangles.memory_bytes() +
+         rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
+         matrix(x_) + (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
+         found_.capacity() * sizeof(SelfContactPair) + pairs_.capacity() * sizeof(Pair) +
+         pair_count_.capacity() * sizeof(int) +
+         remembered_.capacity() * sizeof(std::pair<std::uint64_t, double>) +
+         in_contact_.capacity() + put_back_.capacity();
+}
+
+}  // namespace wobble

@@ -1,0 +1,125 @@
+#ifndef WOBBLE_SIM_CONTACT_SELF_CONTACT_TERM_H
+#define WOBBLE_SIM_CONTACT_SELF_CONTACT_TERM_H
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "sim/contact/collider_contact.h"
+#include "sim/contact/self_collision.h"
+#include "sim/contact/self_contact_proximity.h"
+#include "sim/contact/self_crossing_guard.h"
+#include "sim/spring_network.h"
+#include "sim/terms/step_term.h"
+
+namespace wobble {
+
+// Self-contact as a term inside the solve: the surface (the render triangles F) kept
+// `thickness` apart from its own layers during the iterations, with Coulomb friction between
+// them, and no crossing by construction. Q is never touched. docs/method.md, "Self-contact".
+//
+// An epoch starts at positions x free of crossings (the step's pᵗ, or a clamped iterate):
+// SelfContactProximity lists the vertex-triangle and edge-edge pairs within 2·thickness and
+// gives each vertex a bound bᵥ on how far it may move from x (less the surface's common motion
+// ū) before anything could pass through anything else (Offset Geometric Contact's conservative
+// bounds, Chen et al. 2025). Reaches follow where the step is heading: 1.5 × each vertex's
+// predicted motion less ū, at least the thickness.
+//
+// Each pair keeps gᵖ(p) = thickness − (Σ βₖpₖ)·n ≤ 0, its normal n and closest points β fixed at
+// x, with a contact force λ ≥ 0 (N) in the right-hand side only (augmented Lagrangian, as
+// projective dynamics with frictional contact keeps its forces):
+//   local-global: each local step sets λ ← max(0, λ + κ g(p)) and adds λβₖn to vertex k, with
+//     κ = η/Σₖ(βₖ²/Wₖ)/(the most pairs one of its vertices has), Wₖ the vertex's inertia
+//     (1 + cΔt)mₖ/Δt²: a free layer's violation shrinks by 1 − η a step, whatever k;
+//   L-BFGS: the energy (κ/2) max(0, g + λ̄/κ)² with λ̄ from the last solve;
+// λ starts each step from the same pair's λ the step before (a resting pile's forces carry over),
+// and grows by at most κ·thickness within a step: while the bounds hold a pair still, its
+// violation would otherwise wind λ up iteration after iteration, and release it as a jump.
+// Friction: the closest points' slide s over the step in the tangent plane is opposed by up to
+// μλ (local-global: min(μλ, κ‖s‖)·ŝ; L-BFGS: μλ̄ times Huber's function of ‖s‖).
+// After every update of the iterate each vertex is moved back within its bound (limit_iterate);
+// when that moved any, a new epoch starts from the bounded iterate (at most max_epochs a step).
+// Pinned vertices follow their targets unbounded; the crossing guard (SelfCrossingGuard) after
+// the solve is the last resort for them and reports how many vertices it put back.
+class SelfContactTerm : public StepTerm {
+ public:
+  static constexpr double gain = 0.5;  // η
+  static constexpr int max_epochs = 3;
+  // Pairs are listed within this many thicknesses.
+  static constexpr double contact_reach = 2.0;
+
+  // Both must outlive it: `rest` the network (F and masses), `colliders` for μ.
+  SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders);
+
+  // On, off or a new thickness; the params must already be valid.
+  void set(const SelfCollisionParams& params);
+  bool on() const { return on_; }
+  // The gap kept (m): the asked thickness clamped to largest_self_collision_thickness.
+  double thickness_kept(double asked) const;
+
+  const char* name() const override { return "self-contact"; }
+  void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) override;
+  bool begin_step(const StepContext& step, const Eigen::MatrixXd& first) override;
+  bool in_solve() const override { return on_; }
+  void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
+                   double* energy) override;
+  double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
+                    Eigen::MatrixXd* gradient) const override;
+  bool limit_iterate(const StepContext& step, Eigen::MatrixXd& p) override;
+  void project(const StepContext& step, Eigen::MatrixXd& next) override;
+  void end_step() override;
+  bool reset() override;
+  bool in_contact() const override { return on_ && contact_count_ > 0; }
+  void report(std::vector<TermFigure>& figures) const override;
+
+  // Vertices with a pair pressing on them after the last step, and the same as #V flags.
+  int contact_count() const { return on_ ? contact_count_ : 0; }
+  const std::vector<char>& contact_vertices() const;
+  // Memory held (bytes), for the benchmark.
+  std::size_t memory_bytes() const;
+
+ private:
+  struct Pair {
+    SelfContactPair features;
+    double stiffness = 0.0;  // κ (N/m)
+    double force = 0.0;      // λ (N)
+    double friction = 0.0;   // μλ̄ lagged for L-BFGS (N)
+    std::uint64_t key = 0;
+  };
+  void build_surface();
+  // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
+  void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
+  // g(p) (m) and the closest points' slide in the tangent plane since x_ (m).
+  double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
+  // One sweep pushing the pairs of p apart; returns how many it pushed.
+  int separate(const StepContext& step, Eigen::MatrixXd& p);
+
+  const SpringNetwork* rest_;
+  const ColliderContact* colliders_;
+  bool on_ = false;
+  SelfCollisionParams params_;
+  double thickness_ = 0.0;
+  bool built_ = false;
+  SelfCollisionSurface surface_;
+  RestNeighbours rest_neighbours_;
+  SelfContactProximity proximity_;
+  SelfCrossingGuard guard_;
+  Eigen::VectorXd inertia_;   // #V: W (N/m)
+  Eigen::MatrixXd x_;         // #V by 3: where the epoch started
+  Eigen::MatrixXd heading_;   // #V by 3: an iterate before its bounds
+  Eigen::Vector3d common_ = Eigen::Vector3d::Zero();
+  Eigen::VectorXd reach_, bounds_;
+  std::vector<SelfContactPair> found_;
+  std::vector<Pair> pairs_;
+  std::vector<int> pair_count_;  // #V: pairs per vertex this epoch
+  std::vector<std::pair<std::uint64_t, double>> remembered_;  // (key, λ), sorted, last step's
+  std::vector<char> in_contact_, watched_, put_back_;
+  Eigen::VectorXd inverse_mass_;
+  int epochs_ = 0, clamped_ = 0, contact_count_ = 0, repaired_ = 0;
+  double detection_ms_ = 0.0, solve_ms_ = 0.0, guard_ms_ = 0.0;
+};
+
+}  // namespace wobble
+
+#endif
