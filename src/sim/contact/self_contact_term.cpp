@@ -86,6 +86,8 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
 void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd& heading) {
   const Stopwatch stopwatch;
   const Eigen::Index n = x_.rows();
+  // A new epoch within the step carries the forces its pairs have reached so far.
+  if (epochs_ > 0) end_step();
   common_.setZero();
   for (const int v : surface_.vertices)
     common_ += vertex_row(heading, v) - vertex_row(x_, v);
@@ -209,6 +211,8 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
     if (!(pair.stiffness > 0.0)) continue;
     Eigen::Vector3d slide;
     const double g = violation(pair, p, mu > 0.0 ? &slide : nullptr);
+    // λ follows the pair: up by what had to be pushed, down as the gap opens beyond its target.
+    pair.force = std::max(0.0, pair.force + pair.stiffness * g);
     if (!(g > 0.0)) continue;
     const SelfContactPair& f = pair.features;
     double weight = 0.0;
@@ -227,7 +231,6 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
       if (f.beta[k] == 0.0 || step.pinned[v]) continue;
       p.row(v) += (f.beta[k] / step.rest.m(v)) * push.transpose();
     }
-    pair.force += pair.stiffness * g;
     ++pushed;
   }
   return pushed;
