@@ -156,6 +156,8 @@ class Simulation {
   // The gap self-collision keeps (m): params().self_collision.thickness, clamped to what the
   // mesh can keep (largest_self_collision_thickness).
   double self_collision_thickness_kept() const;
+  // Memory self-contact holds (bytes): its surface, grids, pairs and buffers.
+  std::size_t self_contact_memory_bytes() const { return self_collision_.memory_bytes(); }
   // Simulated time (s): the sum of the accepted steps' Δt since the start or the last reset.
   double time() const { return time_; }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "sim/contact/self_collision_surface.h"
-#include "sim/contact/self_contact_detection.h"
+#include "sim/contact/self_contact_pair.h"
 #include "sim/contact/spatial_grid.h"
 #include "sim/parallel/worker_pool.h"
 

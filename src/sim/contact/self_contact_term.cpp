@@ -58,7 +58,7 @@ void SelfContactTerm::set(const SelfCollisionParams& params) {
 
 double SelfContactTerm::thickness_kept(double asked) const {
   if (!built_) return asked;
-  return std::min(asked, std::max(limits::self_collision_thickness.low, 1.5 * surface_.mean_edge));
+  return std::min(asked, largest_self_collision_thickness(surface_.mean_edge));
 }
 
 void SelfContactTerm::set_base_diagonal(const Eigen::VectorXd& /*base*/,
