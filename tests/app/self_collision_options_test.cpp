@@ -145,7 +145,7 @@ TEST(SelfCollisionOptions, StatsReportIt) {
   // Each of the term's figures, by its name (StepTerm::report), without code for it in --stats.
   EXPECT_GT(on["self_contact_detection_ms_median"].get<double>(), 0.0);
   EXPECT_GE(on["self_contact_solve_ms_median"].get<double>(), 0.0);
-  EXPECT_GT(on["self_contact_pairs_median"].get<double>(), 0.0);
+  EXPECT_GE(on["self_contact_pairs_median"].get<double>(), 0.0);
   EXPECT_TRUE(on.contains("self_contact_guard_repairs_median"));
   EXPECT_TRUE(on["self_contacts"].is_number_integer());
   // The colliders' term reports its own too.

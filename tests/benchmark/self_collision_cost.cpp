@@ -107,8 +107,8 @@ double jitter(Eigen::Index i, int salt) {
 
 // A free n×n cloth (1 m, no bend springs) standing on its lower edge 5 cm above the ground,
 // pleated along x (5 cm deep, 25 cm apart) and jittered across its plane by a fifth of an edge,
-// thrown down at 2.5 m/s with a sideways push of 0.8 m/s and a jittered velocity across its
-// plane: it folds over itself into a pile. 15 iterations, thickness 5 mm, friction 0.4, damping
+// thrown down at 2.5 m/s with a velocity across its plane that varies along it (and jitter), so
+// that it buckles and folds over itself into a pile. 15 iterations, thickness 5 mm, friction 0.4, damping
 // 0.2 /s. Up to 90 frames, or fewer when they pass `budget_s` of stepping; in a child process of
 // its own, so that its peak memory is its own. Crossings are counted (tests/sim/mesh_crossings.h)
 // after each of the frames.
@@ -129,9 +129,11 @@ PileRun run_pile(int n, bool on, const char* solver, double budget_s) {
       const double x = cloth.V(i, 0), z = cloth.V(i, 2);
       cloth.V(i, 1) = 0.55 - z;
       cloth.V(i, 2) = 0.05 * std::sin(2.0 * pi * x / 0.25) + 0.2 * edge * jitter(i, 1);
-      velocity(i, 0) = 0.8;
+      // Buckling across its plane, more the higher up (as tests/sim/folding_scenes.cpp's pile).
+      const double height = 0.55 - z;
+      velocity(i, 0) = 0.3 * height * std::cos(2.0 * pi * x);
       velocity(i, 1) = -2.5;
-      velocity(i, 2) = 0.3 * jitter(i, 2);
+      velocity(i, 2) = 1.2 * height * std::sin(3.0 * pi * x + 0.5) + 0.3 * jitter(i, 2);
     }
     SimulationParams params;
     params.k = 1000.0;

@@ -1,117 +1,27 @@
-// Self-contact proximity: the pairs closer than the contact distance, and the bounds on each
-// vertex's motion that keep the surface from passing through itself.
+// Self-contact proximity: the pairs closer than the contact distance, the bounds on each
+// vertex's motion that keep the surface from passing through itself, and clamping to them.
 #include "sim/contact/self_contact_proximity.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <tuple>
 #include <vector>
 
 #include "mesh_crossings.h"
-#include "sim/contact/closest_points.h"
-#include "sim/contact/vertex_row.h"
+#include "self_contact_proximity_meshes.h"
 
 namespace {
 
 using wobble::SelfContactPair;
 using wobble::SelfContactProximity;
 using wobble::vertex_row;
+using namespace wobble::testing;
 constexpr double gamma_ = SelfContactProximity::bound_fraction;
-
-struct Mesh {
-  std::vector<Eigen::Vector3d> vertices;
-  std::vector<Eigen::Vector3i> triangles;
-  // An n×n grid of spacing h in a plane z = const, from `origin`, two triangles a cell.
-  void add_grid(int n, double h, const Eigen::Vector3d& origin) {
-    const int first = static_cast<int>(vertices.size());
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j)
-        vertices.push_back(origin + Eigen::Vector3d(j * h, i * h, 0.0));
-    }
-    for (int i = 0; i + 1 < n; ++i) {
-      for (int j = 0; j + 1 < n; ++j) {
-        const int a = first + i * n + j;
-        triangles.emplace_back(a, a + 1, a + n + 1);
-        triangles.emplace_back(a, a + n + 1, a + n);
-      }
-    }
-  }
-  void add_triangle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-    const int first = static_cast<int>(vertices.size());
-    vertices.insert(vertices.end(), {a, b, c});
-    triangles.emplace_back(first, first + 1, first + 2);
-  }
-  Eigen::MatrixXd x() const {
-    Eigen::MatrixXd V(vertices.size(), 3);
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-      V.row(i) = vertices[i].transpose();
-    return V;
-  }
-  wobble::SpringNetwork network() const {
-    wobble::SpringNetwork network;
-    network.V = x();
-    network.F.resize(triangles.size(), 3);
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-      network.F.row(t) = triangles[t].transpose();
-    network.m = Eigen::VectorXd::Ones(network.V.rows());
-    return network;
-  }
-};
-
-// A mesh's surface, its rest neighbours within `rest_reach` of its own positions (0: none), and
-// find()'s answer at those positions.
-struct Found {
-  wobble::SelfCollisionSurface surface;
-  wobble::RestNeighbours rest;
-  Eigen::MatrixXd x;
-  std::vector<SelfContactPair> pairs;
-  Eigen::VectorXd bounds;
-  Found(const Mesh& mesh, const Eigen::VectorXd& reach, double contact_distance,
-        double rest_reach = 0.0, wobble::WorkerPool* pool = nullptr)
-      : surface(mesh.network()), x(mesh.x()) {
-    rest.find(surface, rest_reach);
-    SelfContactProximity proximity(pool);
-    proximity.find(surface, rest, x, reach, contact_distance, pairs, bounds);
-  }
-};
-
-Eigen::VectorXd constant_reach(const Mesh& mesh, double r) {
-  return Eigen::VectorXd::Constant(mesh.vertices.size(), r);
-}
-
-double vertex_triangle_distance(const Eigen::MatrixXd& x, int v, const Eigen::Vector3i& t) {
-  const Eigen::Vector3d p = vertex_row(x, v), a = vertex_row(x, t(0)), b = vertex_row(x, t(1)),
-                        c = vertex_row(x, t(2));
-  const Eigen::Vector3d alpha = wobble::closest_on_triangle(p, a, b, c);
-  return (p - alpha(0) * a - alpha(1) * b - alpha(2) * c).norm();
-}
-
-double edge_edge_distance(const Eigen::MatrixXd& x, int p0, int p1, int q0, int q1) {
-  const Eigen::Vector3d x0 = vertex_row(x, p0), x1 = vertex_row(x, p1), y0 = vertex_row(x, q0),
-                        y1 = vertex_row(x, q1);
-  const Eigen::Vector2d su = wobble::closest_on_segments(x0, x1, y0, y1);
-  return ((1.0 - su(0)) * x0 + su(0) * x1 - (1.0 - su(1)) * y0 - su(1) * y1).norm();
-}
-
-bool share_vertex(const SelfContactPair& pair) {
-  const int first = pair.vertex_triangle ? 1 : 2;
-  for (int i = 0; i < first; ++i) {
-    for (int j = first; j < 4; ++j) {
-      if (pair.vertex[i] == pair.vertex[j]) return true;
-    }
-  }
-  return false;
-}
-
-// A probe triangle whose corner `tip` points down at the rest, its other corners far above.
-void add_probe(Mesh& mesh, const Eigen::Vector3d& tip) {
-  mesh.add_triangle(tip, tip + Eigen::Vector3d(0.1, 0.0, 0.5),
-                    tip + Eigen::Vector3d(0.0, 0.1, 0.5));
-}
 
 TEST(SelfContactProximity, AVertexNearATriangleIsOnePairWithItsClosestPoint) {
   for (const double height : {0.004, 0.006}) {
@@ -236,22 +146,51 @@ TEST(SelfContactProximity, AFarVertexMayMoveItsReach) {
   EXPECT_EQ(found.bounds(6), std::numeric_limits<double>::infinity());
 }
 
+// Reaches that differ: a vertex with a long reach 4 mm above a triangle whose corners have short
+// ones, then the other way round, beside a far grid of short reaches that sets the common search
+// floor low. Whichever side reaches, the pair counts for both, at its 4 mm.
+TEST(SelfContactProximity, ALongReachOnEitherSideFindsThePair) {
+  for (const bool probe_reaches : {true, false}) {
+    Mesh mesh;
+    mesh.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    add_probe(mesh, {0.2, 0.3, 0.004});
+    mesh.add_grid(5, 0.05, Eigen::Vector3d(5, 5, 5));
+    Eigen::VectorXd reach = constant_reach(mesh, 0.001);
+    for (int v = 0; v < 3; ++v)
+      reach(probe_reaches ? 3 : v) = 0.01;
+    const Found found(mesh, reach, 0.002);
+    EXPECT_TRUE(found.pairs.empty());  // 4 mm: beyond the contact distance
+    // Half the 4 mm, or the vertex's own 1 mm reach where that is less.
+    EXPECT_NEAR(found.bounds(3), gamma_ * (probe_reaches ? 0.002 : 0.001), 1e-15);
+    EXPECT_NEAR(found.bounds(0), gamma_ * (probe_reaches ? 0.001 : 0.002), 1e-15);
+  }
+}
+
 // Two jittered parallel 6×6 grids a few mm apart with random reaches: every pair that shares no
 // vertex (rest neighbours within each grid included) stays apart however each vertex moves within
 // its bound, and the bounds are the formula's, by brute force.
 TEST(SelfContactProximity, BoundsKeepEveryPairApart) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> jitter(-0.001, 0.001), reach_of(0.0, 0.012);
-  for (int trial = 0; trial < 5; ++trial) {
+  std::uniform_int_distribution<int> one_in(0, 6);
+  for (int trial = 0; trial < 8; ++trial) {
+    // Odd trials: mostly 1 mm reaches and a few of 12 mm, layers 5 mm apart, so that the search
+    // must reach farther around some vertices than around most.
+    const bool mixed = trial % 2 == 1;
     Mesh mesh;
     mesh.add_grid(6, 0.01, Eigen::Vector3d::Zero());
-    mesh.add_grid(6, 0.01, Eigen::Vector3d(0.003, 0.004, 0.004));
+    mesh.add_grid(6, 0.01, Eigen::Vector3d(0.003, 0.004, mixed ? 0.005 : 0.004));
     for (Eigen::Vector3d& v : mesh.vertices)
       v += Eigen::Vector3d(jitter(random), jitter(random), jitter(random));
     Eigen::VectorXd reach(mesh.vertices.size());
-    for (Eigen::Index v = 0; v < reach.size(); ++v)
-      reach(v) = v % 7 == 0 ? 0.0 : reach_of(random);
-    const Found found(mesh, reach, 0.004, 0.015);
+    for (Eigen::Index v = 0; v < reach.size(); ++v) {
+      if (mixed) {
+        reach(v) = one_in(random) == 0 ? 0.012 : 0.001;
+      } else {
+        reach(v) = v % 7 == 0 ? 0.0 : reach_of(random);
+      }
+    }
+    const Found found(mesh, reach, mixed ? 0.003 : 0.004, 0.015);
     const Eigen::VectorXd& b = found.bounds;
     // The formula: min(2R_v, each found pair's distance) per vertex, then γ/2 of it.
     Eigen::VectorXd nearest = 2.0 * reach;
@@ -291,7 +230,7 @@ TEST(SelfContactProximity, BoundsKeepEveryPairApart) {
         ++pairs;
       }
     }
-    EXPECT_GT(pairs, 1000) << "the reaches should find many pairs";
+    EXPECT_GT(pairs, mixed ? 200 : 1000) << "the reaches should find many pairs";
     // The same distances by the same formulas: equal to rounding.
     for (int v = 0; v < found.x.rows(); ++v)
       EXPECT_NEAR(b(v), 0.5 * gamma_ * nearest(v), 1e-15) << v;
@@ -355,102 +294,6 @@ TEST(SelfContactProximity, ClampLeavesFreeVerticesAndSanitizesBounds) {
   EXPECT_EQ(p.row(0), Eigen::RowVector3d(1, 1, 1));  // no bound: untouched
   EXPECT_EQ(p.row(1), Eigen::RowVector3d(1, 1, 0));  // a bound of 0: the common motion alone
   EXPECT_EQ(p.row(2), Eigen::RowVector3d(1, 1, 0));
-}
-
-// An accordion of rows × rows vertices: panels 2 mm apart, each 4 cm tall, jittered.
-Mesh accordion(int rows, unsigned seed) {
-  Mesh mesh;
-  mesh.add_grid(rows, 0.01, Eigen::Vector3d::Zero());
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> jitter(-0.0005, 0.0005);
-  for (int v = 0; v < static_cast<int>(mesh.vertices.size()); ++v) {
-    const int i = v / rows, j = v % rows;
-    mesh.vertices[v] = Eigen::Vector3d(0.002 * j + jitter(random), 0.01 * i + jitter(random),
-                                       (j % 2 ? 0.02 : -0.02) + jitter(random));
-  }
-  return mesh;
-}
-
-bool same(const std::vector<SelfContactPair>& a, const std::vector<SelfContactPair>& b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t k = 0; k < a.size(); ++k) {
-    if (a[k].vertex_triangle != b[k].vertex_triangle || a[k].depth != b[k].depth ||
-        a[k].normal != b[k].normal)
-      return false;
-    for (int i = 0; i < 4; ++i) {
-      if (a[k].vertex[i] != b[k].vertex[i] || a[k].beta[i] != b[k].beta[i]) return false;
-    }
-  }
-  return true;
-}
-
-TEST(SelfContactProximity, SameResultsOnOneAndSeveralThreads) {
-  const Mesh mesh = accordion(30, 3);
-  wobble::WorkerPool one(1), several(4);
-  const Eigen::VectorXd reach = constant_reach(mesh, 0.005);
-  const Found alone(mesh, reach, 0.005, 0.0, &one);
-  ASSERT_GT(alone.pairs.size(), 1000u);
-  for (int run = 0; run < 8; ++run) {
-    const Found shared(mesh, reach, 0.005, 0.0, &several);
-    EXPECT_TRUE(same(alone.pairs, shared.pairs)) << run;
-    EXPECT_EQ(alone.bounds, shared.bounds) << run;
-  }
-  EXPECT_GT(several.helper_tasks(), 0) << "the helpers should have taken part";
-}
-
-// A 60×60 grid with every vertex at one point: every query meets hundreds of features, stops,
-// and freezes them; the pairs stay at most 32 a feature and the buffers O(features).
-TEST(SelfContactProximity, ACoincidentGridIsBoundedAndFrozen) {
-  Mesh mesh;
-  mesh.add_grid(60, 0.01, Eigen::Vector3d::Zero());
-  for (Eigen::Vector3d& v : mesh.vertices)
-    v = Eigen::Vector3d(0.1, 0.2, 0.3);
-  const wobble::SelfCollisionSurface surface(mesh.network());
-  wobble::RestNeighbours rest;
-  rest.find(surface, 0.0);
-  wobble::WorkerPool one(1), several(3);
-  SelfContactProximity proximity(&several), alone(&one);
-  std::vector<SelfContactPair> pairs, pairs_alone;
-  Eigen::VectorXd bounds, bounds_alone;
-  const Eigen::VectorXd reach = constant_reach(mesh, 0.01);
-  proximity.find(surface, rest, mesh.x(), reach, 0.005, pairs, bounds);
-  EXPECT_TRUE(proximity.saturated());
-  EXPECT_EQ(bounds.maxCoeff(), 0.0);
-  const std::size_t features = surface.vertices.size() + surface.edges.rows();
-  EXPECT_LE(pairs.size(), SelfContactProximity::max_pairs_per_feature * features);
-  for (const SelfContactPair& pair : pairs)
-    ASSERT_NEAR(pair.normal.norm(), 1.0, 1e-12) << "a stable normal at distance 0";
-  // The chunks' pairs (at most 32 a feature, with a vector's doubling), and a kilobyte a
-  // feature for the grids and boxes: O(features), where all pairs would be 3600 × 7000.
-  const std::size_t memory = proximity.memory_bytes();
-  EXPECT_LT(memory,
-            features *
-                (2 * SelfContactProximity::max_pairs_per_feature * sizeof(SelfContactPair) + 1000));
-  proximity.find(surface, rest, mesh.x(), reach, 0.005, pairs, bounds);
-  EXPECT_EQ(proximity.memory_bytes(), memory) << "warmed up: the buffers do not grow";
-  alone.find(surface, rest, mesh.x(), reach, 0.005, pairs_alone, bounds_alone);
-  EXPECT_TRUE(same(pairs, pairs_alone));
-}
-
-// A probe 3 mm above a stack of 600 coincident triangles: its query stops before it has seen
-// them all, so it is frozen (b = 0) rather than trusted with half of 3 mm; far away, a triangle
-// keeps its reach.
-TEST(SelfContactProximity, AQueryThatStopsFreezesItsNeighbourhood) {
-  Mesh mesh;
-  for (int k = 0; k < 600; ++k)
-    mesh.add_triangle({0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0});
-  add_probe(mesh, {0.002, 0.002, 0.003});
-  mesh.add_triangle({1, 1, 1}, {1.01, 1, 1}, {1, 1.01, 1});
-  const Found found(mesh, constant_reach(mesh, 0.01), 0.005);
-  EXPECT_EQ(found.bounds(1800), 0.0);
-  for (int v = 1803; v < 1806; ++v)
-    EXPECT_NEAR(found.bounds(v), gamma_ * 0.01, 1e-15);
-  // With fewer than max_met triangles below, the probe is trusted with half its distance.
-  Mesh few;
-  for (int k = 0; k < 100; ++k)
-    few.add_triangle({0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0});
-  add_probe(few, {0.002, 0.002, 0.003});
-  EXPECT_NEAR(Found(few, constant_reach(few, 0.01), 0.005).bounds(300), gamma_ * 0.0015, 1e-15);
 }
 
 }  // namespace

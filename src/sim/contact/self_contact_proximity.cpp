@@ -3,9 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <tuple>
 
-#include "sim/contact/closest_points.h"
 #include "sim/contact/vertex_row.h"
 
 namespace wobble {
@@ -18,6 +16,14 @@ constexpr int chunks_per_kind = 64;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
+// The value a quarter of `values` are above (0 for none); reorders them.
+double upper_quartile(std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  const auto at = values.begin() + static_cast<std::ptrdiff_t>(3 * values.size() / 4);
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
+
 struct Range {
   int first, last;
 };
@@ -26,17 +32,6 @@ Range chunk_range(int count, int piece) {
   const long long n = count;
   return {static_cast<int>(n * piece / chunks_per_kind),
           static_cast<int>(n * (piece + 1) / chunks_per_kind)};
-}
-
-Eigen::AlignedBox3d grown(Eigen::AlignedBox3d box, double by) {
-  box.min().array() -= by;
-  box.max().array() += by;
-  return box;
-}
-
-// How far apart two boxes are along each axis (0 where they overlap on it).
-inline Eigen::Array3d box_gap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
-  return (a.min().array() - b.max().array()).max(b.min().array() - a.max().array()).max(0.0);
 }
 
 // Whether a triangle other than `t` holds both a and b and not v.
@@ -61,13 +56,6 @@ bool has_triangle_across(const SelfCollisionSurface& surface, int a, int b, int 
   return false;
 }
 
-// A normal for two features that touch: the first of these that has a direction.
-Eigen::Vector3d touching_normal(const Eigen::Vector3d& across, const Eigen::Vector3d& along) {
-  if (across.squaredNorm() > 0.0) return across.normalized();
-  if (along.squaredNorm() > 0.0) return along.unitOrthogonal();
-  return Eigen::Vector3d::UnitZ();
-}
-
 }  // namespace
 
 void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestNeighbours& rest,
@@ -78,34 +66,66 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   rest_ = &rest;
   contact_distance_ = contact_distance > 0.0 ? contact_distance : 0.0;
   prepare(x, reach);
+  const int vertex_count = static_cast<int>(surface.vertices.size());
 
+  // A pair can lower no bound unless it is closer than the largest of its vertices' needs (the
+  // seeds, an upper bound on each nearest), and is listed only closer than the contact distance:
+  // the query box and the box in the grid must together grow by that much. The query side takes
+  // a common floor W (most needs, and the contact distance), the grid side only a need's excess
+  // over W: most boxes in the grid stay bare, and a query meets far fewer than with both grown.
+  scratch_.clear();
+  for (const int v : surface.vertices)
+    scratch_.push_back(seed_[v]);
+  vertex_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
+  const int triangle_count = static_cast<int>(triangles_.size());
+  triangle_grown_.resize(triangle_count);
+  scratch_.resize(triangle_count);
+  for (int t = 0; t < triangle_count; ++t) {
+    const int* corner = triangles_[t].vertex;
+    const double need = std::max(std::max(seed_[corner[0]], seed_[corner[1]]), seed_[corner[2]]);
+    triangle_grown_[t] = grown(triangles_[t].box, std::max(need - vertex_floor_, 0.0));
+    scratch_[t] = triangle_grown_[t].sizes().maxCoeff();
+  }
   // Cells the size of most boxes: each box covers a few cells, each cell holds a few boxes.
   double cell = std::max(surface.mean_edge, contact_distance_);
-  if (!extents_.empty()) {
-    const auto quartile = extents_.begin() + static_cast<std::ptrdiff_t>(3 * extents_.size() / 4);
-    std::nth_element(extents_.begin(), quartile, extents_.end());
-    if (std::isfinite(*quartile) && *quartile > 0.0) cell = *quartile;
-  }
+  const double typical = upper_quartile(scratch_);
+  if (std::isfinite(typical) && typical > 0.0) cell = typical;
   triangle_grid_.build(triangle_grown_, cell);
-  edge_grid_.build(edge_grown_, cell);
 
   chunks_.resize(2 * chunks_per_kind);
-  const int vertex_count = static_cast<int>(surface.vertices.size());
-  auto task = [&](int index) {
-    Chunk& chunk = chunks_[index];
-    chunk.pairs.clear();
-    chunk.frozen.clear();
-    const bool vertices = index < chunks_per_kind;
-    const Range range = chunk_range(vertex_count, index % chunks_per_kind);
-    for (int k = range.first; k < range.last; ++k) {
-      if (vertices) {
-        query_vertex(surface.vertices[k], chunk);
-      } else {
-        query_edges(surface.vertices[k], chunk);
+  const auto run = [&](bool vertices) {
+    auto task = [&](int piece) {
+      Chunk& chunk = chunks_[vertices ? piece : chunks_per_kind + piece];
+      chunk.pairs.clear();
+      chunk.frozen.clear();
+      const Range range = chunk_range(vertex_count, piece);
+      for (int k = range.first; k < range.last; ++k) {
+        if (vertices) {
+          query_vertex(surface.vertices[k], chunk);
+        } else {
+          query_edges(surface.vertices[k], chunk);
+        }
       }
-    }
+    };
+    pool().run(chunks_per_kind, task, vertices ? &vertex_payoff_ : &edge_payoff_);
   };
-  pool().run(2 * chunks_per_kind, task, &payoff_);
+  run(true);
+
+  // The vertex-triangle pairs have lowered the needs (in a pile, to the next layer's distance):
+  // the edges search with those, taken now so that no query depends on another's timing.
+  const int edge_count = static_cast<int>(edges_.size());
+  scratch_.clear();
+  for (const int v : surface.vertices)
+    scratch_.push_back(nearest(v));
+  edge_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
+  edge_need_.resize(edge_count);
+  edge_grown_.resize(edge_count);
+  for (int e = 0; e < edge_count; ++e) {
+    edge_need_[e] = std::max(nearest(edges_[e].vertex[0]), nearest(edges_[e].vertex[1]));
+    edge_grown_[e] = grown(edges_[e].box, std::max(edge_need_[e] - edge_floor_, 0.0));
+  }
+  edge_grid_.build(edge_grown_, cell);
+  run(false);
 
   pairs.clear();
   frozen_boxes_.clear();
@@ -126,9 +146,9 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
   const int n = static_cast<int>(x.rows());
   // Packed rows: a column-major x would cost three cache lines a vertex in the queries.
   points_.resize(n);
-  Eigen::AlignedBox3d whole;
   for (int v = 0; v < n; ++v)
     points_[v] = vertex_row(x, v);
+  Eigen::AlignedBox3d whole;
   for (const int v : surface.vertices)
     whole.extend(points_[v]);
   const double largest = whole.isEmpty() ? 0.0 : whole.diagonal().norm();
@@ -137,8 +157,24 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
     const double r = v < reach.size() ? reach(v) : 0.0;
     reach_[v] = r > 0.0 ? std::min(r, largest) : 0.0;
   }
-  // A pair lowers no bound unless it is closer than the largest seed of its vertices, so the
-  // boxes need only grow by the seeds, which follow the mesh's spacing rather than the reach.
+  const auto feature = [&](std::initializer_list<int> vertices) {
+    Feature f{Eigen::AlignedBox3d(), 0.0, {-1, -1, -1}};
+    int k = 0;
+    for (const int v : vertices) {
+      f.box.extend(points_[v]);
+      f.reach = std::max(f.reach, reach_[v]);
+      f.vertex[k++] = v;
+    }
+    return f;
+  };
+  triangles_.resize(surface.triangles.rows());
+  for (std::size_t t = 0; t < triangles_.size(); ++t)
+    triangles_[t] =
+        feature({surface.triangles(t, 0), surface.triangles(t, 1), surface.triangles(t, 2)});
+  edges_.resize(surface.edges.rows());
+  for (std::size_t e = 0; e < edges_.size(); ++e)
+    edges_[e] = feature({surface.edges(e, 0), surface.edges(e, 1)});
+
   seed_.resize(n);
   const int vertex_count = static_cast<int>(surface.vertices.size());
   auto seed_task = [&](int piece) {
@@ -153,38 +189,6 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
   }
   for (const int v : surface.vertices)
     nearest_[v].store(seed_[v], std::memory_order_relaxed);
-
-  const double half_contact = 0.5 * contact_distance_;
-  const auto feature = [&](std::initializer_list<int> vertices, Feature& f, double& seed) {
-    f = Feature{Eigen::AlignedBox3d(), 0.0, {-1, -1, -1}};
-    seed = half_contact;  // so that the grids also meet every contact pair
-    int k = 0;
-    for (const int v : vertices) {
-      f.box.extend(points_[v]);
-      f.reach = std::max(f.reach, reach_[v]);
-      seed = std::max(seed, seed_[v]);
-      f.vertex[k++] = v;
-    }
-  };
-  const int triangle_count = static_cast<int>(surface.triangles.rows());
-  triangles_.resize(triangle_count);
-  triangle_grown_.resize(triangle_count);
-  extents_.resize(triangle_count);
-  for (int t = 0; t < triangle_count; ++t) {
-    double seed;
-    feature({surface.triangles(t, 0), surface.triangles(t, 1), surface.triangles(t, 2)},
-            triangles_[t], seed);
-    triangle_grown_[t] = grown(triangles_[t].box, seed);
-    extents_[t] = triangle_grown_[t].sizes().maxCoeff();
-  }
-  const int edge_count = static_cast<int>(surface.edges.rows());
-  edges_.resize(edge_count);
-  edge_grown_.resize(edge_count);
-  for (int e = 0; e < edge_count; ++e) {
-    double seed;
-    feature({surface.edges(e, 0), surface.edges(e, 1)}, edges_[e], seed);
-    edge_grown_[e] = grown(edges_[e].box, seed);
-  }
 }
 
 void SelfContactProximity::seed_vertex(int v) {
@@ -212,194 +216,47 @@ void SelfContactProximity::seed_vertex(int v) {
   seed_[v] = seed;
 }
 
-void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
-  const Eigen::Vector3d& p = points_[v];
-  const Eigen::AlignedBox3d point(p);
-  const double r = reach_[v], c2 = contact_distance_ * contact_distance_;
-  const Eigen::AlignedBox3d box = grown(point, std::max(seed_[v], 0.5 * contact_distance_));
-  double own = nearest(v);  // never below v's shared value, so safe to skip against
-  if (chunk.kept.empty()) chunk.kept.resize(1);
-  int met = 0;
-  triangle_grid_.for_each_overlapping(box, [&](int t) {
-    if (++met > max_met) {
-      chunk.frozen.push_back(box);
-      return false;
-    }
-    const Feature& triangle = triangles_[t];
-    const int a = triangle.vertex[0], b = triangle.vertex[1], c = triangle.vertex[2];
-    if (v == a || v == b || v == c) return true;
-    const Eigen::Array3d gap = box_gap(point, triangle.box);
-    const bool found = (gap <= r + triangle.reach).all();
-    const double low2 = gap.matrix().squaredNorm();  // the distance is no less than its root
-    if (!(low2 < c2)) {
-      if (!found) return true;
-      const double limit = std::max(std::max(own, nearest(a)), std::max(nearest(b), nearest(c)));
-      if (low2 >= limit * limit) return true;
-    }
-    const Eigen::Vector3d &xa = points_[a], &xb = points_[b], &xc = points_[c];
-    const Eigen::Vector3d alpha = closest_on_triangle(p, xa, xb, xc);
-    const Eigen::Vector3d q = p - alpha(0) * xa - alpha(1) * xb - alpha(2) * xc;
-    const double distance = q.norm();
-    if (found) {
-      own = std::min(own, distance);
-      lower(a, distance);
-      lower(b, distance);
-      lower(c, distance);
-    }
-    if (distance * distance < c2 && !rest_->vertex_triangle(v, t)) {
-      SelfContactPair pair{{v, a, b, c}, {1.0, -alpha(0), -alpha(1), -alpha(2)}, {}, 0.0, distance,
-                           true};
-      pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)
-                                   : touching_normal((xb - xa).cross(xc - xa), xb - xa);
-      stage(pair, distance, chunk.kept[0]);
-    }
-    return true;
-  });
-  lower(v, own);
-  commit(chunk.kept[0], chunk.pairs);
-}
-
-void SelfContactProximity::query_edges(int v, Chunk& chunk) {
-  // The edges whose lower vertex is v, in one look at the grid over their boxes' union: they
-  // overlap, so that costs much less than a look for each.
-  const CompressedRows& rows = surface_->vertex_edges;
-  chunk.owned.clear();
-  chunk.ends.clear();
-  Eigen::AlignedBox3d box;
-  for (int k = rows.begin(v); k < rows.end(v); ++k) {
-    const int e = rows.ids[k];  // ascending
-    if (edges_[e].vertex[0] != v) continue;
-    chunk.owned.push_back(e);
-    chunk.ends.push_back(nearest(edges_[e].vertex[1]));
-    box.extend(edge_grown_[e]);
-  }
-  const int count = static_cast<int>(chunk.owned.size());
-  if (count == 0) return;
-  if (static_cast<int>(chunk.kept.size()) < count) chunk.kept.resize(count);
-  double own = nearest(v);
-  int met = 0;
-  edge_grid_.for_each_overlapping(box, [&](int f) {
-    if (++met > max_met) {
-      chunk.frozen.push_back(box);
-      return false;
-    }
-    // Each pair once, from its lower edge.
-    for (int k = 0; k < count && chunk.owned[k] < f; ++k)
-      examine_edges(chunk.owned[k], f, own, chunk.ends[k], chunk.kept[k]);
-    return true;
-  });
-  lower(v, own);
-  for (int k = 0; k < count; ++k) {
-    lower(edges_[chunk.owned[k]].vertex[1], chunk.ends[k]);
-    commit(chunk.kept[k], chunk.pairs);
-  }
-}
-
-void SelfContactProximity::examine_edges(int e, int f, double& own0, double& own1, Kept& kept) {
-  const Feature &edge = edges_[e], &other = edges_[f];
-  const int p0 = edge.vertex[0], p1 = edge.vertex[1], q0 = other.vertex[0], q1 = other.vertex[1];
-  if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return;
-  const Eigen::Array3d gap = box_gap(edge.box, other.box);
-  const bool found = (gap <= edge.reach + other.reach).all();
-  const double low2 = gap.matrix().squaredNorm();  // the distance is no less than its root
-  const double c2 = contact_distance_ * contact_distance_;
-  if (!(low2 < c2)) {
-    if (!found) return;
-    // Too far to lower any of the four: no exact distance needed.
-    const double limit = std::max(std::max(own0, own1), std::max(nearest(q0), nearest(q1)));
-    if (low2 >= limit * limit) return;
-  }
-  const Eigen::Vector3d &x0 = points_[p0], &x1 = points_[p1], &y0 = points_[q0], &y1 = points_[q1];
-  const Eigen::Vector2d su = closest_on_segments(x0, x1, y0, y1);
-  const Eigen::Vector3d q = (1.0 - su(0)) * x0 + su(0) * x1 - (1.0 - su(1)) * y0 - su(1) * y1;
-  const double distance = q.norm();
-  if (found) {
-    own0 = std::min(own0, distance);
-    own1 = std::min(own1, distance);
-    lower(q0, distance);
-    lower(q1, distance);
-  }
-  if (distance * distance < c2 && !rest_->edge_edge(e, f)) {
-    SelfContactPair pair{
-        {p0, p1, q0, q1}, {1.0 - su(0), su(0), -(1.0 - su(1)), -su(1)}, {}, 0.0, distance, false};
-    pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)
-                                 : touching_normal((x1 - x0).cross(y1 - y0), x1 - x0);
-    stage(pair, distance, kept);
-  }
-}
-
-void SelfContactProximity::stage(const SelfContactPair& pair, double distance, Kept& kept) const {
-  // A max-heap of the nearest so far; a tie keeps the one met first (the grid's order, which
-  // does not depend on the threads).
-  if (static_cast<int>(kept.near.size()) < max_pairs_per_feature) {
-    kept.near.emplace_back(distance, static_cast<int>(kept.staged.size()));
-    kept.staged.push_back(pair);
-    std::push_heap(kept.near.begin(), kept.near.end());
-    return;
-  }
-  if (!(distance < kept.near.front().first)) return;
-  std::pop_heap(kept.near.begin(), kept.near.end());
-  const int slot = kept.near.back().second;
-  kept.staged[slot] = pair;
-  kept.near.back() = {distance, slot};
-  std::push_heap(kept.near.begin(), kept.near.end());
-}
-
-void SelfContactProximity::commit(Kept& kept, std::vector<SelfContactPair>& pairs) const {
-  // In the order of the other feature's vertices, as self_contact_detection.cpp does: whatever
-  // order the grid met them in, a consumer's sweeps do the same on any grid.
-  const auto other = [&](const std::pair<double, int>& near) {
-    const SelfContactPair& pair = kept.staged[near.second];
-    return std::make_tuple(pair.vertex[1], pair.vertex[2], pair.vertex[3]);
-  };
-  std::sort(kept.near.begin(), kept.near.end(),
-            [&](const auto& a, const auto& b) { return other(a) < other(b); });
-  for (const auto& near : kept.near)
-    pairs.push_back(kept.staged[near.second]);
-  kept.near.clear();
-  kept.staged.clear();
-}
-
 void SelfContactProximity::freeze_near_saturated_queries(double cell) {
-  // Every pair a stopped query may have left unexamined has its other feature's grown box
-  // overlapping the query box, and that feature lies in a triangle whose grown box holds its
-  // own. Freezing the vertices of all such triangles freezes both sides of each such pair (the
-  // querying vertex or edge lies in such a triangle too).
-  const SelfCollisionSurface& surface = *surface_;
+  // Every pair a stopped query may have left unexamined has its other feature's box in the grid
+  // overlapping the query box. Freezing the vertices of every triangle and edge whose box in the
+  // grid overlaps a stopped query's box freezes both sides of each such pair (the querying
+  // vertex or edges lie in such boxes too).
   frozen_grid_.build(frozen_boxes_, cell);
-  const int triangle_count = static_cast<int>(surface.triangles.rows());
-  triangle_frozen_.resize(triangle_count);
+  const int triangle_count = static_cast<int>(triangles_.size());
+  const int feature_count = triangle_count + static_cast<int>(edges_.size());
+  feature_frozen_.resize(feature_count);
   auto task = [&](int piece) {
-    const int first =
-        static_cast<int>(static_cast<long long>(triangle_count) * piece / chunks_per_kind);
-    const int last =
-        static_cast<int>(static_cast<long long>(triangle_count) * (piece + 1) / chunks_per_kind);
-    for (int t = first; t < last; ++t) {
+    const Range range = chunk_range(feature_count, piece);
+    for (int k = range.first; k < range.last; ++k) {
       bool frozen = false;
-      frozen_grid_.for_each_overlapping(triangle_grown_[t], [&](int) {
-        frozen = true;
-        return false;
-      });
-      triangle_frozen_[t] = frozen;
+      frozen_grid_.for_each_overlapping(
+          k < triangle_count ? triangle_grown_[k] : edge_grown_[k - triangle_count], [&](int) {
+            frozen = true;
+            return false;
+          });
+      feature_frozen_[k] = frozen;
     }
   };
   pool().run(chunks_per_kind, task, &frozen_payoff_);
-  for (int t = 0; t < triangle_count; ++t) {
-    if (!triangle_frozen_[t]) continue;
-    for (int c = 0; c < 3; ++c)
-      nearest_[surface.triangles(t, c)].store(0.0, std::memory_order_relaxed);
+  for (int k = 0; k < feature_count; ++k) {
+    if (!feature_frozen_[k]) continue;
+    const Feature& feature = k < triangle_count ? triangles_[k] : edges_[k - triangle_count];
+    for (const int v : feature.vertex) {
+      if (v >= 0) nearest_[v].store(0.0, std::memory_order_relaxed);
+    }
   }
 }
 
 std::size_t SelfContactProximity::memory_bytes() const {
   std::size_t bytes =
       points_.capacity() * sizeof(Eigen::Vector3d) +
-      (reach_.capacity() + seed_.capacity() + extents_.capacity() + nearest_capacity_) *
+      (reach_.capacity() + seed_.capacity() + scratch_.capacity() + edge_need_.capacity() +
+       nearest_capacity_) *
           sizeof(double) +
       (triangles_.capacity() + edges_.capacity()) * sizeof(Feature) +
       (triangle_grown_.capacity() + edge_grown_.capacity() + frozen_boxes_.capacity()) *
           sizeof(Eigen::AlignedBox3d) +
-      triangle_frozen_.capacity() + triangle_grid_.memory_bytes() + edge_grid_.memory_bytes() +
+      feature_frozen_.capacity() + triangle_grid_.memory_bytes() + edge_grid_.memory_bytes() +
       frozen_grid_.memory_bytes();
   for (const Chunk& chunk : chunks_) {
     bytes += chunk.pairs.capacity() * sizeof(SelfContactPair) +

@@ -48,24 +48,26 @@ namespace wobble {
 // less than d/2, and a pair not found is farther apart than R_a + R_b while each side moves at
 // most γR. A common motion of everything changes no distance.
 //
-// Search: every triangle's and edge's box at x goes into a spatial grid, grown by a seed: each
-// vertex's seed is min(2R_v, its distance to the far edge of one of its triangles where a
-// triangle lies across that edge and the two are found), an upper bound on its nearest found
-// distance, so that a pair farther apart than the larger seed of its vertices can lower no
-// bound. The seeds follow the mesh's spacing, not the reach, so a query meets a few dozen boxes
-// on any resolution. Boxes grow by half the contact distance at least, for the pairs. Each
-// vertex looks up the triangles, and the edges whose lower vertex it is look up, together, the
-// higher-numbered edges. A candidate goes without an exact distance when its box gap alone puts
-// it beyond the contact distance and beyond what could lower its vertices' bounds.
+// Search: a pair can lower a bound only when it is closer than the largest "need" of its
+// vertices, an upper bound on their nearest found distance: first the seeds, min(2R_v, the
+// distance to the far edge of one of v's triangles where a triangle lies across that edge and
+// the two are found), which follow the mesh's spacing rather than the reach; for the edges, the
+// nearest left by the vertex-triangle pass, which in a pile is the next layer's distance. And a
+// pair is listed only closer than contact_distance. So a query box and a box in a spatial grid
+// need together grow by that much: the query side grows by its need or a common floor (most
+// needs, and the contact distance), the grid side only by its need's excess over the floor, and
+// most boxes in the grids stay bare. Each vertex looks up the triangles; then the edges whose
+// lower vertex it is look up, together, the higher-numbered edges. A candidate gets an exact
+// distance only when its box gap leaves it able to lower a bound or be a pair.
 //
 // Bounded by design: the grids and buffers are O(features) and kept between calls; a query
 // looks at no more than max_met boxes. A query that meets more (a pile denser than any cloth:
 // hundreds of features in a reach) stops, and then freezes what it might have missed: its
-// vertices and those of every triangle whose grown box overlaps its query box get b = 0, so
-// every pair it did not examine moves only with the common motion (a triangle's grown box holds
-// its edges'). Queries run on the worker pool in fixed chunks merged in order; the nearest
-// distances are lowered with atomic minima, which give the same result in any order. So the
-// pairs and bounds never depend on the thread count.
+// vertices and those of every triangle and edge whose box in a grid overlaps its query box get
+// b = 0, so every pair it did not examine moves only with the common motion. Queries run on the
+// worker pool in fixed chunks merged in order; the nearest distances are lowered with atomic
+// minima, which give the same result in any order. So the pairs and bounds never depend on the
+// thread count.
 //
 // Vertices on no triangle get b = +∞. A reach that is negative or not a number counts as 0, one
 // beyond the diagonal of x's surface bounding box as that diagonal.
@@ -114,6 +116,15 @@ class SelfContactProximity {
     int vertex[3];
   };
   WorkerPool& pool() const { return pool_ ? *pool_ : WorkerPool::shared(); }
+  static Eigen::AlignedBox3d grown(Eigen::AlignedBox3d box, double by) {
+    box.min().array() -= by;
+    box.max().array() += by;
+    return box;
+  }
+  // How far apart two boxes are along each axis (0 where they overlap on it).
+  static Eigen::Array3d box_gap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
+    return (a.min().array() - b.max().array()).max(b.min().array() - a.max().array()).max(0.0);
+  }
   void prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach);
   // seed_[v]: an upper bound on v's nearest found distance, from its mesh neighbourhood alone.
   void seed_vertex(int v);
@@ -148,17 +159,21 @@ class SelfContactProximity {
   std::vector<double> reach_;            // #V: R, made safe (m)
   std::vector<double> seed_;             // #V: min(2R_v, some found pair's distance) (m)
   std::vector<Feature> triangles_, edges_;
-  // Grown by max(the largest seed of their vertices, contact_distance/2), for the grids.
+  // What a query box grows by at least (m): the contact distance, or most vertices' needs (the
+  // seeds for the vertex queries, the nearest after them for the edge queries).
+  double vertex_floor_ = 0.0, edge_floor_ = 0.0;
+  std::vector<double> edge_need_;  // #E: its vertices' larger nearest after the vertex queries
+  // The boxes in the grids, grown by the need of their vertices beyond the floor.
   std::vector<Eigen::AlignedBox3d> triangle_grown_, edge_grown_;
-  std::vector<double> extents_;
+  std::vector<double> scratch_;
   SpatialGrid triangle_grid_, edge_grid_, frozen_grid_;
   // #V: min(seed, the nearest found distance): b_v = γ/2 × it.
   std::unique_ptr<std::atomic<double>[]> nearest_;
   std::size_t nearest_capacity_ = 0;
   std::vector<Eigen::AlignedBox3d> frozen_boxes_;
-  std::vector<char> triangle_frozen_;  // #F
+  std::vector<char> feature_frozen_;  // #F + #E
   std::vector<Chunk> chunks_;
-  SharingPayoff payoff_, seed_payoff_, frozen_payoff_;
+  SharingPayoff vertex_payoff_, edge_payoff_, seed_payoff_, frozen_payoff_;
   bool saturated_ = false;
 };
 

@@ -32,6 +32,26 @@ std::uint64_t pair_key(const SelfContactPair& pair) {
 
 }  // namespace
 
+Eigen::Vector3d SelfContactTerm::mean_motion(const Eigen::MatrixXd& p) const {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const int v : surface_.vertices)
+    mean += vertex_row(p, v) - vertex_row(x_, v);
+  if (!surface_.vertices.empty()) mean /= static_cast<double>(surface_.vertices.size());
+  return mean;
+}
+
+bool SelfContactTerm::within(const Eigen::MatrixXd& p, double fraction) const {
+  // Any common motion keeps the bounds' promise (distances do not change when everything moves
+  // alike): the mean motion since the epoch started is taken out.
+  const Eigen::Vector3d common = mean_motion(p);
+  for (const int v : surface_.vertices) {
+    const double limit = fraction * bounds_(v);
+    if (!((vertex_row(p, v) - vertex_row(x_, v) - common).squaredNorm() <= limit * limit))
+      return false;
+  }
+  return true;
+}
+
 SelfContactTerm::SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders)
     : rest_(&rest), colliders_(&colliders) {}
 
@@ -53,6 +73,7 @@ void SelfContactTerm::set(const SelfCollisionParams& params) {
     thickness_ = kept;
     rest_neighbours_.find(surface_, rest_skip_factor * thickness_);
     remembered_.clear();
+    epoch_open_ = false;
   }
 }
 
@@ -67,6 +88,7 @@ void SelfContactTerm::set_base_diagonal(const Eigen::VectorXd& /*base*/,
 }
 
 bool SelfContactTerm::reset() {
+  epoch_open_ = false;
   remembered_.clear();
   pairs_.clear();
   std::fill(in_contact_.begin(), in_contact_.end(), 0);
@@ -78,8 +100,14 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!on_) return false;
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
-  x_ = step.current;
-  start_epoch(step, first);
+  // An epoch outlives the step while the surface stays well within its bounds (a pile at rest,
+  // a cloth sliding as a whole): its pairs and bounds still hold, and nothing is found again.
+  const bool keep = epoch_open_ && x_.rows() == step.current.rows() &&
+                    within(step.current, keep_fraction) && within(first, keep_fraction);
+  if (!keep) {
+    x_ = step.current;
+    start_epoch(step, first);
+  }
   return false;
 }
 
@@ -99,6 +127,7 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   }
   proximity_.find(surface_, rest_neighbours_, x_, reach_, contact_reach * thickness_, found_,
                   bounds_);
+  epoch_open_ = true;
 
   pair_count_.assign(n, 0);
   for (const SelfContactPair& pair : found_) {
@@ -240,7 +269,7 @@ bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p)
   const Stopwatch stopwatch;
   separate(step, p);
   heading_ = p;
-  const int moved = clamp_to_bounds(x_, common_, bounds_, p);
+  const int moved = clamp_to_bounds(x_, mean_motion(p), bounds_, p);
   clamped_ += moved;
   solve_ms_ += stopwatch.milliseconds();
   // The bounded iterate is free of crossings: the next epoch starts there, its reaches from where
@@ -256,7 +285,7 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
   if (!on_) return;
   const Stopwatch stopwatch;
   // What the colliders' projection moved stays within the bounds too.
-  clamped_ += clamp_to_bounds(x_, common_, bounds_, next);
+  clamped_ += clamp_to_bounds(x_, mean_motion(next), bounds_, next);
   // The forces at the solved positions, for the next step's start (and L-BFGS's λ̄).
   const double mu = colliders_->friction();
   const Eigen::Index n = next.rows();
@@ -280,7 +309,19 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
   for (Eigen::Index v = 0; v < n; ++v)
     inverse_mass_(v) = step.pinned[v] ? 0.0 : 1.0 / step.rest.m(v);
   put_back_.assign(n, 0);
-  repaired_ = guard_.undo_crossings(surface_, step.current, inverse_mass_, next, put_back_);
+  // While the bounds held every vertex without having to move one and the search left nothing
+  // out, a crossing could only start at a listed pair: the guard looks around those alone.
+  const std::vector<char>* watched = nullptr;
+  if (clamped_ == 0 && !proximity_.saturated()) {
+    watched_.assign(n, 0);
+    for (const Pair& pair : pairs_) {
+      for (const int v : pair.features.vertex)
+        watched_[v] = 1;
+    }
+    watched = &watched_;
+  }
+  repaired_ =
+      guard_.undo_crossings(surface_, step.current, inverse_mass_, next, put_back_, watched);
   guard_ms_ = guard.milliseconds();
 }
 

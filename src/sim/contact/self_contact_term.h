@@ -48,6 +48,8 @@ class SelfContactTerm : public StepTerm {
   static constexpr int max_epochs = 3;
   // Pairs are listed within this many thicknesses.
   static constexpr double contact_reach = 2.0;
+  // An epoch is kept into the next step while every vertex is within this fraction of its bound.
+  static constexpr double keep_fraction = 0.5;
 
   // Both must outlive it: `rest` the network (F and masses), `colliders` for μ.
   SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders);
@@ -92,6 +94,10 @@ class SelfContactTerm : public StepTerm {
   void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
   // g(p) (m) and the closest points' slide in the tangent plane since x_ (m).
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
+  // The surface's mean motion from x_ to p (m).
+  Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
+  // Whether every surface vertex of p is within `fraction` of its bound, the mean motion out.
+  bool within(const Eigen::MatrixXd& p, double fraction) const;
   // One sweep pushing the pairs of p apart; returns how many it pushed.
   int separate(const StepContext& step, Eigen::MatrixXd& p);
 
@@ -101,6 +107,7 @@ class SelfContactTerm : public StepTerm {
   SelfCollisionParams params_;
   double thickness_ = 0.0;
   bool built_ = false;
+  bool epoch_open_ = false;  // x_, the pairs and bounds describe an epoch still in force
   SelfCollisionSurface surface_;
   RestNeighbours rest_neighbours_;
   SelfContactProximity proximity_;
