@@ -28,7 +28,7 @@ TEST(SelfContactProximity, SameResultsOnOneAndSeveralThreads) {
   EXPECT_GT(several.helper_tasks(), 0) << "the helpers should have taken part";
 }
 
-// A 60×60 grid with every vertex at one point: every query meets hundreds of features, stops,
+// A 60×60 grid with every vertex at one point: every query meets thousands of features, stops,
 // and freezes them; the pairs stay at most 32 a feature and the buffers O(features).
 TEST(SelfContactProximity, ACoincidentGridIsBoundedAndFrozen) {
   Mesh mesh;
@@ -62,18 +62,19 @@ TEST(SelfContactProximity, ACoincidentGridIsBoundedAndFrozen) {
   EXPECT_TRUE(same(pairs, pairs_alone));
 }
 
-// A probe 3 mm above a stack of 600 coincident triangles: its query stops before it has seen
-// them all, so it is frozen (b = 0) rather than trusted with half of 3 mm; far away, a triangle
-// keeps its reach.
+// A probe 3 mm above a stack of coincident triangles, more than a query may meet: its query
+// stops before it has seen them all, so it is frozen (b = 0) rather than trusted with half of
+// 3 mm; far away, a triangle keeps its reach.
 TEST(SelfContactProximity, AQueryThatStopsFreezesItsNeighbourhood) {
+  const int stack = SelfContactProximity::max_met + 100;
   Mesh mesh;
-  for (int k = 0; k < 600; ++k)
+  for (int k = 0; k < stack; ++k)
     mesh.add_triangle({0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0});
   add_probe(mesh, {0.002, 0.002, 0.003});
   mesh.add_triangle({1, 1, 1}, {1.01, 1, 1}, {1, 1.01, 1});
   const Found found(mesh, constant_reach(mesh, 0.01), 0.005);
-  EXPECT_EQ(found.bounds(1800), 0.0);
-  for (int v = 1803; v < 1806; ++v)
+  EXPECT_EQ(found.bounds(3 * stack), 0.0);
+  for (int v = 3 * stack + 3; v < 3 * stack + 6; ++v)
     EXPECT_NEAR(found.bounds(v), gamma_ * 0.01, 1e-15);
   // With fewer than max_met triangles below, the probe is trusted with half its distance.
   Mesh few;

@@ -24,6 +24,7 @@ class Pins : public StepTerm {
   // Back to the initial pins, targets at `rest`. True if the set of pinned vertices changed
   // (Q must be re-factorized).
   bool reset(const Eigen::MatrixXd& rest);
+  using StepTerm::reset;  // the list's reset(): nothing (the Simulation resets the pins itself)
   // Pin vertex i with its target at `at`; false (no change) if it is already pinned.
   bool pin(int i, const Eigen::RowVector3d& at);
   // Release vertex i; false (no change) if it is not pinned.

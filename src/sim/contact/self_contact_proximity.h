@@ -61,11 +61,11 @@ namespace wobble {
 // distance only when its box gap leaves it able to lower a bound or be a pair.
 //
 // Bounded by design: the grids and buffers are O(features) and kept between calls; a query
-// looks at no more than max_met boxes. A query that meets more (a pile denser than any cloth:
-// hundreds of features in a reach) stops, and then freezes what it might have missed: its
-// vertices and those of every triangle and edge whose box in a grid overlaps its query box get
-// b = 0, so every pair it did not examine moves only with the common motion. Queries run on the
-// worker pool in fixed chunks merged in order; the nearest distances are lowered with atomic
+// looks at no more than max_met boxes. A query that meets more (coincident layers, a cloth
+// crushed into a ball: a thousand features in reach) stops, and then freezes what it might have
+// missed: its vertices and those of every triangle and edge whose box in a grid overlaps its query
+// box get b = 0, so every pair it did not examine moves only with the common motion. Queries run on
+// the worker pool in fixed chunks merged in order; the nearest distances are lowered with atomic
 // minima, which give the same result in any order. So the pairs and bounds never depend on the
 // thread count.
 //
@@ -74,7 +74,7 @@ namespace wobble {
 class SelfContactProximity {
  public:
   static constexpr int max_pairs_per_feature = 32;
-  static constexpr int max_met = 512;
+  static constexpr int max_met = 1024;
   static constexpr double bound_fraction = 0.9;  // γ
 
   // pool: where the queries run; null for WorkerPool::shared().

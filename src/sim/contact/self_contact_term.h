@@ -49,7 +49,7 @@ class SelfContactTerm : public StepTerm {
   // Pairs are listed within this many thicknesses.
   static constexpr double contact_reach = 2.0;
   // An epoch is kept into the next step while every vertex is within this fraction of its bound.
-  static constexpr double keep_fraction = 0.5;
+  static constexpr double keep_fraction = 0.75;
 
   // Both must outlive it: `rest` the network (F and masses), `colliders` for μ.
   SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders);

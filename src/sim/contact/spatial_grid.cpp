@@ -44,19 +44,18 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double ce
     const Eigen::Array3i c = centre_cell(boxes[id], level);
     ++level.start[cell_slot(c.x(), c.y(), c.z(), level.slots) + 1];
   }
-  std::array<std::vector<int>, max_levels> fill;
   for (int k = 0; k < max_levels; ++k) {
     Level& level = levels_[k];
     for (std::uint32_t s = 0; s < level.slots; ++s)
       level.start[s + 1] += level.start[s];
-    if (counts[k] > 0) fill[k].assign(level.start.begin(), level.start.end() - 1);
+    if (counts[k] > 0) level.fill.assign(level.start.begin(), level.start.end() - 1);
   }
   for (std::size_t id = 0; id < boxes.size(); ++id) {
     if (level_of_[id] < 0) continue;
     Level& level = levels_[level_of_[id]];
     const Eigen::Array3i c = centre_cell(boxes[id], level);
     const std::uint32_t slot = cell_slot(c.x(), c.y(), c.z(), level.slots);
-    level.entries[fill[level_of_[id]][slot]++] =
+    level.entries[level.fill[slot]++] =
         Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
   }
 }
@@ -64,7 +63,8 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double ce
 std::size_t SpatialGrid::memory_bytes() const {
   std::size_t bytes = level_of_.capacity();
   for (const Level& level : levels_)
-    bytes += level.start.capacity() * sizeof(int) + level.entries.capacity() * sizeof(Entry);
+    bytes += (level.start.capacity() + level.fill.capacity()) * sizeof(int) +
+             level.entries.capacity() * sizeof(Entry);
   return bytes;
 }
 

@@ -80,6 +80,7 @@ class SpatialGrid {
     std::uint32_t slots = 1;  // a power of two
     std::vector<int> start;   // slots + 1: where each slot's entries begin
     std::vector<Entry> entries;
+    std::vector<int> fill;  // a build's next free entry per slot, kept to allocate nothing
   };
   static std::uint32_t cell_slot(int x, int y, int z, std::uint32_t slots) {
     // Three large primes, multiplied and mixed: neighbouring cells land in unrelated slots.

@@ -16,7 +16,6 @@ LocalGlobalSolver::LocalGlobalSolver(Eigen::Index vertices)
 void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observers,
                               Eigen::MatrixXd& p, StepTiming& timing) {
   const SimulationParams& params = problem.params;
-  const double k = params.k;
   CholeskySolver& cholesky = problem.system.cholesky();
   const bool measuring = observers.wants_measures();
   // The solve of Q p = rhs gives Q p to rounding only in double precision (see IterateMeasure).
