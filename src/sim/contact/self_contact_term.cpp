@@ -100,6 +100,7 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!on_) return false;
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
+  step_start_ = &step.current;  // friction measures slides over the step
   // An epoch outlives the step while the surface stays well within its bounds (a pile at rest,
   // a cloth sliding as a whole): its pairs and bounds still hold, and nothing is found again.
   const bool keep = epoch_open_ && x_.rows() == step.current.rows() &&
@@ -129,12 +130,6 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
                   bounds_);
   epoch_open_ = true;
 
-  pair_count_.assign(n, 0);
-  for (const SelfContactPair& pair : found_) {
-    for (int k = 0; k < 4; ++k) {
-      if (pair.beta[k] != 0.0) ++pair_count_[pair.vertex[k]];
-    }
-  }
   const double mu = colliders_->friction();
   pairs_.resize(found_.size());
   for (std::size_t i = 0; i < found_.size(); ++i) {
@@ -143,13 +138,11 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
     // The gap to keep: the thickness, or a little more than the pair has if it starts closer.
     pair.features.target = std::min(thickness_, found_[i].depth + recovery_fraction * thickness_);
     double compliance = 0.0;
-    int most = 1;
     for (int k = 0; k < 4; ++k) {
       const int v = pair.features.vertex[k];
       const double beta = pair.features.beta[k];
-      if (beta == 0.0) continue;
-      if (!step.pinned[v] && inertia_.size() == n) compliance += beta * beta / inertia_(v);
-      most = std::max(most, pair_count_[v]);
+      if (beta != 0.0 && !step.pinned[v] && inertia_.size() == n)
+        compliance += beta * beta / inertia_(v);
     }
     pair.stiffness = compliance > 0.0 ? gain / compliance : 0.0;
     pair.key = pair_key(pair.features);
@@ -169,7 +162,9 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
   Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
     q += f.beta[k] * vertex_row(p, f.vertex[k]);
-    if (slide) moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(x_, f.vertex[k]));
+    if (slide) {
+      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(*step_start_, f.vertex[k]));
+    }
   }
   if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
   return f.target - q.dot(f.normal);
@@ -359,7 +354,6 @@ std::size_t SelfContactTerm::memory_bytes() const {
          rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
          matrix(x_) + (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
          found_.capacity() * sizeof(SelfContactPair) + pairs_.capacity() * sizeof(Pair) +
-         pair_count_.capacity() * sizeof(int) +
          remembered_.capacity() * sizeof(std::pair<std::uint64_t, double>) +
          in_contact_.capacity() + put_back_.capacity();
 }

@@ -19,32 +19,34 @@ namespace wobble {
 // `thickness` apart from its own layers during the iterations, with Coulomb friction between
 // them, and no crossing by construction. Q is never touched. docs/method.md, "Self-contact".
 //
-// An epoch starts at positions x free of crossings (the step's pᵗ, or a clamped iterate):
+// An epoch starts at positions x free of crossings (the step's pᵗ, or a bounded iterate):
 // SelfContactProximity lists the vertex-triangle and edge-edge pairs within 2·thickness and
-// gives each vertex a bound bᵥ on how far it may move from x (less the surface's common motion
-// ū) before anything could pass through anything else (Offset Geometric Contact's conservative
+// gives each vertex a bound bᵥ on how far it may move from x, relative to a common motion,
+// before anything could pass through anything else (Offset Geometric Contact's conservative
 // bounds, Chen et al. 2025). Reaches follow where the step is heading: 1.5 × each vertex's
-// predicted motion less ū, at least the thickness.
+// predicted motion less the mean, at least the thickness. An epoch outlives its step while every
+// vertex stays within keep_fraction of its bound (nothing is found again for a pile at rest).
 //
-// Each pair keeps gᵖ(p) = thickness − (Σ βₖpₖ)·n ≤ 0, its normal n and closest points β fixed at
-// x, with a contact force λ ≥ 0 (N) in the right-hand side only (augmented Lagrangian, as
-// projective dynamics with frictional contact keeps its forces):
-//   local-global: each local step sets λ ← max(0, λ + κ g(p)) and adds λβₖn to vertex k, with
-//     κ = η/Σₖ(βₖ²/Wₖ)/(the most pairs one of its vertices has), Wₖ the vertex's inertia
-//     (1 + cΔt)mₖ/Δt²: a free layer's violation shrinks by 1 − η a step, whatever k;
-//   L-BFGS: the energy (κ/2) max(0, g + λ̄/κ)² with λ̄ from the last solve;
-// λ starts each step from the same pair's λ the step before (a resting pile's forces carry over),
-// and grows by at most κ·thickness within a step: while the bounds hold a pair still, its
-// violation would otherwise wind λ up iteration after iteration, and release it as a jump.
-// Friction: the closest points' slide s over the step in the tangent plane is opposed by up to
-// μλ (local-global: min(μλ, κ‖s‖)·ŝ; L-BFGS: μλ̄ times Huber's function of ‖s‖).
-// After every update of the iterate each vertex is moved back within its bound (limit_iterate);
-// when that moved any, a new epoch starts from the bounded iterate (at most max_epochs a step).
-// Pinned vertices follow their targets unbounded; the crossing guard (SelfCrossingGuard) after
-// the solve is the last resort for them and reports how many vertices it put back.
+// Each pair keeps g(p) = target − (Σ βₖpₖ)·n ≤ 0 with its normal n and closest points β from x
+// (target: the thickness, or a tenth of it more than the pair had if it started closer). After
+// every update of the iterate (limit_iterate):
+//   1. one Gauss-Seidel sweep pushes each pair with g > 0 apart along n, its vertices weighted by
+//      inverse mass (pins do not give way), the closest points' slide over the step held back by
+//      up to μ times the push (Coulomb);
+//   2. each pair's force λ ≥ 0 (N) follows: λ ← max(0, λ + κg), κ = η/Σₖ(βₖ²/Wₖ) with Wₖ the
+//      vertex's inertia (1 + cΔt)mₖ/Δt² (what would have moved free masses as far); the local
+//      step adds λβₖn to vertex k (add_targets), so that the global step learns the contact
+//      instead of meeting it anew each iteration; λ carries over to the same pair next step;
+//   3. every vertex beyond its bound is moved back within it, the mean motion taken out; if any
+//      was, a new epoch starts from the bounded iterate (at most max_epochs a step).
+// L-BFGS sees the energy (κ/2) max(0, g + λ/κ)² per pair with Huber friction μλ·f(‖s‖), and the
+// same limit_iterate after each accepted step.
+// After the solve (project): the bounds once more (the colliders' projection may have moved a
+// vertex), and the crossing guard (SelfCrossingGuard) as the last resort, reporting how many
+// vertices it put back.
 class SelfContactTerm : public StepTerm {
  public:
-  static constexpr double gain = 0.5;  // η
+  static constexpr double gain = 0.5;  // η: κ as a share of the pair's inertia
   static constexpr int max_epochs = 3;
   // Pairs are listed within this many thicknesses.
   static constexpr double contact_reach = 2.0;
@@ -92,7 +94,7 @@ class SelfContactTerm : public StepTerm {
   void build_surface();
   // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
   void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
-  // g(p) (m) and the closest points' slide in the tangent plane since x_ (m).
+  // g(p) (m) and the closest points' slide in the tangent plane over the step (m).
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
   // The surface's mean motion from x_ to p (m).
   Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
@@ -115,11 +117,11 @@ class SelfContactTerm : public StepTerm {
   Eigen::VectorXd inertia_;   // #V: W (N/m)
   Eigen::MatrixXd x_;         // #V by 3: where the epoch started
   Eigen::MatrixXd heading_;   // #V by 3: an iterate before its bounds
+  const Eigen::MatrixXd* step_start_ = nullptr;  // pᵗ of the step being taken
   Eigen::Vector3d common_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
   std::vector<Pair> pairs_;
-  std::vector<int> pair_count_;  // #V: pairs per vertex this epoch
   std::vector<std::pair<std::uint64_t, double>> remembered_;  // (key, λ), sorted, last step's
   std::vector<char> in_contact_, watched_, put_back_;
   Eigen::VectorXd inverse_mass_;
