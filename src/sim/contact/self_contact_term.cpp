@@ -100,7 +100,6 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!on_) return false;
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
-  step_start_ = &step.current;  // friction measures slides over the step
   // An epoch outlives the step while the surface stays well within its bounds (a pile at rest,
   // a cloth sliding as a whole): its pairs and bounds still hold, and nothing is found again.
   const bool keep = epoch_open_ && x_.rows() == step.current.rows() &&
@@ -163,7 +162,7 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
   for (int k = 0; k < 4; ++k) {
     q += f.beta[k] * vertex_row(p, f.vertex[k]);
     if (slide) {
-      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(*step_start_, f.vertex[k]));
+      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(x_, f.vertex[k]));
     }
   }
   if (slide) *slide = moved - moved.dot(f.normal) * f.normal;

@@ -31,8 +31,9 @@ namespace wobble {
 // (target: the thickness, or a tenth of it more than the pair had if it started closer). After
 // every update of the iterate (limit_iterate):
 //   1. one Gauss-Seidel sweep pushes each pair with g > 0 apart along n, its vertices weighted by
-//      inverse mass (pins do not give way), the closest points' slide over the step held back by
-//      up to μ times the push (Coulomb);
+//      inverse mass (pins do not give way), the closest points' slide since the epoch started
+//      held back by up to μ times the push (Coulomb; a kept epoch spans steps, so a resting pile
+//      does not creep);
 //   2. each pair's force λ ≥ 0 (N) follows: λ ← max(0, λ + κg), κ = η/Σₖ(βₖ²/Wₖ) with Wₖ the
 //      vertex's inertia (1 + cΔt)mₖ/Δt² (what would have moved free masses as far); the local
 //      step adds λβₖn to vertex k (add_targets), so that the global step learns the contact
@@ -51,7 +52,7 @@ class SelfContactTerm : public StepTerm {
   // Pairs are listed within this many thicknesses.
   static constexpr double contact_reach = 2.0;
   // An epoch is kept into the next step while every vertex is within this fraction of its bound.
-  static constexpr double keep_fraction = 0.75;
+  static constexpr double keep_fraction = 0.5;
 
   // Both must outlive it: `rest` the network (F and masses), `colliders` for μ.
   SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders);
@@ -94,7 +95,8 @@ class SelfContactTerm : public StepTerm {
   void build_surface();
   // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
   void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
-  // g(p) (m) and the closest points' slide in the tangent plane over the step (m).
+  // g(p) (m) and the closest points' slide in the tangent plane since the epoch started (m): over
+  // the step, or over the steps a kept epoch spans, so that a resting pile does not creep.
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
   // The surface's mean motion from x_ to p (m).
   Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
@@ -117,7 +119,6 @@ class SelfContactTerm : public StepTerm {
   Eigen::VectorXd inertia_;   // #V: W (N/m)
   Eigen::MatrixXd x_;         // #V by 3: where the epoch started
   Eigen::MatrixXd heading_;   // #V by 3: an iterate before its bounds
-  const Eigen::MatrixXd* step_start_ = nullptr;  // pᵗ of the step being taken
   Eigen::Vector3d common_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
