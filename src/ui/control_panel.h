@@ -42,10 +42,11 @@ struct PanelStats {
   // held or moved.
   bool self_collision = false;
   int self_contacts = 0;
-  // Each figure the step's terms reported of the last step, by name ("self-contact detection"),
-  // shown with the timings whatever the term.
+  // Each figure the step's terms reported of the last step, by term and name ("self-contact",
+  // "detection"), shown with the timings whatever the term: a line for each term, then its
+  // figures.
   struct TermFigure {
-    std::string label;
+    std::string term, name;
     std::string unit;  // "ms", or empty for a count
     float value = 0.0f;
   };

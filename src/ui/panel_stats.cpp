@@ -8,10 +8,10 @@ namespace wobble {
 
 namespace {
 
-// Rows of label and value, aligned.
-void stat_row(const char* label, const char* format, double value) {
+// Rows of label and value, aligned at `column` (in the default font's units).
+void stat_row(const char* label, const char* format, double value, float column = 110.0f) {
   ImGui::TextUnformatted(label);
-  ImGui::SameLine(110.0f * ImGui::GetIO().FontGlobalScale);
+  ImGui::SameLine(column * ImGui::GetIO().FontGlobalScale);
   ImGui::Text(format, value);
 }
 
@@ -68,12 +68,19 @@ void draw_panel_timings(const PanelStats& stats) {
   stat_row("  global", "%.2f ms", stats.global_ms);
   if (stats.forces_ms > 0.0f) stat_row("  wind", "%.2f ms", stats.forces_ms);
   if (stats.instruments_ms > 0.0f) stat_row("  plots", "%.2f ms", stats.instruments_ms);
+  // The terms' own figures, each term's under its name; the names are longer than the rows
+  // above, so their values sit further right.
+  const std::string* term = nullptr;
   for (const PanelStats::TermFigure& figure : stats.term_figures) {
-    const std::string label = "  " + figure.label;
+    if (!term || *term != figure.term) {
+      term = &figure.term;
+      ImGui::Text("  %s", figure.term.c_str());
+    }
+    const std::string label = "    " + figure.name;
     if (figure.unit.empty()) {
-      stat_row(label.c_str(), "%.0f", figure.value);
+      stat_row(label.c_str(), "%.0f", figure.value, 150.0f);
     } else {
-      stat_row(label.c_str(), ("%.2f " + figure.unit).c_str(), figure.value);
+      stat_row(label.c_str(), ("%.2f " + figure.unit).c_str(), figure.value, 150.0f);
     }
   }
   stat_row("steps", "%.0f /s", stats.steps_per_second);

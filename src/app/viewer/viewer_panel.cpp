@@ -25,8 +25,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   stats.instruments_ms = static_cast<float>(step.instruments_ms);
   stats.term_figures.clear();
   for (const wobble::TermFigure& figure : step.figures) {
-    stats.term_figures.push_back(PanelStats::TermFigure{
-        std::string(figure.term) + " " + figure.name, figure.unit, static_cast<float>(figure.value)});
+    stats.term_figures.push_back(PanelStats::TermFigure{figure.term, figure.name, figure.unit,
+                                                        static_cast<float>(figure.value)});
   }
 
   // The panel's UI scale (for projectors) multiplies the screen's.

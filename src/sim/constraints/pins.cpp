@@ -73,10 +73,6 @@ double Pins::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
   return 0.5 * weight * squared;
 }
 
-void Pins::report(std::vector<TermFigure>& figures) const {
-  figures.push_back(TermFigure{"pins", "pinned", "", static_cast<double>(count_)});
-}
-
 void Pins::check_vertex(int i, const char* what) const {
   if (i < 0 || i >= static_cast<int>(pinned_.size())) {
     throw std::out_of_range(std::string(what) + ": vertex " + std::to_string(i) +

@@ -39,7 +39,6 @@ class Pins : public StepTerm {
   // (w/2)‖Cp − C p_target‖² (J); gradient += w CᵀC(p − p_target).
   double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
                     Eigen::MatrixXd* gradient) const override;
-  void report(std::vector<TermFigure>& figures) const override;
 
   // Throws std::out_of_range, naming `what`, unless 0 ≤ i < #V.
   void check_vertex(int i, const char* what) const;
