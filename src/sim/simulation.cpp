@@ -182,8 +182,8 @@ void Simulation::prepare_solver() {
 }
 
 StepProblem Simulation::step_problem() {
-  return StepProblem{network_, r_,      params_, current_,        previous_, fext_,
-                     y_,       system_, *local_step_, terms_, step_context(), terms_.in_contact()};
+  return StepProblem{network_, r_,           params_, current_,       previous_,          fext_, y_,
+                     system_,  *local_step_, terms_,  step_context(), terms_.in_contact()};
 }
 
 StepContext Simulation::step_context() const {

@@ -256,7 +256,7 @@ class Simulation {
   std::vector<std::unique_ptr<StepTerm>> made_terms_;  // terms/term_registry.h
   ColliderContactTerm colliders_;
   SelfContactTerm self_collision_{network_, colliders_.colliders()};
-  StepTerms terms_;  // pins_, made_terms_, colliders_, self_collision_: in step order
+  StepTerms terms_;             // pins_, made_terms_, colliders_, self_collision_: in step order
   double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
   double time_ = 0.0;
 

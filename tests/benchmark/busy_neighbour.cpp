@@ -23,9 +23,9 @@
 
 #include "../io/shipped_scenes.h"
 #include "io/load_scene.h"
+#include "sim/parallel/worker_pool.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "sim/parallel/worker_pool.h"
 
 namespace {
 

@@ -5,8 +5,8 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -91,14 +91,15 @@ struct PileRun {
   double step_ms = 0, detection_ms = 0, solve_ms = 0, guard_ms = 0;
   long peak_kb = 0;  // the peak resident memory the run added to its process
   int contacts = 0;
-  long repairs = 0;          // vertices the crossing guard put back, all frames
-  long crossings_last = 0;   // the most edges through triangles in any of the last 10 frames
-  long crossings_most = 0;   // the most in any frame
+  long repairs = 0;         // vertices the crossing guard put back, all frames
+  long crossings_last = 0;  // the most edges through triangles in any of the last 10 frames
+  long crossings_most = 0;  // the most in any frame
 };
 
 // A deterministic number in [−1, 1] for vertex i and a salt.
 double jitter(Eigen::Index i, int salt) {
-  std::uint64_t h = static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull + salt * 0xbf58476d1ce4e5b9ull;
+  std::uint64_t h =
+      static_cast<std::uint64_t>(i) * 0x9e3779b97f4a7c15ull + salt * 0xbf58476d1ce4e5b9ull;
   h ^= h >> 31;
   h *= 0x94d049bb133111ebull;
   h ^= h >> 29;
@@ -108,10 +109,10 @@ double jitter(Eigen::Index i, int salt) {
 // A free n×n cloth (1 m, no bend springs) standing on its lower edge 5 cm above the ground,
 // pleated along x (5 cm deep, 25 cm apart) and jittered across its plane by a fifth of an edge,
 // thrown down at 2.5 m/s with a velocity across its plane that varies along it (and jitter), so
-// that it buckles and folds over itself into a pile. 15 iterations, thickness 5 mm, friction 0.4, damping
-// 0.2 /s. Up to 90 frames, or fewer when they pass `budget_s` of stepping; in a child process of
-// its own, so that its peak memory is its own. Crossings are counted (tests/sim/mesh_crossings.h)
-// after each of the frames.
+// that it buckles and folds over itself into a pile. 15 iterations, thickness 5 mm, friction 0.4,
+// damping 0.2 /s. Up to 90 frames, or fewer when they pass `budget_s` of stepping; in a child
+// process of its own, so that its peak memory is its own. Crossings are counted
+// (tests/sim/mesh_crossings.h) after each of the frames.
 PileRun run_pile(int n, bool on, const char* solver, double budget_s) {
   int channel[2];
   if (pipe(channel) != 0) return {};
@@ -203,8 +204,8 @@ void print_piles() {
         "off %ld (last 10 frames %ld)  on %ld (last 10 frames %ld)  peak memory off %.1f MB  on "
         "%.1f MB (%.2fx)  %d vertices in contact\n",
         c.n, c.n, c.solver, on.frames, off.step_ms, on.step_ms, on.step_ms / off.step_ms,
-        on.detection_ms, 1000.0 * on.detection_ms / vertices, on.solve_ms, on.guard_ms,
-        on.repairs, off.crossings_most, off.crossings_last, on.crossings_most, on.crossings_last,
+        on.detection_ms, 1000.0 * on.detection_ms / vertices, on.solve_ms, on.guard_ms, on.repairs,
+        off.crossings_most, off.crossings_last, on.crossings_most, on.crossings_last,
         off.peak_kb / 1024.0, on.peak_kb / 1024.0,
         static_cast<double>(on.peak_kb) / static_cast<double>(off.peak_kb), on.contacts);
     std::fflush(stdout);

@@ -45,9 +45,7 @@ class Tether : public wobble::StepTerm {
   Tether(double stiffness, const Eigen::Vector3d& anchor)
       : stiffness_(stiffness), anchor_(anchor.transpose()) {}
   const char* name() const override { return "tether"; }
-  void add_diagonal(Eigen::VectorXd& diagonal) const override {
-    diagonal.array() += stiffness_;
-  }
+  void add_diagonal(Eigen::VectorXd& diagonal) const override { diagonal.array() += stiffness_; }
   bool in_solve() const override { return true; }
   void add_targets(const wobble::StepContext& /*step*/, const Eigen::MatrixXd& p,
                    Eigen::MatrixXd& rhs, double* energy) override {

@@ -30,8 +30,8 @@ TEST(StepObjective, GradientMatchesCentralDifferences) {
   const Eigen::MatrixXd current = mesh.network.V + 0.01 * Eigen::MatrixXd::Random(n, 3);
   const Eigen::MatrixXd previous = current + 0.005 * Eigen::MatrixXd::Random(n, 3);
   const Eigen::MatrixXd fext = testing::gravity_forces(mesh.network.m);
-  const StepObjectiveTerms terms{mesh.network.E, r,       mesh.network.m, 300.0, 1.0 / 60.0,
-                                 2.0,            current, previous,       fext};
+  const StepObjectiveTerms terms{
+      mesh.network.E, r, mesh.network.m, 300.0, 1.0 / 60.0, 2.0, current, previous, fext};
   const Eigen::MatrixXd p = current + 0.02 * Eigen::MatrixXd::Random(n, 3);
   Eigen::MatrixXd gradient;
   const double energy = step_objective(terms, p, &gradient);

@@ -12,8 +12,8 @@
 
 #include "sim/contact/closest_points.h"
 #include "sim/contact/self_contact_proximity.h"
-#include "sim/simulation.h"
 #include "sim/contact/spatial_grid.h"
+#include "sim/simulation.h"
 
 namespace {
 

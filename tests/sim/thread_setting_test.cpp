@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string>
 
+#include "sim/parallel/worker_pool.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
-#include "sim/parallel/worker_pool.h"
 
 namespace {
 

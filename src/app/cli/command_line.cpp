@@ -13,9 +13,9 @@
 #include "io/output_target.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
+#include "sim/parallel/worker_pool.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
-#include "sim/parallel/worker_pool.h"
 #include "sim/value_limits.h"
 
 #ifndef WOBBLE_VERSION

@@ -58,7 +58,8 @@ void ColliderContactTerm::report(std::vector<TermFigure>& figures) const {
   if (contact_.empty()) return;
   const char* term = name();
   figures.push_back(TermFigure{term, "time", "ms", choose_ms_ + contact_.milliseconds()});
-  figures.push_back(TermFigure{term, "contacts", "", static_cast<double>(contact_.contact_count())});
+  figures.push_back(
+      TermFigure{term, "contacts", "", static_cast<double>(contact_.contact_count())});
   figures.push_back(
       TermFigure{term, "in the solve", "", static_cast<double>(solve_.members().size())});
   figures.push_back(TermFigure{term, "Q refactorized", "", held_changed_ ? 1.0 : 0.0});

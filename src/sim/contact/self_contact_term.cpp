@@ -261,7 +261,7 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
 
 bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p) {
   const Stopwatch stopwatch;
-  separate(step, p);
+  const int pushed = separate(step, p);
   heading_ = p;
   const int moved = clamp_to_bounds(x_, mean_motion(p), bounds_, p);
   clamped_ += moved;
@@ -272,7 +272,8 @@ bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p)
     x_ = p;
     start_epoch(step, heading_);
   }
-  return true;
+  // Whether p moved: L-BFGS then evaluates it again and starts its history anew.
+  return pushed > 0 || moved > 0;
 }
 
 void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {

@@ -116,9 +116,9 @@ class SelfContactTerm : public StepTerm {
   RestNeighbours rest_neighbours_;
   SelfContactProximity proximity_;
   SelfCrossingGuard guard_;
-  Eigen::VectorXd inertia_;   // #V: W (N/m)
-  Eigen::MatrixXd x_;         // #V by 3: where the epoch started
-  Eigen::MatrixXd heading_;   // #V by 3: an iterate before its bounds
+  Eigen::VectorXd inertia_;  // #V: W (N/m)
+  Eigen::MatrixXd x_;        // #V by 3: where the epoch started
+  Eigen::MatrixXd heading_;  // #V by 3: an iterate before its bounds
   Eigen::Vector3d common_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;

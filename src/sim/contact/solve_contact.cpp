@@ -55,7 +55,8 @@ bool SolveContact::choose(const ColliderContact& contact, const StepContext& ste
   // H is chosen again when a member is outside it or it holds a vertex that left S, no sooner
   // than lag_steps after the last time, and at once for a first contact.
   int held_only = 0;
-  for (int i : held_) held_only += !member_flags_[i];
+  for (int i : held_)
+    held_only += !member_flags_[i];
   const bool due = held_.empty() ? !members_.empty()
                                  : steps_since_chosen_ >= (lagging_ ? lag_steps : 1) &&
                                        (outside > 0 || held_only > 0);

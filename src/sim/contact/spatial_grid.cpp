@@ -55,8 +55,7 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double ce
     Level& level = levels_[level_of_[id]];
     const Eigen::Array3i c = centre_cell(boxes[id], level);
     const std::uint32_t slot = cell_slot(c.x(), c.y(), c.z(), level.slots);
-    level.entries[level.fill[slot]++] =
-        Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
+    level.entries[level.fill[slot]++] = Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
   }
 }
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <string>
 
-#include "sim/terms/term_registry.h"
 #include "sim/input_error.h"
 #include "sim/simulation_params.h"
+#include "sim/terms/term_registry.h"
 #include "sim/value_limits.h"
 
 namespace wobble {

@@ -24,10 +24,10 @@ struct StepObjectiveTerms {
 // with p̂ = ((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/(1 + cΔt), the inertial prediction (c = 0: 2pᵗ − pᵗ⁻ᐞᵗ).
 // The step's terms (the pins' (w/2)‖Cp − C p_target‖², contact) add theirs (terms/step_term.h);
 // with them, up to a constant, this is the objective Q and y encode, so the local-global
-// iteration never raises it. If `gradient` is given (resized to #V by 3 if needed), it receives the objective's
-// gradient in N; a global solve leaves it equal to k Aᵀ(d(p_before) − d(p)), which is zero only
-// at a minimum. One pass over the springs and one over the vertices; allocates nothing when
-// `gradient` already has its size.
+// iteration never raises it. If `gradient` is given (resized to #V by 3 if needed), it receives the
+// objective's gradient in N; a global solve leaves it equal to k Aᵀ(d(p_before) − d(p)), which is
+// zero only at a minimum. One pass over the springs and one over the vertices; allocates nothing
+// when `gradient` already has its size.
 double step_objective(const StepObjectiveTerms& terms, const Eigen::MatrixXd& p,
                       Eigen::MatrixXd* gradient = nullptr);
 

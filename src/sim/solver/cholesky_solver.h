@@ -5,8 +5,8 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "substitute_lanes.h"
 #include "sim/parallel/worker_pool.h"
+#include "substitute_lanes.h"
 
 namespace wobble {
 

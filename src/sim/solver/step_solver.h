@@ -44,8 +44,8 @@ struct StepProblem {
 
   // The springs' and inertia's part of E (step_objective.h).
   StepObjectiveTerms objective_terms() const {
-    return StepObjectiveTerms{rest.E,    rest_lengths,   rest.m,  params.k, params.dt,
-                              params.damping, current, previous, fext};
+    return StepObjectiveTerms{rest.E,         rest_lengths, rest.m,   params.k, params.dt,
+                              params.damping, current,      previous, fext};
   }
   // rhs (#V by 3) = k Aᵀd(p) + y + every term's targets at p. If given, `springs` receives
   // Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² and `term_energy` every term's energy at p (J).
@@ -57,8 +57,7 @@ struct StepProblem {
   }
   // E(p) (J); `gradient` (#V by 3, N), if given, receives ∇E(p).
   double energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradient) const {
-    return step_objective(objective_terms(), p, gradient) +
-           terms.add_energy(context, p, gradient);
+    return step_objective(objective_terms(), p, gradient) + terms.add_energy(context, p, gradient);
   }
   // After an update of the iterate: the terms may move p back within their bounds. Returns
   // whether any vertex moved.

@@ -25,7 +25,8 @@ void StepTerms::add_forces(const StepContext& step, Eigen::MatrixXd& fext) const
     term->add_forces(step, fext);
 }
 
-void StepTerms::set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) const {
+void StepTerms::set_base_diagonal(const Eigen::VectorXd& base,
+                                  const Eigen::VectorXd& inertia) const {
   for (StepTerm* term : terms_)
     term->set_base_diagonal(base, inertia);
 }
@@ -59,8 +60,8 @@ bool StepTerms::begin_step(const StepContext& step, const Eigen::MatrixXd& first
   return changed;
 }
 
-void StepTerms::add_targets(const StepContext& step, const Eigen::MatrixXd& p,
-                            Eigen::MatrixXd& rhs, double* energy) const {
+void StepTerms::add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
+                            double* energy) const {
   for (std::size_t t = 0; t < terms_.size(); ++t) {
     if (solving_flags_[t]) {
       terms_[t]->add_targets(step, p, rhs, energy);

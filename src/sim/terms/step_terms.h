@@ -41,7 +41,7 @@ class StepTerms {
 
  private:
   std::vector<StepTerm*> terms_;
-  std::vector<StepTerm*> solving_;  // the terms in_solve() this step
+  std::vector<StepTerm*> solving_;   // the terms in_solve() this step
   std::vector<char> solving_flags_;  // the same, by position in terms_
   bool in_solve_ = false;
   Eigen::VectorXd diagonal_;
