@@ -62,7 +62,6 @@ void SelfContactTerm::build_surface() {
 
 void SelfContactTerm::set(const SelfCollisionParams& params) {
   on_ = params.on;
-  params_ = params;
   if (!on_) {
     reset();
     return;
@@ -116,13 +115,10 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   const Eigen::Index n = x_.rows();
   // A new epoch within the step carries the forces its pairs have reached so far.
   if (epochs_ > 0) end_step();
-  common_.setZero();
-  for (const int v : surface_.vertices)
-    common_ += vertex_row(heading, v) - vertex_row(x_, v);
-  if (!surface_.vertices.empty()) common_ /= static_cast<double>(surface_.vertices.size());
+  const Eigen::Vector3d common = mean_motion(heading);
   reach_.setZero(n);
   for (const int v : surface_.vertices) {
-    const double wander = (vertex_row(heading, v) - vertex_row(x_, v) - common_).norm();
+    const double wander = (vertex_row(heading, v) - vertex_row(x_, v) - common).norm();
     reach_(v) = std::max(thickness_, reach_factor * wander);
   }
   proximity_.find(surface_, rest_neighbours_, x_, reach_, contact_reach * thickness_, found_,

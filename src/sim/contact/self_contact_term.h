@@ -108,7 +108,6 @@ class SelfContactTerm : public StepTerm {
   const SpringNetwork* rest_;
   const ColliderContact* colliders_;
   bool on_ = false;
-  SelfCollisionParams params_;
   double thickness_ = 0.0;
   bool built_ = false;
   bool epoch_open_ = false;  // x_, the pairs and bounds describe an epoch still in force
@@ -119,7 +118,6 @@ class SelfContactTerm : public StepTerm {
   Eigen::VectorXd inertia_;  // #V: W (N/m)
   Eigen::MatrixXd x_;        // #V by 3: where the epoch started
   Eigen::MatrixXd heading_;  // #V by 3: an iterate before its bounds
-  Eigen::Vector3d common_ = Eigen::Vector3d::Zero();
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
   std::vector<Pair> pairs_;

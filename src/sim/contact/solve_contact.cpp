@@ -72,11 +72,8 @@ bool SolveContact::choose(const ColliderContact& contact, const StepContext& ste
       weights_(i) = weight_scale * base_(i);
     if (held_.empty()) weights_.resize(0);
     steps_since_chosen_ = 0;
-    ++held_changes_;
     changed = true;
-    outside = 0;
   }
-  outside_held_ = outside;
   held_only_.clear();
   for (int i : held_) {
     if (!member_flags_[i]) held_only_.push_back(i);
@@ -117,7 +114,6 @@ bool SolveContact::clear() {
   held_flags_.clear();
   held_only_.clear();
   steps_since_chosen_ = 0;
-  outside_held_ = 0;
   weights_.resize(0);
   normal_force_.resize(0);
   touching_.clear();

@@ -63,10 +63,6 @@ class SolveContact {
   // Whether S is empty (nothing near a collider) and H too (nothing in the solve).
   bool empty() const { return members_.empty() && held_.empty(); }
   const std::vector<int>& members() const { return members_; }
-  // Members of S not in H this step, whose force is in the right-hand side alone.
-  int outside_held() const { return outside_held_; }
-  // Times H was chosen again since the start.
-  long held_changes() const { return held_changes_; }
 
   // Local-global: rhs_i += κᵢ Pᵢ(p) for i in S (rhs #V by 3). If `energy` is given it receives
   // the term's value Σ (κᵢ/2)‖pᵢ − Pᵢ(p)‖² (J), for the convergence trace.
@@ -105,8 +101,6 @@ class SolveContact {
   std::vector<int> held_only_;      // H less S, this step
   int steps_since_chosen_ = 0;
   bool lagging_ = true;
-  int outside_held_ = 0;
-  long held_changes_ = 0;
   Eigen::VectorXd normal_force_;  // #V (N), from record_forces
   std::vector<char> touching_;    // #V, from record_forces
   // Per member, for the L-BFGS friction: the contact normal at the start and μλ (N).
