@@ -110,7 +110,6 @@ StepStatus Simulation::step() {
   start_iterate();
   const StepContext context = step_context();
   colliders_.set_gravity_reach(params_.gravity.norm() * params_.dt * params_.dt);
-  colliders_.set_lagging(!(params_.chebyshev && params_.solver == "local-global"));
   if (terms_.begin_step(context, next_)) refactorize();
   solver_->solve(step_problem(), observers_, next_, timing_);
   terms_.project(context, next_);
@@ -176,6 +175,9 @@ void Simulation::start_iterate() {
 }
 
 void Simulation::prepare_solver() {
+  // Chebyshev's extrapolation needs Q to describe the contact it meets: collider contact's set on
+  // Q's diagonal follows the contact set every step while it accelerates.
+  colliders_.set_lagging(!(params_.chebyshev && params_.solver == "local-global"));
   compute_y();
   start_iterate();
   solver_->prepare(step_problem(), next_);

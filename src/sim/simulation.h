@@ -232,7 +232,8 @@ class Simulation {
   void compute_y();
   // next_ = the first iterate of a step, as params_.first_iterate says.
   void start_iterate();
-  // The solver's prepare() on the step about to be taken (see StepSolver::prepare).
+  // The solver's prepare() on the step about to be taken (see StepSolver::prepare), and what
+  // the terms must know of the solver (collider contact lags only without Chebyshev).
   void prepare_solver();
   StepContext step_context() const;
   StepProblem step_problem();
