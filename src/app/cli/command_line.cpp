@@ -7,7 +7,7 @@
 #include <sstream>
 #include <tuple>
 
-#include "app/cli/parse_number.h"
+#include "io/parse_number.h"
 #include "app/cli/scene_catalog.h"
 #include "app/cli/solver_choice.h"
 #include "io/output_target.h"

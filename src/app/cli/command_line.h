@@ -8,7 +8,7 @@
 
 #include "app/cli/compare_settings.h"
 #include "app/interaction/drag_script.h"
-#include "app/viewer/quantity_colors.h"
+#include "app/cli/color_quantity.h"
 #include "sim/simulation.h"
 
 namespace wobble {

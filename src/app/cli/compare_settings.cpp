@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "app/cli/parse_number.h"
+#include "io/parse_number.h"
 #include "app/cli/solver_choice.h"
 #include "sim/input_error.h"
 #include "sim/value_limits.h"

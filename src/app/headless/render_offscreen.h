@@ -3,10 +3,10 @@
 
 #include <vector>
 
-#include "app/headless/image_outputs.h"
-#include "app/headless/instrument_csv.h"
-#include "app/headless/obj_sequence.h"
-#include "app/headless/run_statistics.h"
+#include "app/outputs/image_outputs.h"
+#include "app/outputs/instrument_csv.h"
+#include "app/outputs/obj_sequence.h"
+#include "app/outputs/run_statistics.h"
 #include "app/viewer/viewer.h"
 #include "io/png_image.h"
 

@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "app/cli/scene_catalog.h"
-#include "app/headless/image_outputs.h"
-#include "app/headless/instrument_csv.h"
-#include "app/headless/obj_sequence.h"
+#include "app/outputs/image_outputs.h"
+#include "app/outputs/instrument_csv.h"
+#include "app/outputs/obj_sequence.h"
 #include "app/headless/render_offscreen.h"
-#include "app/headless/run_statistics.h"
+#include "app/outputs/run_statistics.h"
 #include "app/interaction/drag_script.h"
 #include "app/viewer/viewer.h"
 #include "io/atomic_file.h"

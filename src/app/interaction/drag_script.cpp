@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "app/cli/parse_number.h"
+#include "io/parse_number.h"
 #include "sim/input_error.h"
 
 namespace wobble {

@@ -27,42 +27,6 @@ void put(std::vector<float>& rgb, Eigen::Index row, const Eigen::Vector3f& color
 
 }  // namespace
 
-ColorQuantity next_color_quantity(ColorQuantity quantity) {
-  switch (quantity) {
-    case ColorQuantity::material:
-      return ColorQuantity::strain;
-    case ColorQuantity::strain:
-      return ColorQuantity::speed;
-    case ColorQuantity::speed:
-      return ColorQuantity::contacts;
-    case ColorQuantity::contacts:
-      return ColorQuantity::material;
-  }
-  return ColorQuantity::material;
-}
-
-const char* color_quantity_name(ColorQuantity quantity) {
-  switch (quantity) {
-    case ColorQuantity::material:
-      return "material";
-    case ColorQuantity::strain:
-      return "strain";
-    case ColorQuantity::speed:
-      return "speed";
-    case ColorQuantity::contacts:
-      return "contacts";
-  }
-  return "material";
-}
-
-std::optional<ColorQuantity> color_quantity_named(const std::string& name) {
-  for (ColorQuantity quantity : {ColorQuantity::material, ColorQuantity::strain,
-                                 ColorQuantity::speed, ColorQuantity::contacts}) {
-    if (name == color_quantity_name(quantity)) return quantity;
-  }
-  return std::nullopt;
-}
-
 // Magenta and cyan-blue stand apart from each other, from the grey and from the orange and blue
 // of the material's two sides.
 Eigen::Vector3f self_contact_color() {

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/color_quantity.h"
+
 namespace wobble {
 
 class Simulation;
@@ -14,16 +16,6 @@ class Simulation;
 // compressed, how fast each vertex moves, or which vertices are in contact. Pure functions on Eigen
 // arrays, and QuantityColors, which turns a simulation state into colours for the renderer's plain
 // arrays. No GL.
-
-// What the surface and springs are coloured by, in the order the V key cycles through and the
-// panel's combo lists them (PanelSettings::color_by is this as an int).
-enum class ColorQuantity { material, strain, speed, contacts };
-
-ColorQuantity next_color_quantity(ColorQuantity quantity);
-// "material", "strain", "speed", "contacts".
-const char* color_quantity_name(ColorQuantity quantity);
-// The quantity with that name, or nothing.
-std::optional<ColorQuantity> color_quantity_named(const std::string& name);
 
 // Engineering strain of every spring, strain_e = (‖p_i − p_j‖ − r_e)/r_e: > 0 stretched,
 // < 0 compressed, −1 when both ends meet.

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "app/headless/image_outputs.h"
+#include "app/outputs/image_outputs.h"
 #include "io/png_image.h"
 
 namespace wobble {

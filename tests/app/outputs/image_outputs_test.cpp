@@ -1,4 +1,4 @@
-#include "app/headless/image_outputs.h"
+#include "app/outputs/image_outputs.h"
 
 #include <gtest/gtest.h>
 

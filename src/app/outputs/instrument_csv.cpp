@@ -1,4 +1,4 @@
-#include "app/headless/instrument_csv.h"
+#include "app/outputs/instrument_csv.h"
 
 #include <charconv>
 

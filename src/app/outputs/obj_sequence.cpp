@@ -1,6 +1,6 @@
-#include "app/headless/obj_sequence.h"
+#include "app/outputs/obj_sequence.h"
 
-#include "app/headless/image_outputs.h"
+#include "app/outputs/image_outputs.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
 

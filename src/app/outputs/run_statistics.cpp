@@ -1,4 +1,4 @@
-#include "app/headless/run_statistics.h"
+#include "app/outputs/run_statistics.h"
 
 #include <algorithm>
 #include <cctype>

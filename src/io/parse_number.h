@@ -1,5 +1,5 @@
-#ifndef WOBBLE_APP_CLI_PARSE_NUMBER_H
-#define WOBBLE_APP_CLI_PARSE_NUMBER_H
+#ifndef WOBBLE_IO_PARSE_NUMBER_H
+#define WOBBLE_IO_PARSE_NUMBER_H
 
 #include <charconv>
 #include <optional>
