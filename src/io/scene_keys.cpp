@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "io/json_fields.h"
+#include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
@@ -40,9 +41,20 @@ void refuse_unknown_scene_keys(const std::string& path, const nlohmann::json& ob
     material->allow_only({"k", "density", "mass", "vertex_masses", "friction"}, "material");
   }
   if (std::optional<JsonFields> simulation = child(top, "simulation")) {
-    simulation->allow_only({"dt", "iterations", "solver", "chebyshev", "gravity", "gravity_model",
-                            "first_iterate", "damping", "contact_offset", "wind"},
-                           "simulation");
+    std::vector<std::string> keys = {"dt",
+                                     "iterations",
+                                     "solver",
+                                     "chebyshev",
+                                     "gravity",
+                                     "gravity_model",
+                                     "first_iterate",
+                                     "damping",
+                                     "contact_offset",
+                                     "wind"};
+    // And each added setting (sim/settings/setting_registry.h) by its key.
+    for (const SettingSpec& spec : added_settings())
+      keys.push_back(setting_key(spec));
+    simulation->allow_only(keys, "simulation");
     if (std::optional<JsonFields> wind = child(*simulation, "wind")) {
       wind->allow_only({"velocity", "drag", "lift", "gusts", "air_density", "on", "model"},
                        "simulation.wind");

@@ -15,6 +15,7 @@
 #include "io/scene_wind.h"
 #include "io/shape_limits.h"
 #include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/shapes/jelly_block.h"
 #include "sim/solver/solver_registry.h"
@@ -236,6 +237,10 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
     scene.params.contact.offset =
         simulation.number_in("contact_offset", limits::contact_offset).value_or(-1.0);
     if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind");
+    for (const SettingSpec& spec : added_settings()) {
+      if (const std::optional<double> value = simulation.number_in(setting_key(spec), spec.range))
+        scene.params.added_settings[spec.name] = *value;
+    }
   }
   if (top.has("colliders"))
     scene.params.contact.colliders = scene_colliders(path, top, "colliders");

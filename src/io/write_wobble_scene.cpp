@@ -8,6 +8,7 @@
 
 #include "io/atomic_file.h"
 #include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
 #include "sim/solver/solver_registry.h"
 #include "sim/value_limits.h"
 
@@ -90,6 +91,10 @@ json simulation_json(const SimulationParams& params) {
   }
   // Negative is the automatic offset, which is what leaving the key out gives.
   if (params.contact.offset >= 0.0) object["contact_offset"] = params.contact.offset;
+  // Added settings given a value (one left at its default reads back the same without it).
+  for (const auto& [name, value] : params.added_settings) {
+    if (const SettingSpec* spec = find_added_setting(name)) object[setting_key(*spec)] = value;
+  }
   return object;
 }
 

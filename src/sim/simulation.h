@@ -111,6 +111,15 @@ class Simulation {
   // non-finite value, leaving the state as it was.
   void set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous);
 
+  // Takes a whole settings value and does only the work the difference from the settings in force
+  // needs: k, dt, damping (and an added setting whose cost is refactorize) a numeric
+  // re-factorization; the solver or Chebyshev the solver's preparation; wind and added settings
+  // the made terms anew; gravity, friction, self-collision, iterations a value. A new dt keeps
+  // every vertex's velocity. The colliders (moved by translate_collider), the contact offset and
+  // single_precision_solve_above stay as the simulation started. Throws InputError, changing
+  // nothing, for a value out of its limits, an unknown solver or too many iterations for the mesh.
+  void apply(const SimulationParams& params);
+  // Each one field changed and applied.
   void set_k(double k);
   // Keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.
   void set_dt(double dt);

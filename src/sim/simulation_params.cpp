@@ -4,6 +4,7 @@
 #include <string>
 
 #include "input_error.h"
+#include "settings/setting_registry.h"
 #include "solver/solver_registry.h"
 #include "value_limits.h"
 
@@ -31,6 +32,7 @@ void validate_simulation_params(const SimulationParams& params) {
   }
   validate_wind(params.wind);
   validate_self_collision(params.self_collision);
+  validate_added_settings(params);
   const ContactParams& contact = params.contact;
   if (!limits::friction.contains(contact.friction)) {
     throw InputError("friction: expected " + expected_in(limits::friction) + ", got " +

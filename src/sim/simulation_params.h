@@ -2,6 +2,7 @@
 #define WOBBLE_SIM_SIMULATION_PARAMS_H
 
 #include <Eigen/Core>
+#include <map>
 #include <string>
 
 #include "sim/contact/collider_contact.h"
@@ -46,6 +47,9 @@ struct SimulationParams {
   SelfCollisionParams self_collision;
   // The step solver, by its registered name (see sim/solver/solver_registry.h).
   std::string solver = "local-global";
+  // The values given for settings added with a SettingRegistration (sim/settings/
+  // setting_registry.h), by name; one left out has its default. Read them with setting_value.
+  std::map<std::string, double> added_settings;
 };
 
 // Throws InputError unless k, dt, iterations and gravity are within the limits of

@@ -1,5 +1,9 @@
-// The Simulation's setters: each changes what it must and no more (see docs/method.md's table of
-// costs): k and dt re-factorize numerically, pins re-factorize, targets and iterations do not.
+// Simulation::apply, the one place a change of settings is turned into work: it compares the
+// whole settings value with the one in force and does what the difference needs and no more (see
+// docs/method.md's table of costs): k, dt and damping re-factorize numerically, the solver and
+// Chebyshev prepare the solver, wind and added settings rebuild the made terms, the rest changes
+// a value. The setters of one field are each that field changed and applied. Pins re-factorize,
+// targets do not.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -8,35 +12,86 @@
 
 #include "forces/gravity.h"
 #include "input_error.h"
+#include "settings/setting_registry.h"
 #include "simulation.h"
 #include "solver/solver_registry.h"
 
 namespace wobble {
 
+namespace {
+
+bool same_wind(const WindParams& a, const WindParams& b) {
+  return a.on == b.on && a.model == b.model && a.velocity == b.velocity && a.drag == b.drag &&
+         a.lift == b.lift && a.gusts == b.gusts && a.air_density == b.air_density;
+}
+
+}  // namespace
+
+void Simulation::apply(const SimulationParams& wanted) {
+  // Everything that can refuse does so before anything changes.
+  validate_simulation_params(wanted);
+  SimulationParams next = wanted;
+  // What a running simulation keeps as it started: its colliders (translate_collider moves
+  // them), the contact offset and the single-precision threshold.
+  next.contact.colliders = params_.contact.colliders;
+  next.contact.offset = params_.contact.offset;
+  next.single_precision_solve_above = params_.single_precision_solve_above;
+  if (next.iterations != params_.iterations) check_step_work(next.iterations, /*analyzed=*/true);
+  std::unique_ptr<StepSolver> solver;
+  if (next.solver != params_.solver) solver = make_step_solver(next.solver, network_.V.rows());
+
+  // What the difference needs, and nothing more (the table of costs in simulation.h).
+  bool refactor = next.k != params_.k || next.dt != params_.dt || next.damping != params_.damping;
+  bool terms = !same_wind(next.wind, params_.wind);
+  if (next.added_settings != params_.added_settings) {
+    for (const SettingSpec& spec : added_settings()) {
+      if (setting_value(next, spec.name) == setting_value(params_, spec.name)) continue;
+      terms = true;
+      if (spec.cost == SettingCost::refactorize) refactor = true;
+    }
+  }
+  const bool gravity =
+      next.gravity != params_.gravity || next.gravity_model != params_.gravity_model;
+  const bool friction = next.contact.friction != params_.contact.friction;
+  const bool self = next.self_collision.on != params_.self_collision.on ||
+                    next.self_collision.thickness != params_.self_collision.thickness;
+  const bool prepare = solver || next.chebyshev != params_.chebyshev;
+  // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change with Δt, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
+  if (next.dt != params_.dt) previous_ = current_ - (current_ - previous_) * (next.dt / params_.dt);
+
+  params_ = std::move(next);
+  if (solver) solver_ = std::move(solver);
+  if (gravity) {
+    gravity_fext_ = wobble::gravity_forces(network_.m, params_.gravity, params_.gravity_model);
+    fext_ = gravity_fext_;
+  }
+  if (terms) {
+    rebuild_terms();
+    if (made_terms_.empty()) fext_ = gravity_fext_;
+  }
+  if (friction) colliders_.colliders().set_friction(params_.contact.friction);
+  if (self) self_collision_.set(params_.self_collision);
+  if (refactor) refactorize();
+  // Chebyshev's ρ and L-BFGS's history start from the state as it now is.
+  if (prepare) prepare_solver();
+}
+
 void Simulation::set_k(double k) {
   SimulationParams changed = params_;
   changed.k = k;
-  validate_simulation_params(changed);
-  params_.k = k;
-  refactorize();
+  apply(changed);
 }
 
 void Simulation::set_dt(double dt) {
   SimulationParams changed = params_;
   changed.dt = dt;
-  validate_simulation_params(changed);
-  // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
-  previous_ = current_ - (current_ - previous_) * (dt / params_.dt);
-  params_.dt = dt;
-  refactorize();
+  apply(changed);
 }
 
 void Simulation::set_iterations(int iterations) {
   SimulationParams changed = params_;
   changed.iterations = iterations;
-  validate_simulation_params(changed);
-  check_step_work(iterations, /*analyzed=*/true);
-  params_.iterations = iterations;
+  apply(changed);
 }
 
 namespace {
@@ -74,25 +129,22 @@ void Simulation::check_step_work(int iterations, bool analyzed) const {
 }
 
 void Simulation::set_chebyshev(bool on) {
-  params_.chebyshev = on;
-  prepare_solver();
+  SimulationParams changed = params_;
+  changed.chebyshev = on;
+  apply(changed);
 }
 
 void Simulation::set_solver(const std::string& name) {
-  std::unique_ptr<StepSolver> solver = make_step_solver(name, network_.V.rows());
-  params_.solver = name;
-  solver_ = std::move(solver);
-  prepare_solver();
+  SimulationParams changed = params_;
+  changed.solver = name;
+  apply(changed);
 }
 
 void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
   SimulationParams changed = params_;
   changed.gravity = gravity;
-  validate_simulation_params(changed);
-  params_.gravity = gravity;
-  params_.gravity_model = model;
-  gravity_fext_ = wobble::gravity_forces(network_.m, gravity, model);
-  fext_ = gravity_fext_;
+  changed.gravity_model = model;
+  apply(changed);
 }
 
 void Simulation::pin(int i) {
@@ -111,25 +163,19 @@ void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
 void Simulation::set_damping(double damping) {
   SimulationParams changed = params_;
   changed.damping = damping;
-  validate_simulation_params(changed);
-  if (damping == params_.damping) return;
-  params_.damping = damping;
-  refactorize();
+  apply(changed);
 }
 
 void Simulation::set_wind(const WindParams& wind) {
-  validate_wind(wind);
-  params_.wind = wind;
-  rebuild_terms();
-  if (made_terms_.empty()) fext_ = gravity_fext_;
+  SimulationParams changed = params_;
+  changed.wind = wind;
+  apply(changed);
 }
 
 void Simulation::set_friction(double friction) {
   SimulationParams changed = params_;
   changed.contact.friction = friction;
-  validate_simulation_params(changed);
-  params_.contact.friction = friction;
-  colliders_.colliders().set_friction(friction);
+  apply(changed);
 }
 
 void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
@@ -140,9 +186,7 @@ void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
 void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
   SimulationParams changed = params_;
   changed.self_collision = self_collision;
-  validate_simulation_params(changed);
-  params_.self_collision = self_collision;
-  self_collision_.set(self_collision);
+  apply(changed);
 }
 
 double Simulation::self_collision_thickness_kept() const {

@@ -138,6 +138,25 @@ PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning) 
   return requests;
 }
 
+namespace {
+
+// The added settings' sliders, each label followed by `suffix` (" right" for the right side).
+void draw_added_sliders(std::vector<AddedSlider>& sliders, const char* suffix) {
+  for (AddedSlider& slider : sliders) {
+    const std::string label =
+        slider.label + (slider.unit.empty() ? "" : " (" + slider.unit + ")") + suffix;
+    if (slider.log_scale) {
+      log_drag(label.c_str(), &slider.value, slider.low, slider.high, "%.4g");
+      log_drag_tooltip();
+    } else {
+      ImGui::SliderFloat(label.c_str(), &slider.value, slider.low, slider.high, "%.4g",
+                         ImGuiSliderFlags_AlwaysClamp);
+    }
+  }
+}
+
+}  // namespace
+
 bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
                              bool course_scene) {
   // Stiffness spans six decades and dt four: both move by a factor a pixel (log_drag.h).
@@ -160,6 +179,7 @@ bool draw_simulation_section(SimulationSettings& settings, const std::vector<Sol
           "plain local-global iterations only.");
     }
   }
+  draw_added_sliders(settings.added, "");
   ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, SimulationSettings::max_gravity,
                      "%.2f", ImGuiSliderFlags_AlwaysClamp);
   const bool restore_defaults = ImGui::Button("Restore defaults");
@@ -230,17 +250,19 @@ void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>
         "distance from Wobble's (left)");
     return;
   }
-  using Limits = SimulationSettings;  // the same ranges as the left side's
+  using Limits = SideSliders;  // the same ranges as the left side's
   ImGui::Checkbox("split view: right side", &settings.split);
   if (!settings.split) return;
-  log_drag("k right", &settings.right_k, Limits::min_k, Limits::max_k, "%.1f");
+  SideSliders& right = settings.right;
+  log_drag("k right", &right.k, Limits::min_k, Limits::max_k, "%.1f");
   log_drag_tooltip();
-  log_drag("dt right", &settings.right_dt, Limits::min_dt, Limits::max_dt, "%.5f");
+  log_drag("dt right", &right.dt, Limits::min_dt, Limits::max_dt, "%.5f");
   log_drag_tooltip();
-  ImGui::SliderInt("iterations right", &settings.right_iterations, Limits::min_iterations,
+  ImGui::SliderInt("iterations right", &right.iterations, Limits::min_iterations,
                    Limits::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
-  const bool chebyshev_applies = solver_combo("solver right", settings.right_solver, solvers);
-  chebyshev_checkbox("Chebyshev right", settings.right_chebyshev, chebyshev_applies);
+  const bool chebyshev_applies = solver_combo("solver right", right.solver, solvers);
+  chebyshev_checkbox("Chebyshev right", right.chebyshev, chebyshev_applies);
+  draw_added_sliders(right.added, " right");
 }
 
 }  // namespace wobble

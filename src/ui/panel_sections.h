@@ -55,21 +55,39 @@ struct SolverOption {
   bool chebyshev = false;  // Chebyshev acceleration applies to it
 };
 
-// "simulation": k, dt, iterations, the solver, Chebyshev, gravity and Restore defaults (returns
-// whether it was pressed). The solver's combo shows `solvers` (none: no combo); Chebyshev is
-// greyed out for a solver it does not apply to. A course scene (`course_scene`) keeps the
-// course's plain local-global iterations: neither another solver nor Chebyshev offered.
-struct SimulationSettings {
+// A slider for a setting added beside the built-in ones (sim/settings/setting_registry.h): the
+// app fills these from the settings' declarations, one per added setting, in their order.
+struct AddedSlider {
+  std::string label;  // "tether k"
+  std::string unit;   // "N/m", or "" for a plain factor
+  float low = 0.0f, high = 1.0f;
+  bool log_scale = false;  // moves by a factor a pixel (low > 0)
+  float value = 0.0f;
+};
+
+// What one side of the view steps with: the left side's in SimulationSettings, the right side's
+// in SplitSettings::right.
+struct SideSliders {
   float k = 400.0f;         // N/m
   float dt = 1.0f / 60.0f;  // s
   int iterations = 50;      //
-  float gravity = 9.81f;    // m/s², its strength along the scene's own direction
   int solver = 0;           // index into the solvers offered; 0 the default
   bool chebyshev = false;   // Chebyshev acceleration of the iterations
+  std::vector<AddedSlider> added;
 
   static constexpr float min_k = 1.0f, max_k = 1e6f;
   static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
   static constexpr int min_iterations = 1, max_iterations = 100;
+};
+
+// "simulation": k, dt, iterations, the solver, Chebyshev, the added settings' sliders, gravity
+// and Restore defaults (returns whether it was pressed). The solver's combo shows `solvers`
+// (none: no combo); Chebyshev is greyed out for a solver it does not apply to. A course scene
+// (`course_scene`) keeps the course's plain local-global iterations: neither another solver nor
+// Chebyshev offered.
+struct SimulationSettings : SideSliders {
+  float gravity = 9.81f;  // m/s², its strength along the scene's own direction
+
   static constexpr float max_gravity = 30.0f;
 };
 bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
@@ -122,10 +140,7 @@ void draw_instruments_section(InstrumentSettings& settings);
 // instead.
 struct SplitSettings {
   bool split = false;
-  float right_k = 400.0f, right_dt = 1.0f / 60.0f;
-  int right_iterations = 5;
-  int right_solver = 0;  // index into the solvers offered
-  bool right_chebyshev = false;
+  SideSliders right = SideSliders{400.0f, 1.0f / 60.0f, 5, 0, false, {}};
 };
 void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,
                         bool student_side);

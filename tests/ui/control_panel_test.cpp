@@ -12,6 +12,7 @@
 namespace {
 
 using wobble::PanelSettings;
+using wobble::SideSliders;
 using wobble::testing::PanelDriver;
 
 // The solvers as the viewer offers them.
@@ -200,18 +201,19 @@ TEST(ControlPanel, ADragOf60PixelsMovesKByOnePercentAPixel) {
 TEST(ControlPanel, EveryDragOverDecadesMovesByTheSameFactor) {
   struct Case {
     const char* label;
-    float PanelSettings::*value;
+    float& (*value)(PanelSettings&);
     float start;
   };
-  const Case cases[] = {{"dt (s)", &PanelSettings::dt, 0.01f},
-                        {"damping (1/s)", &PanelSettings::damping, 0.1f},
-                        {"thickness (mm)", &PanelSettings::self_collision_mm, 10.0f},
-                        {"k right", &PanelSettings::right_k, 2000.0f},
-                        {"dt right", &PanelSettings::right_dt, 0.01f}};
+  const Case cases[] = {
+      {"dt (s)", [](PanelSettings& s) -> float& { return s.dt; }, 0.01f},
+      {"damping (1/s)", [](PanelSettings& s) -> float& { return s.damping; }, 0.1f},
+      {"thickness (mm)", [](PanelSettings& s) -> float& { return s.self_collision_mm; }, 10.0f},
+      {"k right", [](PanelSettings& s) -> float& { return s.right.k; }, 2000.0f},
+      {"dt right", [](PanelSettings& s) -> float& { return s.right.dt; }, 0.01f}};
   for (const Case& c : cases) {
     PanelDriver panel(1280.0f, 720.0f, 1.0f);
     show_everything(panel);
-    panel.settings.*c.value = c.start;
+    c.value(panel.settings) = c.start;
     panel.settle();
     std::optional<ImVec2> at = panel.find(c.label);
     for (int notch = 0; !at && notch < 40; ++notch) {
@@ -221,7 +223,7 @@ TEST(ControlPanel, EveryDragOverDecadesMovesByTheSameFactor) {
     ASSERT_TRUE(at) << c.label;
     panel.drag(*at, 60.0f);
     // Within the rounding to the digits shown ("%.3f" of 0.18 is 0.3%).
-    EXPECT_NEAR(panel.settings.*c.value / c.start, std::pow(1.01, 60.0), 0.006) << c.label;
+    EXPECT_NEAR(c.value(panel.settings) / c.start, std::pow(1.01, 60.0), 0.006) << c.label;
   }
 }
 
@@ -256,25 +258,24 @@ TEST(ControlPanel, CtrlClickTypesAnExactK) {
 TEST(ControlPanel, ChebyshevIsGreyedOutForASolverItDoesNotApplyTo) {
   struct Case {
     const char* checkbox;
-    int PanelSettings::*solver;
-    bool PanelSettings::*chebyshev;
+    SideSliders& (*side)(PanelSettings&);
   };
   for (const Case c :
-       {Case{"Chebyshev acceleration", &PanelSettings::solver, &PanelSettings::chebyshev},
-        Case{"Chebyshev right", &PanelSettings::right_solver, &PanelSettings::right_chebyshev}}) {
+       {Case{"Chebyshev acceleration", [](PanelSettings& s) -> SideSliders& { return s; }},
+        Case{"Chebyshev right", [](PanelSettings& s) -> SideSliders& { return s.right; }}}) {
     SCOPED_TRACE(c.checkbox);
     PanelDriver panel(1920.0f, 1080.0f, 1.0f);
     show_everything(panel);
-    panel.settings.*c.solver = 1;  // L-BFGS
+    c.side(panel.settings).solver = 1;  // L-BFGS
     panel.settle();
     const std::optional<ImVec2> box = panel.find(c.checkbox);
     ASSERT_TRUE(box);
     panel.click(*box);
-    EXPECT_FALSE(panel.settings.*c.chebyshev) << "greyed out";
-    panel.settings.*c.solver = 0;  // local-global
+    EXPECT_FALSE(c.side(panel.settings).chebyshev) << "greyed out";
+    c.side(panel.settings).solver = 0;  // local-global
     panel.frame();
     panel.click(*box);
-    EXPECT_TRUE(panel.settings.*c.chebyshev);
+    EXPECT_TRUE(c.side(panel.settings).chebyshev);
   }
 }
 

@@ -7,13 +7,14 @@
 #include <sstream>
 #include <tuple>
 
-#include "io/parse_number.h"
 #include "app/cli/scene_catalog.h"
 #include "app/cli/solver_choice.h"
 #include "io/output_target.h"
+#include "io/parse_number.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
 #include "sim/parallel/worker_pool.h"
+#include "sim/settings/setting_registry.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 #include "sim/value_limits.h"
@@ -107,16 +108,10 @@ void check_distinct_outputs(const CommandLine& command) {
 // --compare's settings for the left side ("solver=local-global,solver=lbfgs") against the
 // options that set the same: given both ways, which was meant?
 void check_left_side(const CommandLine& command) {
-  const SideSettings& left = command.compare->left;
-  const std::tuple<bool, const char*, const char*> overlaps[] = {
-      {left.iterations && command.iterations, "--iterations", "iterations"},
-      {left.solver && command.solver, "--solver", "solver"},
-      {left.chebyshev && command.chebyshev, "--chebyshev", "chebyshev"},
-      {left.dt && command.dt, "--dt", "dt"},
-      {left.k && command.k, "--k", "k"}};
-  for (const auto& [both, option, setting] : overlaps) {
-    if (both) {
-      throw InputError(std::string(option) + ", --compare: both set the left side's " + setting +
+  const SettingsOverrides& left = command.compare->left;
+  for (const std::string& name : overridable_setting_names()) {
+    if (left.has(name) && command.settings.has(name)) {
+      throw InputError("--" + name + ", --compare: both set the left side's " + name +
                        ", expected one of them");
     }
   }
@@ -168,7 +163,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--solver", solver,
                  "Step solver: local-global (the course's method, default) or lbfgs (L-BFGS, "
                  "Liu et al. 2017); the scene's otherwise");
-  app.add_flag("--chebyshev", command.chebyshev,
+  bool chebyshev = false;
+  app.add_flag("--chebyshev", chebyshev,
                "Chebyshev acceleration of the local-global iterations (Wang 2015)");
   app.add_option("--damping", damping,
                  "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, "
@@ -206,6 +202,18 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--color-by", color_by,
                  "Colour the shape by spring strain, vertex speed or contacts, with a legend: "
                  "material, strain, speed or contacts (default material; the V key cycles)");
+  // Each added setting (sim/settings/setting_registry.h) as --NAME VALUE.
+  std::vector<std::pair<std::string, std::optional<std::string>>> added;
+  for (const SettingSpec& spec : added_settings())
+    added.emplace_back(spec.name, std::nullopt);
+  for (std::size_t i = 0; i < added.size(); ++i) {
+    const SettingSpec& spec = added_settings()[i];
+    const std::string unit = *spec.range.unit ? std::string(" ") + spec.range.unit : "";
+    app.add_option("--" + spec.name, added[i].second,
+                   spec.help + " (" + limit_text(spec.range.low) + " to " +
+                       limit_text(spec.range.high) + unit + ", default " +
+                       limit_text(spec.default_value) + ")");
+  }
   app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
   app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
@@ -237,11 +245,17 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
 
   if (frames) command.frames = whole_number("--frames", *frames, CommandLine::max_frames);
   if (iterations) {
-    command.iterations =
+    command.settings.iterations =
         static_cast<int>(whole_number("--iterations", *iterations, Simulation::max_iterations));
   }
-  if (k) command.k = number_in("--k", *k, limits::stiffness);
-  if (dt) command.dt = number_in("--dt", *dt, limits::time_step);
+  if (k) command.settings.k = number_in("--k", *k, limits::stiffness);
+  if (dt) command.settings.dt = number_in("--dt", *dt, limits::time_step);
+  if (chebyshev) command.settings.chebyshev = true;
+  for (const auto& [name, text] : added) {
+    if (!text) continue;
+    const SettingSpec& spec = *find_added_setting(name);
+    command.settings.added[name] = number_from_zero(("--" + name).c_str(), *text, spec.range);
+  }
   if (damping) command.damping = number_from_zero("--damping", *damping, limits::damping);
   if (friction) command.friction = number_from_zero("--friction", *friction, limits::friction);
   if (self_collision_thickness) {
@@ -273,7 +287,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (convergence_csv) {
     command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
   }
-  if (solver) command.solver = parse_solver("--solver", *solver);
+  if (solver) command.settings.solver = parse_solver("--solver", *solver);
   if (compare) {
     command.compare = parse_compare_settings(*compare);
     check_left_side(command);
@@ -327,10 +341,10 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
   // (its k, dt, iterations and wind are the reference's own settings).
   if (params.gravity_model == GravityModel::force_per_vertex) {
     const std::string course_solver = solver_names().front();  // the course's local-global
-    const SideSettings* left = command.compare ? &command.compare->left : nullptr;
+    const SettingsOverrides* left = command.compare ? &command.compare->left : nullptr;
     const std::pair<bool, const char*> changes_method[] = {
-        {command.chebyshev, "--chebyshev"},
-        {command.solver.value_or(course_solver) != course_solver, "--solver"},
+        {command.settings.chebyshev.value_or(false), "--chebyshev"},
+        {command.settings.solver.value_or(course_solver) != course_solver, "--solver"},
         {left && (left->chebyshev.value_or(false) ||
                   left->solver.value_or(course_solver) != course_solver),
          "--compare (its left side)"},

@@ -6,9 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/compare_settings.h"
-#include "app/interaction/drag_script.h"
 #include "app/cli/color_quantity.h"
+#include "app/cli/compare_settings.h"
+#include "app/cli/settings_overrides.h"
+#include "app/interaction/drag_script.h"
 #include "sim/simulation.h"
 
 namespace wobble {
@@ -25,14 +26,10 @@ struct CommandLine {
   std::optional<CompareSettings> compare;  // --compare: the split view's right side
   std::string student;  // --student DIR: a student's six functions beside Wobble's; empty: none
   bool fill = false;    // fill a closed OBJ surface with tetrahedra
-  std::optional<double> k;
-  std::optional<double> dt;
-  std::optional<int> iterations;
+  // --k, --dt, --iterations, --solver (a registered solver's name, app/cli/solver_choice.h),
+  // --chebyshev and each added setting's --NAME: what they change of the scene's settings.
+  SettingsOverrides settings;
   bool stats = false;
-  bool chebyshev = false;  // Chebyshev acceleration of the iterations
-  // --solver: the step solver by its registered name (app/cli/solver_choice.h); unset: the
-  // scene's.
-  std::optional<std::string> solver;
   std::optional<double> damping;    // 1/s, within limits::damping
   std::optional<double> friction;   // the material's μ against every collider, limits::friction
   bool wind = false;                // turn the scene's wind on (or the default breeze)

@@ -6,10 +6,8 @@
 #include <sstream>
 #include <vector>
 
-#include "io/parse_number.h"
 #include "app/cli/solver_choice.h"
 #include "sim/input_error.h"
-#include "sim/value_limits.h"
 
 namespace wobble {
 
@@ -29,35 +27,7 @@ std::vector<std::string> split_settings(const std::string& text) {
   return parts;
 }
 
-// `left` with the setting `name` of `right` (already read) as its own.
-SideSettings moved_to_left(const SideSettings& right, const std::string& name, SideSettings left) {
-  if (name == "iterations") left.iterations = right.iterations;
-  if (name == "chebyshev") left.chebyshev = right.chebyshev;
-  if (name == "solver") left.solver = right.solver;
-  if (name == "dt") left.dt = right.dt;
-  if (name == "k") left.k = right.k;
-  return left;
-}
-
-double value_in(const std::string& name, const std::string& text, const ValueRange& range) {
-  const std::optional<double> value = parse_number<double>(text);
-  if (!value || !range.contains(*value)) {
-    throw InputError("--compare: " + name + ": expected " + expected_in(range) + ", got '" + text +
-                     "'");
-  }
-  return *value;
-}
-
 }  // namespace
-
-SimulationParams SideSettings::applied_to(SimulationParams params) const {
-  if (iterations) params.iterations = *iterations;
-  if (chebyshev) params.chebyshev = *chebyshev;
-  if (solver) params.solver = *solver;
-  if (dt) params.dt = *dt;
-  if (k) params.k = *k;
-  return params;
-}
 
 CompareSettings parse_compare_settings(const std::string& text) {
   CompareSettings settings;
@@ -85,33 +55,9 @@ CompareSettings parse_compare_settings(const std::string& text) {
     named.push_back(name);
     if (times == 1) {
       // The first value moves to the left side, and this one is read for the right.
-      settings.left = moved_to_left(settings, name, settings.left);
+      settings.left.take(settings, name);
     }
-    if (name == "iterations") {
-      const std::optional<long> count = parse_number<long>(value);
-      if (!count || *count < 1 || *count > Simulation::max_iterations) {
-        throw InputError("--compare: iterations: expected a whole number from 1 to " +
-                         std::to_string(Simulation::max_iterations) + ", got '" + value + "'");
-      }
-      settings.iterations = static_cast<int>(*count);
-    } else if (name == "chebyshev") {
-      if (value == "on" || value == "true" || value == "1") {
-        settings.chebyshev = true;
-      } else if (value == "off" || value == "false" || value == "0") {
-        settings.chebyshev = false;
-      } else {
-        throw InputError("--compare: chebyshev: expected on or off, got '" + value + "'");
-      }
-    } else if (name == "solver") {
-      settings.solver = parse_solver("--compare: solver", value);
-    } else if (name == "dt") {
-      settings.dt = value_in(name, value, limits::time_step);
-    } else if (name == "k") {
-      settings.k = value_in(name, value, limits::stiffness);
-    } else {
-      throw InputError("--compare: unknown setting '" + name +
-                       "' (expected iterations, solver, chebyshev, dt or k)");
-    }
+    settings.set(name, value, "--compare");
   }
   return settings;
 }

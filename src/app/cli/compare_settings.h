@@ -4,33 +4,22 @@
 #include <optional>
 #include <string>
 
+#include "app/cli/settings_overrides.h"
 #include "sim/simulation.h"
 
 namespace wobble {
 
-// The settings a class compares, as one side of the split view has them; each given or not.
-struct SideSettings {
-  std::optional<int> iterations;
-  std::optional<bool> chebyshev;
-  std::optional<std::string> solver;  // a registered solver's name (app/cli/solver_choice.h)
-  std::optional<double> dt;           // s
-  std::optional<double> k;            // N/m
-
-  bool empty() const { return !iterations && !chebyshev && !solver && !dt && !k; }
-  // `params` with these settings in place of its own.
-  SimulationParams applied_to(SimulationParams params) const;
-};
-
 // What the right side of the split view changes from the left (its own settings, inherited),
 // and what --compare set on the left side: a setting named twice gives the left side its first
 // value and the right side its second ("solver=local-global,solver=lbfgs").
-struct CompareSettings : SideSettings {
-  SideSettings left;
+struct CompareSettings : SettingsOverrides {
+  SettingsOverrides left;
 };
 
 // Parses --compare's value: settings separated by commas or spaces, each `name=value` with
 // name iterations (1 to Simulation::max_iterations), solver (local-global or lbfgs), chebyshev
-// (on/off, true/false, 1/0), dt or k (within sim/value_limits.h). A setting named once is the
+// (on/off, true/false, 1/0), dt or k (within sim/value_limits.h), or an added setting's name
+// (within its range; SettingsOverrides::set reads them all). A setting named once is the
 // right side's; named twice, the first is the left side's and the second the right side's.
 // Throws InputError naming --compare, the setting and what was expected.
 CompareSettings parse_compare_settings(const std::string& text);

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "app/cli/scene_catalog.h"
+#include "app/headless/render_offscreen.h"
+#include "app/interaction/drag_script.h"
 #include "app/outputs/image_outputs.h"
 #include "app/outputs/instrument_csv.h"
 #include "app/outputs/obj_sequence.h"
-#include "app/headless/render_offscreen.h"
 #include "app/outputs/run_statistics.h"
-#include "app/interaction/drag_script.h"
 #include "app/viewer/viewer.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
@@ -77,12 +77,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   const ObjSequence obj_sequence(command.export_obj_sequence);
 
   Scene scene = open_scene(command);
-  SimulationParams params = scene.params;
-  if (command.k) params.k = *command.k;
-  if (command.dt) params.dt = *command.dt;
-  if (command.iterations) params.iterations = *command.iterations;
-  if (command.chebyshev) params.chebyshev = true;
-  if (command.solver) params.solver = *command.solver;
+  const SimulationParams params = command.settings.applied_to(scene.params);
   const auto simulation_pointer = naming_scene(command.scene, [&] {
     return std::make_unique<Simulation>(scene.network, scene.pins, params, scene.initial_velocity);
   });

@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "sim/parallel/worker_pool.h"
+#include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
@@ -79,6 +80,9 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"threads", shared_thread_setting().threads},
       {"threads_from", shared_thread_setting().source},
   };
+  // Each added setting's value (sim/settings/setting_registry.h), by its key.
+  for (const SettingSpec& spec : added_settings())
+    statistics[setting_key(spec)] = setting_value(params, spec.name);
   for (const auto& [key, values] : times.figures)
     statistics[key + "_median"] = median(values);
   return statistics;

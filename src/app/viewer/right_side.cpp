@@ -10,6 +10,7 @@
 
 #include "app/cli/solver_choice.h"
 #include "app/viewer/quantity_colors.h"
+#include "app/viewer/side_settings.h"
 
 namespace wobble {
 
@@ -44,13 +45,8 @@ void RightSide::start_compare(const Scene& scene, const Simulation& left,
   warning_.clear();
   samples_ = RightSideSamples();
   sync(left);
-  const SimulationParams& params = simulation_->params();
   panel_.split = true;
-  panel_.right_k = static_cast<float>(params.k);
-  panel_.right_dt = static_cast<float>(params.dt);
-  panel_.right_iterations = params.iterations;
-  panel_.right_solver = solver_index(params.solver);
-  panel_.right_chebyshev = params.chebyshev;
+  show_settings(simulation_->params(), panel_.right);
 }
 
 void RightSide::start_student(const Scene& scene, const Simulation& left) {
@@ -86,20 +82,13 @@ CompareSettings RightSide::settings() const {
   settings.solver = params.solver;
   settings.dt = params.dt;
   settings.k = params.k;
+  settings.added = params.added_settings;
   return settings;
 }
 
 void RightSide::apply() {
-  SplitSettings& panel = panel_;
   Simulation& right = *simulation_;
-  const SimulationParams& params = right.params();
-  if (static_cast<float>(params.k) != panel.right_k) right.set_k(panel.right_k);
-  if (static_cast<float>(params.dt) != panel.right_dt) right.set_dt(panel.right_dt);
-  panel.right_iterations = std::min(panel.right_iterations, right.max_iterations_for_mesh());
-  if (params.iterations != panel.right_iterations) right.set_iterations(panel.right_iterations);
-  const std::string solver = solver_names().at(panel.right_solver);
-  if (params.solver != solver) right.set_solver(solver);
-  if (params.chebyshev != panel.right_chebyshev) right.set_chebyshev(panel.right_chebyshev);
+  right.apply(settings_from_sliders(right.params(), panel_.right, right.max_iterations_for_mesh()));
 }
 
 void RightSide::record(bool convergence, bool energy) {
@@ -145,25 +134,17 @@ void RightSide::sync(const Simulation& left) {
         collider_anchor(left.colliders()[c]) - collider_anchor(right.colliders()[c]);
     if (!offset.isZero(0.0)) right.translate_collider(static_cast<int>(c), offset);
   }
+  // The environment is the left side's; what each side steps with (k, dt, iterations, the
+  // solver, Chebyshev, the added settings) stays the right side's own.
   const SimulationParams& from = left.params();
-  const SimulationParams& to = right.params();
-  if (from.gravity != to.gravity || from.gravity_model != to.gravity_model) {
-    right.set_gravity(from.gravity, from.gravity_model);
-  }
-  if (from.damping != to.damping) right.set_damping(from.damping);
-  if (from.contact.friction != to.contact.friction) right.set_friction(from.contact.friction);
-  const WindParams& wind = from.wind;
-  const WindParams& right_wind = to.wind;
-  if (wind.on != right_wind.on || wind.model != right_wind.model ||
-      wind.velocity != right_wind.velocity || wind.gusts != right_wind.gusts ||
-      wind.drag != right_wind.drag || wind.lift != right_wind.lift ||
-      wind.air_density != right_wind.air_density) {
-    right.set_wind(wind);
-  }
-  const SelfCollisionParams& self = from.self_collision;
-  if (self.on != to.self_collision.on || self.thickness != to.self_collision.thickness) {
-    right.set_self_collision(self);
-  }
+  SimulationParams wanted = right.params();
+  wanted.gravity = from.gravity;
+  wanted.gravity_model = from.gravity_model;
+  wanted.damping = from.damping;
+  wanted.contact.friction = from.contact.friction;
+  wanted.wind = from.wind;
+  wanted.self_collision = from.self_collision;
+  right.apply(wanted);
 }
 
 void RightSide::advance(const Simulation& left, double seconds) {

@@ -9,6 +9,7 @@
 #include "app/cli/scene_catalog.h"
 #include "app/cli/solver_choice.h"
 #include "app/student/student_server.h"
+#include "app/viewer/side_settings.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
 #include "sim/parallel/worker_pool.h"
@@ -37,11 +38,7 @@ Viewer open_viewer(const CommandLine& command) {
 
 ViewerSettings viewer_settings(const CommandLine& command) {
   ViewerSettings settings;
-  settings.k = command.k;
-  settings.dt = command.dt;
-  settings.iterations = command.iterations;
-  settings.chebyshev = command.chebyshev;
-  settings.solver = command.solver;
+  settings.settings = command.settings;
   settings.layers.wireframe = command.wireframe;
   settings.layers.springs = command.springs;
   settings.layers.points = command.points;
@@ -62,11 +59,7 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
       right_(settings.student_server) {
   for (const std::string& source : scene_sources_)
     scene_labels_.push_back(scene_label(source));
-  if (settings.k) scene.params.k = *settings.k;
-  if (settings.dt) scene.params.dt = *settings.dt;
-  if (settings.iterations) scene.params.iterations = *settings.iterations;
-  if (settings.chebyshev) scene.params.chebyshev = true;
-  if (settings.solver) scene.params.solver = *settings.solver;
+  scene.params = settings.settings.applied_to(scene.params);
   // What --compare set for the left side ("solver=local-global,solver=lbfgs": the first).
   if (settings.compare) scene.params = settings.compare->left.applied_to(scene.params);
   panel_.surface = settings.layers.surface;
@@ -143,12 +136,8 @@ void Viewer::load(Scene scene) {
   }
   panel_.scene = static_cast<int>(
       std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) - scene_labels_.begin());
-  panel_.k = static_cast<float>(scene_.params.k);
-  panel_.dt = static_cast<float>(scene_.params.dt);
-  panel_.iterations = scene_.params.iterations;
+  show_settings(scene_.params, panel_);
   panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
-  panel_.solver = solver_index(scene_.params.solver);
-  panel_.chebyshev = scene_.params.chebyshev;
   show_environment_in_panel();
 
   const SpringNetwork& network = scene_.network;

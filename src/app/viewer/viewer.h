@@ -35,11 +35,9 @@ namespace wobble {
 
 // How the viewer starts: overrides of the scene's parameters, and what to show.
 struct ViewerSettings {
-  std::optional<double> k, dt;
-  std::optional<int> iterations;
-  bool chebyshev = false;  // turn Chebyshev acceleration on
-  // The step solver by its registered name (app/cli/solver_choice.h); unset: the scene's.
-  std::optional<std::string> solver;
+  // What the command line changes of the first scene's settings (k, dt, iterations, solver,
+  // Chebyshev, added settings).
+  SettingsOverrides settings;
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
@@ -239,10 +237,13 @@ class Viewer {
     scene_.notes.push_back(what);
     notices_.post(what, notice_clock());
   }
+  // The panel's settings to the simulation, as one settings value (Simulation::apply).
   void apply_panel_settings();
   // viewer_environment.cpp: damping, friction, wind and colliders.
   void show_environment_in_panel();
-  void apply_environment_settings();
+  // The environment section's values into `wanted`; returns whether the wind was turned on or
+  // off (the panel then shows the wind it got: the breeze, or the scene's).
+  bool environment_settings(SimulationParams& wanted);
   // viewer_instruments.cpp: the convergence and energy plots.
   void update_recording();
   void show_instruments(float ui_scale);

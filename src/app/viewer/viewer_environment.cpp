@@ -21,21 +21,20 @@ void Viewer::show_environment_in_panel() {
   panel_.self_collision_mm = static_cast<float>(1000.0 * params.self_collision.thickness);
 }
 
-void Viewer::apply_environment_settings() {
-  const SimulationParams& params = host_.simulation().params();
-  // Damping re-factorizes Q; friction and wind cost nothing.
-  if (static_cast<float>(params.damping) != panel_.damping)
-    host_.simulation().set_damping(panel_.damping);
+bool Viewer::environment_settings(SimulationParams& wanted) {
+  const SimulationParams params = wanted;
+  // Damping re-factorizes Q; friction and wind cost nothing (Simulation::apply).
+  if (static_cast<float>(params.damping) != panel_.damping) wanted.damping = panel_.damping;
   if (static_cast<float>(params.contact.friction) != panel_.friction) {
-    host_.simulation().set_friction(panel_.friction);
+    wanted.contact.friction = panel_.friction;
   }
+  bool wind_toggled = false;
   if (params.wind.on != panel_.wind) {
     // The checkbox does what the W key does, breeze included.
-    host_.simulation().set_wind(toggled_wind(params.wind));
-    show_environment_in_panel();
+    wanted.wind = toggled_wind(params.wind);
+    wind_toggled = true;
   } else if (panel_.wind_speed != shown_wind_speed_ || panel_.wind_heading != shown_wind_heading_) {
-    host_.simulation().set_wind(
-        wind_with_speed_and_heading(params.wind, panel_.wind_speed, panel_.wind_heading));
+    wanted.wind = wind_with_speed_and_heading(params.wind, panel_.wind_speed, panel_.wind_heading);
     shown_wind_speed_ = panel_.wind_speed;
     shown_wind_heading_ = panel_.wind_heading;
   }
@@ -53,9 +52,10 @@ void Viewer::apply_environment_settings() {
       const ValueRange& range = limits::self_collision_thickness;
       changed.thickness = std::clamp(1e-3 * panel_.self_collision_mm, range.low, range.high);
     }
-    host_.simulation().set_self_collision(changed);
+    wanted.self_collision = changed;
     panel_.self_collision_mm = static_cast<float>(1000.0 * changed.thickness);
   }
+  return wind_toggled;
 }
 
 void Viewer::place_ground() {

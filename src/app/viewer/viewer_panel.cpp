@@ -6,6 +6,7 @@
 
 #include "app/cli/solver_choice.h"
 #include "app/interaction/environment_controls.h"
+#include "app/viewer/side_settings.h"
 #include "app/viewer/viewer.h"
 
 namespace wobble {
@@ -100,26 +101,23 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
 }
 
 void Viewer::apply_panel_settings() {
-  // Each setter costs only what it must: k and dt a numeric re-factorization, the rest nothing.
-  const SimulationParams& params = host_.simulation().params();
-  if (static_cast<float>(params.k) != panel_.k) host_.simulation().set_k(panel_.k);
-  if (static_cast<float>(params.dt) != panel_.dt) {
-    host_.simulation().set_dt(panel_.dt);
-    host_.restart_clock();
-  }
-  // The slider reaches 100; a mesh whose step would pass limits::max_step_work stops short.
-  panel_.iterations = std::min(panel_.iterations, host_.simulation().max_iterations_for_mesh());
-  if (params.iterations != panel_.iterations) host_.simulation().set_iterations(panel_.iterations);
-  // Another solver takes over from the next step, from the state this one left.
-  const std::string solver = solver_names().at(panel_.solver);
-  if (params.solver != solver) host_.simulation().set_solver(solver);
-  if (params.chebyshev != panel_.chebyshev) host_.simulation().set_chebyshev(panel_.chebyshev);
+  // The panel's settings as one settings value; Simulation::apply does what the difference needs
+  // (k and dt a numeric re-factorization, another solver takes over from the next step, from the
+  // state this one left), and nothing when there is none. The iterations slider reaches 100; a
+  // mesh whose step would pass limits::max_step_work stops short.
+  Simulation& simulation = host_.simulation();
+  const SimulationParams& params = simulation.params();
+  SimulationParams wanted =
+      settings_from_sliders(params, panel_, simulation.max_iterations_for_mesh());
   // The slider is gravity's strength: the scene's direction stays, sideways part included.
   if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
-    host_.simulation().set_gravity(gravity_with_magnitude(scene_.params.gravity, panel_.gravity),
-                                   params.gravity_model);
+    wanted.gravity = gravity_with_magnitude(scene_.params.gravity, panel_.gravity);
   }
-  apply_environment_settings();
+  const bool wind_toggled = environment_settings(wanted);
+  const bool new_dt = wanted.dt != params.dt;
+  simulation.apply(wanted);
+  if (new_dt) host_.restart_clock();
+  if (wind_toggled) show_environment_in_panel();
   apply_split_settings();
 }
 

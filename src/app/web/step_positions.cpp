@@ -13,10 +13,7 @@ namespace wobble {
 
 void step_positions(const CommandLine& command, std::ostream& out) {
   const Scene scene = open_scene(command);
-  SimulationParams params = scene.params;
-  if (command.k) params.k = *command.k;
-  if (command.dt) params.dt = *command.dt;
-  if (command.iterations) params.iterations = *command.iterations;
+  const SimulationParams params = command.settings.applied_to(scene.params);
   Simulation simulation(scene.network, scene.pins, params, scene.initial_velocity);
   const long frames = command.frames.value_or(60);
   std::vector<double> step_ms;

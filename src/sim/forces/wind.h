@@ -68,7 +68,7 @@ class CourseWind : public StepTerm {
 
 struct TermSetup;
 
-// The registered factory (sim/terms/registered_terms.cpp): the wind of params.wind, course or
+// The registered factory (sim/registered_terms.cpp): the wind of params.wind, course or
 // aerodynamic, or nullptr when it is off.
 std::unique_ptr<StepTerm> make_wind_force(const TermSetup& setup);
 

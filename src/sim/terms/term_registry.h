@@ -27,7 +27,7 @@ struct TermEntry {
   TermFactory make;
 };
 
-// Wobble's own made terms (the forces: wind), one line each in registered_terms.cpp. The pins
+// Wobble's own made terms (the forces: wind), one line each in sim/registered_terms.cpp. The pins
 // and contact are the Simulation's own members, since its API edits them.
 const std::vector<TermEntry>& built_in_terms();
 
