@@ -1,12 +1,11 @@
 #include "app/headless/render_offscreen.h"
 
-#include <backends/imgui_impl_opengl3.h>
-#include <imgui.h>
-
 #include <chrono>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
+#include "app/viewer/frame_loop.h"
 #include "platform/egl_context.h"
 #include "render/offscreen_target.h"
 
@@ -14,31 +13,83 @@ namespace wobble {
 
 namespace {
 
-// An ImGui context driven by hand: no platform backend, a fixed display size and a fixed frame
-// time, so the panel is laid out the same way on every run.
-class HeadlessUi {
- public:
-  HeadlessUi(int width, int height) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-    io.DeltaTime = 1.0f / 60.0f;
-    ImGui_ImplOpenGL3_Init("#version 330 core");
-  }
-  ~HeadlessUi() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui::DestroyContext();
-  }
-  HeadlessUi(const HeadlessUi&) = delete;
-  HeadlessUi& operator=(const HeadlessUi&) = delete;
-};
-
 // Frees the viewer's GL objects before the context goes, however the loop ends.
 struct RendererAttachment {
   explicit RendererAttachment(Viewer& viewer) : viewer(viewer) { viewer.attach_renderer(); }
   ~RendererAttachment() { viewer.detach_renderer(); }
   Viewer& viewer;
+};
+
+// An offscreen target as draw_frame's host: no input, a clock that counts frames, one step a
+// frame, and the picture read back for the images and files a frame writes.
+class OffscreenHost : public FrameHost {
+ public:
+  OffscreenHost(OffscreenTarget& target, const OffscreenOptions& options, bool imgui,
+                ImageOutputs* outputs, OffscreenReport* report)
+      : target_(target), options_(options), imgui_(imgui), outputs_(outputs), report_(report) {
+    image_.width = options.width;
+    image_.height = options.height;
+  }
+
+  std::vector<InputEvent> poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
+    ++frame_;
+    return {};
+  }
+  // Nothing in the images depends on the wall clock.
+  double now() const override { return static_cast<double>(frame_) / 60.0; }
+  void sizes(int& width, int& height, Eigen::Vector2f& window) override {
+    width = options_.width;
+    height = options_.height;
+    window = Eigen::Vector2f(static_cast<float>(width), static_cast<float>(height));
+  }
+  bool uses_imgui() const override { return imgui_; }
+  // Without --ui, only what ImGui draws over the scene: the split view's labels and the legend.
+  bool builds_panel() const override { return options_.ui; }
+  PanelStats timings(const FrameMeters& /*meters*/) const override {
+    PanelStats timings;
+    timings.show_timings = false;  // the wall clock stays out of the pixels
+    return timings;
+  }
+  bool advance(Viewer& viewer, double /*now*/) override {
+    viewer.advance();
+    // A rolled-back step stops the run: the frames so far stay written, nothing else is.
+    const StepStatus status = viewer.simulation().last_step_status();
+    if (status != StepStatus::ok) {
+      throw std::runtime_error("frame " + std::to_string(frame_) + ": " +
+                               Simulation::describe(status));
+    }
+    return true;
+  }
+  void bind_target() override {
+    render_start_ = std::chrono::steady_clock::now();
+    target_.bind();
+  }
+  void present(Viewer& /*viewer*/, bool /*drawn*/) override {
+    const bool last = frame_ == options_.frames;
+    if (last || (outputs_ != nullptr && outputs_->wants(last))) {
+      target_.read_rgba(image_.pixels);
+    } else {
+      target_.finish();
+    }
+    if (report_) {
+      report_->render_ms.push_back(std::chrono::duration<double, std::milli>(
+                                       std::chrono::steady_clock::now() - render_start_)
+                                       .count());
+    }
+    if (outputs_ != nullptr && outputs_->wants(last)) outputs_->write(frame_, last, image_);
+  }
+
+  RgbaImage& image() { return image_; }
+
+ private:
+  OffscreenTarget& target_;
+  const OffscreenOptions& options_;
+  const bool imgui_;
+  ImageOutputs* outputs_;
+  OffscreenReport* report_;
+  long frame_ = 0;
+  RgbaImage image_;
+  std::chrono::steady_clock::time_point render_start_;
 };
 
 }  // namespace
@@ -51,64 +102,20 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   // ImGui draws the panel, the split view's corner labels even without the panel, and the colour
   // legend whenever the shape is coloured by a quantity.
   const bool legend = viewer.color_by() != ColorQuantity::material;
-  std::unique_ptr<HeadlessUi> ui;
-  if (options.ui || viewer.has_overlays() || legend) {
-    ui = std::make_unique<HeadlessUi>(options.width, options.height);
+  const bool imgui = options.ui || viewer.has_overlays() || legend;
+  std::unique_ptr<ImGuiSession> ui;
+  if (imgui) {
+    ui = std::make_unique<ImGuiSession>(
+        nullptr, "#version 330 core", 1.0f,
+        Eigen::Vector2f(static_cast<float>(options.width), static_cast<float>(options.height)));
   }
   if (report) report->context = context.description();
 
-  const Eigen::Vector2f size(static_cast<float>(options.width), static_cast<float>(options.height));
-  PanelStats timings;
-  timings.show_timings = false;  // the wall clock stays out of the pixels
-  RgbaImage image;
-  image.width = options.width;
-  image.height = options.height;
-  for (long frame = 1; frame <= options.frames; ++frame) {
-    const bool last = frame == options.frames;
-    if (ui) {
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui::NewFrame();
-      if (options.ui) {
-        viewer.build_ui(timings, 1.0f);
-      } else {
-        viewer.draw_overlays(1.0f);
-      }
-    }
-    viewer.advance();
-    // A rolled-back step stops the run: the frames so far stay written, nothing else is.
-    const StepStatus status = viewer.simulation().last_step_status();
-    if (status != StepStatus::ok) {
-      throw std::runtime_error("frame " + std::to_string(frame) + ": " +
-                               Simulation::describe(status));
-    }
-    if (options.obj_sequence != nullptr) {
-      options.obj_sequence->write(frame, viewer.simulation().positions(), viewer.scene().network);
-    }
-    if (options.instruments != nullptr) options.instruments->record(frame, viewer.simulation());
-    if (report) report->times.add(viewer.simulation().last_step_timing());
-    if (ui) viewer.build_legend(1.0f);
-
-    const auto start = std::chrono::steady_clock::now();
-    target.bind();
-    viewer.render(options.width, options.height, size, 1.0f);
-    if (ui) {
-      ImGui::Render();
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    }
-    const bool read = last || (outputs != nullptr && outputs->wants(last));
-    if (read) {
-      target.read_rgba(image.pixels);
-    } else {
-      target.finish();
-    }
-    if (report) {
-      report->render_ms.push_back(
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count());
-    }
-    if (outputs != nullptr && outputs->wants(last)) outputs->write(frame, last, image);
-  }
-  return image;
+  OffscreenHost host(target, options, imgui, outputs, report);
+  FrameMeters meters;
+  for (long frame = 1; frame <= options.frames; ++frame)
+    draw_frame(viewer, host, meters, 1.0f);
+  return host.image();
 }
 
 }  // namespace wobble

@@ -14,6 +14,7 @@
 #include "app/outputs/instrument_csv.h"
 #include "app/outputs/obj_sequence.h"
 #include "app/outputs/run_statistics.h"
+#include "app/outputs/step_outputs.h"
 #include "app/viewer/viewer.h"
 #include "io/atomic_file.h"
 #include "io/write_obj.h"
@@ -36,14 +37,17 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   viewer.set_convergence_required(instruments.wants_convergence());
   instruments.start(viewer.simulation());
   print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
+  // Each step's files and rows, as the window writes them.
+  StepOutputs step_outputs(obj_sequence, instruments, command.stats);
+  step_outputs.reserve(frames);
+  viewer.set_step_observer(
+      [&](const Simulation& simulation) { step_outputs.after_step(simulation); });
 
   OffscreenOptions options;
   options.width = command.width;
   options.height = command.height;
   options.frames = frames;
   options.ui = command.ui;
-  options.obj_sequence = &obj_sequence;
-  options.instruments = &instruments;
   OffscreenReport report;
   try {
     render_offscreen(viewer, options, &outputs, &report);
@@ -59,7 +63,8 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
               viewer.scene().network.E);
   }
   if (command.stats) {
-    nlohmann::ordered_json stats = run_statistics(simulation, viewer.scene(), frames, report.times);
+    nlohmann::ordered_json stats =
+        run_statistics(simulation, viewer.scene(), frames, step_outputs.times());
     stats["render_ms_median"] = median(report.render_ms);
     stats["width"] = command.width;
     stats["height"] = command.height;
@@ -89,8 +94,8 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
   instruments.start(simulation);
   print_notes(scene, progress);  // everything was accepted: the notes cannot precede a refusal
 
-  StepTimes times;
-  if (command.stats) times.reserve(frames);
+  StepOutputs step_outputs(obj_sequence, instruments, command.stats);
+  step_outputs.reserve(frames);
   for (long frame = 0; frame < frames; ++frame) {
     drags.before_step(simulation, frame + 1);
     const StepStatus status = simulation.step();
@@ -102,9 +107,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
       throw std::runtime_error("frame " + std::to_string(frame + 1) + ": " +
                                Simulation::describe(status));
     }
-    obj_sequence.write(frame + 1, simulation.positions(), scene.network);
-    instruments.record(frame + 1, simulation);
-    if (command.stats) times.add(simulation.last_step_timing());
+    step_outputs.after_step(simulation);
   }
 
   instruments.write();
@@ -112,7 +115,7 @@ int run_headless(const CommandLine& command, std::ostream& out, std::ostream& pr
     write_obj(command.export_obj, simulation.positions(), scene.network.F, scene.network.E);
   }
   if (command.stats) {
-    out << run_statistics(simulation, scene, frames, times).dump() << "\n";
+    out << run_statistics(simulation, scene, frames, step_outputs.times()).dump() << "\n";
   }
   return 0;
 }

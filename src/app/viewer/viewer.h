@@ -52,10 +52,11 @@ struct ViewerSettings {
 // The start-up settings a command line asks for.
 ViewerSettings viewer_settings(const CommandLine& command);
 
-// Everything the window and the headless mode share: the scene and its simulation, the camera,
-// the mouse and keys, the ImGui panel, and the renderer. Only the GL context and the frame loop
-// around it differ between the two modes. One frame is, in this order:
-//   handle_events → build_ui → advance (headless) or exchange (window) → build_legend → render
+// Everything the window, the page and the headless mode share: the scene and its simulation, the
+// camera, the mouse and keys, the ImGui panel, and the renderer. One frame is draw_frame's
+// (app/viewer/frame_loop.h), in this order, each mode a FrameHost under it:
+//   handle_events → build_ui → advance (headless) or exchange (window, page) → build_legend →
+//   render
 //
 // Its components each own their state and draw their own part, called by the viewer in that
 // order: ViewCamera (the camera), PickAndDrag (the mouse), SaveAndRecord (the files), Instruments

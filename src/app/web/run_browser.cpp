@@ -4,8 +4,6 @@
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <emscripten.h>
 #include <emscripten/html5.h>
 #include <imgui.h>
@@ -17,7 +15,7 @@
 #include <vector>
 
 #include "app/cli/scene_catalog.h"
-#include "app/viewer/frame_meters.h"
+#include "app/viewer/frame_loop.h"
 #include "app/viewer/viewer.h"
 #include "platform/glfw_window.h"
 
@@ -36,15 +34,6 @@ void fill_missing_gl_functions() {
   if (glad_glTexBuffer == nullptr) glad_glTexBuffer = no_texture_buffer;
 }
 
-// Everything a frame needs, kept alive after main returns.
-struct BrowserApp {
-  Viewer viewer;
-  std::unique_ptr<GlfwWindow> window;
-  FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
-  std::string title;
-  long frames_drawn = 0;
-};
-
 double seconds_now() {
   return 1e-3 * emscripten_get_now();
 }
@@ -62,65 +51,69 @@ void follow_page_size(GlfwWindow& window) {
   }
 }
 
-// One frame, in run_window.cpp's order.
-void frame(BrowserApp& app) {
-  Viewer& viewer = app.viewer;
-  GlfwWindow& window = *app.window;
-  follow_page_size(window);
-  // 1. poll
-  const std::vector<InputEvent> events = window.poll_events();
-  const double now = seconds_now();
-  app.meters.start_frame(now);
-  // Files dropped on the page (copied into the page's file system by emscripten's GLFW).
-  for (const std::string& path : window.take_dropped_paths())
-    viewer.open_file(path);
-  int width = 0, height = 0;
-  window.window_size(width, height);
-  const Eigen::Vector2f window_size(static_cast<float>(width), static_cast<float>(height));
-  // 2. new frame
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-  ImGui::NewFrame();
-  const ImGuiIO& io = ImGui::GetIO();
-  viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window_size);
-  // 3. UI
-  const float ui_scale = 1.0f;
-  // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens it),
-  // so that the scene shows. The panel is the first window build_ui begins.
-  if (app.frames_drawn == 0 && width < 600) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
-  viewer.build_ui(app.meters.timings(), ui_scale);
-  // 4. hand the changes to the simulation, take the latest state, step (on this thread)
-  constexpr double frame_seconds = 1.0 / 60.0;
-  if (viewer.exchange(now, frame_seconds)) {
-    const PanelStats shown = viewer.stats();
-    app.meters.real_time.record(now, shown.simulated_seconds, shown.steps);
+// The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, steps on this
+// thread, and the canvas the browser shows once the frame returns.
+class PageHost : public FrameHost {
+ public:
+  explicit PageHost(GlfwWindow& window) : window_(window) {}
+  std::vector<InputEvent> poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
+    follow_page_size(window_);
+    return window_.poll_events();
   }
-  viewer.build_legend(ui_scale);
-  if ("Wobble: " + viewer.scene().name != app.title) {
-    app.title = "Wobble: " + viewer.scene().name;
-    window.set_title(app.title);
+  // Copied into the page's file system by emscripten's GLFW.
+  std::vector<std::string> take_dropped_paths() override { return window_.take_dropped_paths(); }
+  double now() const override { return seconds_now(); }
+  void sizes(int& width, int& height, Eigen::Vector2f& window) override {
+    window_.window_size(width, height);
+    window = Eigen::Vector2f(static_cast<float>(width), static_cast<float>(height));
+    width_ = width;
   }
-  // 5. render; the browser shows the canvas once this returns
-  ImGui::Render();
-  if (width > 0 && height > 0) {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    viewer.render(width, height, window_size, 1.0f);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  void new_platform_frame() override { ImGuiSession::new_glfw_frame(); }
+  void before_panel() override {
+    // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens
+    // it), so that the scene shows. The panel is the first window build_ui begins.
+    if (frames_drawn_ == 0 && width_ < 600) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
   }
-  app.meters.end_frame(now, seconds_now());
-  // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they show.
-  ++app.frames_drawn;
-  EM_ASM(
-      {
-        Module.wobbleFrames = $0;
-        Module.wobbleSteps = $1;
-      },
-      app.frames_drawn, static_cast<double>(viewer.shown_steps()));
-}
+  bool advance(Viewer& viewer, double now) override {
+    constexpr double frame_seconds = 1.0 / 60.0;
+    return viewer.exchange(now, frame_seconds);
+  }
+  void set_title(const std::string& title) override {
+    if (title != title_) window_.set_title(title_ = title);
+  }
+  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+  void present(Viewer& viewer, bool /*drawn*/) override {
+    // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they
+    // show.
+    ++frames_drawn_;
+    EM_ASM(
+        {
+          Module.wobbleFrames = $0;
+          Module.wobbleSteps = $1;
+        },
+        frames_drawn_, static_cast<double>(viewer.shown_steps()));
+  }
 
-void frame_or_report(void* app) {
+ private:
+  GlfwWindow& window_;
+  std::string title_;
+  int width_ = 0;
+  long frames_drawn_ = 0;
+};
+
+// Everything a frame needs, kept alive after main returns.
+struct BrowserApp {
+  Viewer viewer;
+  std::unique_ptr<GlfwWindow> window;
+  std::unique_ptr<ImGuiSession> ui;
+  std::unique_ptr<PageHost> host;
+  FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
+};
+
+void frame_or_report(void* app_pointer) {
+  BrowserApp& app = *static_cast<BrowserApp*>(app_pointer);
   try {
-    frame(*static_cast<BrowserApp*>(app));
+    draw_frame(app.viewer, *app.host, app.meters, 1.0f);
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << error.what() << "\n";
   }
@@ -130,19 +123,18 @@ void frame_or_report(void* app) {
 
 void run_browser(const CommandLine& command) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
-  app.reset(new BrowserApp{open_viewer(command), nullptr, {}, {}, 0});
+  app.reset(new BrowserApp{open_viewer(command), nullptr, nullptr, nullptr, {}});
   app->viewer.show_notices(true);
   if (command.frames) app->viewer.set_step_limit(*command.frames);
   double css_width = 0.0, css_height = 0.0;
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
-  app->window = std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,
-                                             css_height > 0 ? static_cast<int>(css_height) : 720,
-                                             "Wobble: " + app->viewer.scene().name);
+  const std::string title = "Wobble: " + app->viewer.scene().name;
+  app->window =
+      std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,
+                                   css_height > 0 ? static_cast<int>(css_height) : 720, title);
   fill_missing_gl_functions();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // nowhere to keep it
-  ImGui_ImplGlfw_InitForOpenGL(app->window->handle(), true);
-  ImGui_ImplOpenGL3_Init("#version 300 es");
+  app->ui = std::make_unique<ImGuiSession>(app->window->handle(), "#version 300 es", 1.0f);
+  app->host = std::make_unique<PageHost>(*app->window);
   print_notes(app->viewer.scene(), std::cerr);
   app->viewer.attach_renderer();
   // 0 frames a second: the browser's own rate (requestAnimationFrame); do not simulate an

@@ -1,0 +1,91 @@
+#include "app/viewer/frame_loop.h"
+
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include "app/viewer/viewer.h"
+
+namespace wobble {
+
+FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale) {
+  FrameResult result;
+  // 1. poll
+  const std::vector<InputEvent> events = host.poll(viewer, meters);
+  result.start = host.now();
+  meters.start_frame(result.start);
+  for (const std::string& path : host.take_dropped_paths())
+    viewer.open_file(path);  // the last one stays
+  int width = 0, height = 0;
+  Eigen::Vector2f window = Eigen::Vector2f::Zero();
+  host.sizes(width, height, window);
+  result.drawn = width > 0 && height > 0;  // a minimized window has no pixels
+  // 2. new frame
+  const bool imgui = host.uses_imgui();
+  if (imgui) {
+    ImGui_ImplOpenGL3_NewFrame();
+    host.new_platform_frame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window);
+    // 3. UI
+    host.before_panel();
+    if (host.builds_panel()) {
+      viewer.build_ui(host.timings(meters), ui_scale);
+    } else {
+      viewer.draw_overlays(ui_scale);
+    }
+  } else {
+    viewer.handle_events(events, false, false, window);
+  }
+  // 4. simulation
+  result.new_state = host.advance(viewer, result.start);
+  if (result.new_state) {
+    const PanelStats shown = viewer.stats();
+    meters.real_time.record(result.start, shown.simulated_seconds, shown.steps);
+  }
+  // 5. legend, title, render
+  if (imgui) viewer.build_legend(ui_scale);
+  host.set_title("Wobble: " + viewer.scene().name);
+  if (imgui) ImGui::Render();
+  if (result.drawn) {
+    host.bind_target();
+    viewer.render(width, height, window, window.x() > 0.0f ? width / window.x() : 1.0f);
+    if (imgui) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+  // 6. present
+  host.present(viewer, result.drawn);
+  meters.end_frame(result.start, host.now());
+  return result;
+}
+
+ImGuiSession::ImGuiSession(GLFWwindow* window, const char* glsl_version, float scale,
+                           const Eigen::Vector2f& display) {
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini left in whatever folder wobble was started from
+  if (scale != 1.0f) {
+    io.FontGlobalScale = scale;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+  }
+  if (window != nullptr) {
+    ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the window's callbacks
+    platform_ = true;
+  } else {
+    io.DisplaySize = ImVec2(display.x(), display.y());
+    io.DeltaTime = 1.0f / 60.0f;
+  }
+  ImGui_ImplOpenGL3_Init(glsl_version);
+}
+
+void ImGuiSession::new_glfw_frame() {
+  ImGui_ImplGlfw_NewFrame();
+}
+
+ImGuiSession::~ImGuiSession() {
+  ImGui_ImplOpenGL3_Shutdown();
+  if (platform_) ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+}  // namespace wobble
