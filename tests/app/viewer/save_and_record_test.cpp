@@ -1,0 +1,114 @@
+// SaveAndRecord on its own, in a folder of its own: F12 writes the frame drawn once, under the
+// next free number; F9 records each new state into a folder of its own and says so when it
+// stops; Ctrl+S and F11 write a scene and an OBJ that read back.
+#include "app/viewer/save_and_record.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "io/load_scene.h"
+#include "sim/shapes/builtin_scenes.h"
+#include "sim/simulation.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The test runs in a fresh folder, and goes back where it was after.
+class InFreshFolder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    previous_ = fs::current_path();
+    folder_ = fs::temp_directory_path() /
+              ("wobble_save_and_record_" + std::to_string(getpid()) + "_" +
+               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(folder_);
+    fs::create_directories(folder_);
+    fs::current_path(folder_);
+  }
+  void TearDown() override {
+    fs::current_path(previous_);
+    fs::remove_all(folder_);
+  }
+  fs::path folder_, previous_;
+};
+
+wobble::RgbaImage grey_frame() {
+  wobble::RgbaImage image;
+  image.width = 4;
+  image.height = 3;
+  image.pixels.assign(4 * 3 * 4, 128);
+  return image;
+}
+
+using SaveAndRecordTest = InFreshFolder;
+
+TEST_F(SaveAndRecordTest, F12WritesTheNextFrameDrawnOnceUnderTheNextNumber) {
+  wobble::SaveAndRecord saves;
+  int reads = 0;
+  const auto read = [&] {
+    ++reads;
+    return grey_frame();
+  };
+  EXPECT_TRUE(saves.write_frame("cloth", 1, true, read).empty()) << "nothing asked";
+  EXPECT_TRUE(saves.command(wobble::ViewerCommand::screenshot));
+  EXPECT_FALSE(saves.command(wobble::ViewerCommand::reset)) << "not its command";
+  // A minimized window draws nothing: the request is dropped, nothing read.
+  EXPECT_TRUE(saves.write_frame("cloth", 1, false, read).empty());
+  EXPECT_EQ(reads, 0);
+  saves.command(wobble::ViewerCommand::screenshot);
+  EXPECT_EQ(saves.write_frame("cloth", 2, true, read),
+            std::vector<std::string>{"saved ./wobble-cloth-0001.png"});
+  saves.command(wobble::ViewerCommand::screenshot);
+  EXPECT_EQ(saves.write_frame("cloth", 3, true, read),
+            std::vector<std::string>{"saved ./wobble-cloth-0002.png"});
+  EXPECT_TRUE(saves.write_frame("cloth", 4, true, read).empty()) << "once per press";
+  EXPECT_EQ(reads, 2);
+  EXPECT_TRUE(fs::exists("wobble-cloth-0001.png"));
+  EXPECT_TRUE(fs::exists("wobble-cloth-0002.png"));
+}
+
+TEST_F(SaveAndRecordTest, F9RecordsEachNewStateIntoAFolderOfItsOwn) {
+  wobble::SaveAndRecord saves;
+  std::ostringstream progress;
+  saves.record_into(".", progress);
+  EXPECT_TRUE(saves.command(wobble::ViewerCommand::toggle_record));
+  EXPECT_TRUE(saves.recording());
+  for (long step : {1, 1, 2, 3})  // step 1 drawn twice: one picture
+    saves.write_frame("cloth", step, true, grey_frame);
+  saves.command(wobble::ViewerCommand::toggle_record);
+  const std::vector<std::string> told = saves.write_frame("cloth", 4, true, grey_frame);
+  ASSERT_EQ(told.size(), 1u);
+  EXPECT_NE(told[0].find("3 frames"), std::string::npos) << told[0];
+  int folders = 0, frames = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(".")) {
+    if (!entry.is_directory()) continue;
+    ++folders;
+    for (const fs::directory_entry& frame : fs::directory_iterator(entry.path()))
+      frames += frame.path().extension() == ".png";
+  }
+  EXPECT_EQ(folders, 1);
+  EXPECT_EQ(frames, 3);
+}
+
+TEST_F(SaveAndRecordTest, CtrlSAndF11WriteASceneAndAnObjThatReadBack) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params);
+  for (int i = 0; i < 5; ++i)
+    simulation.step();
+  wobble::SaveAndRecord saves;
+  const wobble::SavedScene saved = saves.save_scene(scene, simulation, wobble::OrbitCamera());
+  ASSERT_FALSE(saved.path.empty()) << saved.message;
+  const wobble::Scene back = wobble::load_scene(saved.path);
+  EXPECT_EQ(back.network.V.rows(), scene.network.V.rows());
+  EXPECT_EQ(back.pins, scene.pins);
+  EXPECT_EQ(saves.export_obj(scene, simulation), "exported ./wobble-" + scene.name + "-0001.obj");
+  EXPECT_TRUE(fs::exists("wobble-" + scene.name + "-0001.obj"));
+}
+
+}  // namespace
