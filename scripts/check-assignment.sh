@@ -12,7 +12,7 @@
 # the functions (signed_incidence_matrix_dense.cpp, ...), with or without their .h files: a
 # missing .h is taken from src/sim/seed. Each file is compiled as the course compiles it, with
 # the submission's include folders first, then the checker's own stand-ins for the libigl
-# headers the template includes (src/check/course_headers), then src/sim/seed and Eigen.
+# headers the template includes (src/check/checker/course_headers), then src/sim/seed and Eigen.
 #
 # Prints a verdict line for every function, whatever happens to the others, then any notes:
 #   PASS     name
@@ -40,18 +40,18 @@
 #   --build-step-server DIR
 #                        build the step server of DIR's fast_mass_springs_step_sparse.cpp (the
 #                        reference for every other function) and print its path; it serves
-#                        steps to the viewer (src/app/student/student_step.h, src/check/step_protocol.h)
+#                        steps to the viewer (src/app/student/student_step.h, src/check/step_server/step_protocol.h)
 #   --output FILE        with --build-step-server: copy the server to FILE and print FILE
 #
 # Every compiler and checker runs in a process group of its own, under a launcher
-# (src/check/bounded_main.cpp) that kills the whole group, and whatever left it, when it ends,
+# (src/check/sandbox/bounded_main.cpp) that kills the whole group, and whatever left it, when it ends,
 # passes a limit, or the script gets SIGTERM, SIGINT or SIGHUP; the script then removes its
 # temporary folder and ends by that signal.
 set -uo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-source "$root/src/check/submission_files.sh"
-source "$root/src/check/stop_on_signal.sh"
+source "$root/src/check/checker/submission_files.sh"
+source "$root/src/check/checker/stop_on_signal.sh"
 
 cache="${XDG_CACHE_HOME:-$HOME/.cache}/wobble-check"
 # Where the cache folder's name came from, for a message when it cannot be made.
@@ -111,13 +111,13 @@ folder=${folder%/}
 [ -r "$folder" ] && [ -x "$folder" ] || die "$folder: cannot read the folder"
 
 if [ "$class_mode" = 1 ]; then
-  source "$root/src/check/grade_class.sh"
+  source "$root/src/check/checker/grade_class.sh"
   grade_class "$folder" "${output:-grades}"
   exit $?
 fi
 
-source "$root/src/check/build_checkers.sh"
-source "$root/src/check/check_submission.sh"
+source "$root/src/check/checker/build_checkers.sh"
+source "$root/src/check/checker/check_submission.sh"
 check_toolchain
 if [ "$build_server" = 1 ]; then
   build_step_server "$folder" "$output"

@@ -1,4 +1,4 @@
-// The one way a student's code is compiled and run (src/check/bounded_process.h), the
+// The one way a student's code is compiled and run (src/check/sandbox/bounded_process.h), the
 // launcher's loop (bounded_run.h) and each check's child (child_process.h): every limit ends
 // the program and is named, and nothing it started outlives it: not what stayed in its process
 // group, not what left the group (setsid), not when the caller is stopped by a signal. The
@@ -22,9 +22,9 @@
 #include <vector>
 
 #include "../io/temporary_folder.h"
-#include "check/bounded_process.h"
-#include "check/bounded_run.h"
-#include "check/child_process.h"
+#include "check/sandbox/bounded_process.h"
+#include "check/sandbox/bounded_run.h"
+#include "check/sandbox/child_process.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "check/step_protocol.h"
+#include "check/step_server/step_protocol.h"
 
 namespace wobble {
 namespace {

@@ -7,7 +7,7 @@
 
 namespace wobble {
 
-// The viewer's side of src/check/step_protocol.h: the bytes of its two requests.
+// The viewer's side of src/check/step_server/step_protocol.h: the bytes of its two requests.
 
 // The problem, sent once: V #V by 3 (m), E #E by 2, k (N/m), m #V (kg), b #b, delta_t (s).
 std::vector<char> encode_problem(const Eigen::MatrixXd& V, const Eigen::MatrixXi& E, double k,

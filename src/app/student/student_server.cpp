@@ -9,7 +9,7 @@
 #include <sstream>
 #include <vector>
 
-#include "check/bounded_process.h"
+#include "check/sandbox/bounded_process.h"
 #include "sim/input_error.h"
 
 namespace wobble {

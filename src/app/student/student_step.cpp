@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "app/student/step_messages.h"
-#include "check/bounded_process.h"
-#include "check/step_protocol.h"
+#include "check/sandbox/bounded_process.h"
+#include "check/step_server/step_protocol.h"
 
 namespace wobble {
 namespace {

@@ -33,7 +33,7 @@ grade_class() {
   mkdir -p "$output/reports" "$output/.timing" || die "$output: cannot write in it"
 
   # Wobble's side once, with every core, before the submissions share the cache.
-  source "$root/src/check/build_checkers.sh"
+  source "$root/src/check/checker/build_checkers.sh"
   check_toolchain
   compile_wobble_side
   finish_jobs

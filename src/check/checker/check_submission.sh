@@ -68,7 +68,9 @@ check_submission() {
     ar rcs "${student_archive[0]}" "${student_objects[@]}" || die "cannot write ${student_archive[0]}"
   fi
   local checker_objects=() renamed_objects=()
-  for source in "${checker_sources[@]}"; do checker_objects+=("${object[checker.$source]}"); done
+  for source in "${checker_sources[@]}" "${sandbox_linked[@]}"; do
+    checker_objects+=("${object[checker.$source]}")
+  done
   for function in "${functions[@]}"; do renamed_objects+=("${object[renamed.$function]}"); done
   declare -A checker=()
   local inputs

@@ -4,14 +4,18 @@
 # (build_step_server). check_submission.sh links and runs the checkers.
 
 seed="$root/src/sim/seed"
-check_sources="$root/src/check"
+# The checker's own sources; the sandbox every compiler and checker runs in (the launcher, the
+# child processes); the step server of the viewer's --student view.
+check_sources="$root/src/check/checker"
+sandbox_sources="$root/src/check/sandbox"
+server_sources="$root/src/check/step_server"
 course_headers="$check_sources/course_headers"
 course="$root/assets/course"
-# The checker's own sources; step_server_main.cpp is the other program's main and course_call.cpp
-# is compiled with each student file.
+# The checker's own sources (course_call.cpp is compiled with each student file), and those of
+# the sandbox it links.
 checker_sources=(check_main check_scene check_incidence check_precomputation check_step compare
-                 course_problem child_process bounded_process pin_weight step_hints
-                 course_call_unlinked)
+                 course_problem pin_weight step_hints course_call_unlinked)
+sandbox_linked=(child_process bounded_process)
 cxx=g++
 eigen=/usr/include/eigen3
 # A student's file compiles (and links) within these, besides --compile-limit seconds of wall
@@ -73,14 +77,14 @@ check_toolchain() {
 # content, its path in $launcher. Compiled in the background and waited for, so that a signal's
 # trap (stop_on_signal.sh) can end the compiler.
 build_launcher() {
-  local sources=("$check_sources/bounded_main.cpp" "$check_sources/bounded_run.cpp"
-                 "$check_sources/bounded_process.cpp")
+  local sources=("$sandbox_sources/bounded_main.cpp" "$sandbox_sources/bounded_run.cpp"
+                 "$sandbox_sources/bounded_process.cpp")
   local key
-  key=$(cat "${sources[@]}" "$check_sources/bounded_run.h" "$check_sources/bounded_process.h" |
+  key=$(cat "${sources[@]}" "$sandbox_sources/bounded_run.h" "$sandbox_sources/bounded_process.h" |
         { cat; printf '%s\n' "$toolchain_id"; } | sha256sum | cut -c1-32)
   launcher="$cache/bin/bounded-$key"
   [ -x "$launcher" ] && return 0
-  "$cxx" -std=c++17 -O2 -I "$check_sources" "${sources[@]}" -o "$launcher.tmp.$$" \
+  "$cxx" -std=c++17 -O2 -I "$sandbox_sources" "${sources[@]}" -o "$launcher.tmp.$$" \
     >"$work/launcher.log" 2>&1 &
   if wait $!; then
     mv -f "$launcher.tmp.$$" "$launcher" || die "cannot write $launcher"
@@ -260,9 +264,14 @@ compile_wobble_side() {
     compile "renamed.$function" "$seed/$function.cpp" renamed "$seed" -- "${renames[@]}"
   done
   for source in "${checker_sources[@]}"; do
-    compile "checker.$source" "$check_sources/$source.cpp" checker "$check_sources" "$seed" --
+    compile "checker.$source" "$check_sources/$source.cpp" checker "$check_sources" \
+      "$sandbox_sources" "$seed" --
   done
-  compile server "$check_sources/step_server_main.cpp" checker "$check_sources" "$seed" --
+  for source in "${sandbox_linked[@]}"; do
+    compile "checker.$source" "$sandbox_sources/$source.cpp" checker "$sandbox_sources" --
+  done
+  compile server "$server_sources/step_server_main.cpp" checker "$server_sources" \
+    "$check_sources" "$seed" --
 }
 
 # compile_student FUNCTION SOURCE FOLDER: the student's file for FUNCTION with the course's call
