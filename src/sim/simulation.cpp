@@ -111,6 +111,12 @@ StepStatus Simulation::step() {
   const StepContext context = step_context();
   colliders_.set_gravity_reach(params_.gravity.norm() * params_.dt * params_.dt);
   if (terms_.begin_step(context, next_)) refactorize();
+  // The scale the step's convergence is read against: the gradient inertia alone would have with
+  // every vertex a mean spring rest length off (along one axis), ‖m‖₂ r̄ / Δt².
+  if (record_convergence_) {
+    const double rest = r_.size() > 0 ? r_.mean() : 0.0;
+    recorder_.set_force_scale(network_.m.norm() * rest / (params_.dt * params_.dt));
+  }
   solver_->solve(step_problem(), observers_, next_, timing_);
   terms_.project(context, next_);
   terms_.report(timing_.figures);

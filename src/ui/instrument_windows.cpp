@@ -39,7 +39,8 @@ int iterations_of(const ConvergenceCurve& side) {
 }
 
 // A side's light: a disc of its colour, then its words and how far the gradient fell (its last
-// over its first), after `name` ("left: ", or nothing when there is one side).
+// over the step's scale, ConvergenceTrace::gradient_reduction), after `name` ("left: ", or
+// nothing when there is one side).
 void draw_light(const ConvergenceCurve& side, const char* name) {
   const ImVec4 color = light_color(side.light);
   const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -48,9 +49,9 @@ void draw_light(const ConvergenceCurve& side, const char* name) {
                                               0.45f * line, ImGui::GetColorU32(color));
   ImGui::Dummy(ImVec2(line, line));
   ImGui::SameLine();
-  // Two sides' lines carry their names: " of start" would no longer fit the column.
+  // Two sides' lines carry their names: " of scale" would no longer fit the column.
   ImGui::TextColored(color, "%s%s: |grad| at %.2g%s", name, convergence_label(side.light),
-                     side.reduction, name[0] == '\0' ? " of start" : "");
+                     side.reduction, name[0] == '\0' ? " of scale" : "");
 }
 
 }  // namespace

@@ -179,3 +179,29 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
 }
 
 }  // namespace
+
+namespace {
+
+// The simulated clock is the accepted steps' dt summed: a new dt changes how fast it runs from
+// then on, not what it already shows (it read steps × the current dt, so a dt slider moved
+// while paused jumped it).
+TEST(ViewerPanel, ANewDtLeavesTheSimulatedClockWhereItWas) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  for (int i = 0; i < 30; ++i)
+    f.viewer.advance();
+  const double before = f.viewer.stats().simulated_seconds;
+  EXPECT_NEAR(before, 30.0 / 60.0, 1e-12);
+  const double dt = f.viewer.simulation().params().dt;
+  const std::optional<ImVec2> slider = f.find("dt (s)");
+  ASSERT_TRUE(slider);
+  f.drag(*slider, 60.0f);
+  const double new_dt = f.viewer.simulation().params().dt;
+  ASSERT_GT(new_dt, 1.5 * dt) << "the drag changed dt";
+  EXPECT_EQ(f.viewer.stats().simulated_seconds, before) << "no step, no time";
+  f.viewer.advance();
+  EXPECT_NEAR(f.viewer.stats().simulated_seconds, before + new_dt, 1e-12);
+  EXPECT_EQ(f.viewer.stats().simulated_seconds, f.viewer.simulation().time())
+      << "the plots' time axis and the stats agree";
+}
+
+}  // namespace

@@ -172,6 +172,33 @@ TEST(ConvergenceTrace, ClassifiesByTheGradientsReduction) {
   EXPECT_EQ(classify(trace), Convergence::far);
 }
 
+// A step that barely moves is measured against the scale of the step's inertia, not against its
+// own tiny start: the default cloth hanging at rest reads partly converged (amber), as it did
+// while it swung, where before its light went red (0.13 at step 791, 0.67 at step 1544) while
+// nothing was wrong; a leftover near that scale still reads far.
+TEST(ConvergenceTrace, AClothAtRestIsNotReadAsFarFromConverged) {
+  const Scene scene = make_builtin_scene("cloth");
+  Simulation cloth(scene.network, scene.pins, scene.params);
+  for (int step = 0; step < 780; ++step)
+    cloth.step();
+  cloth.set_convergence_recording(true);
+  for (int step = 0; step < 20; ++step) {
+    cloth.step();
+    const ConvergenceTrace& trace = cloth.last_convergence();
+    ASSERT_GT(trace.force_scale, 0.0);
+    EXPECT_LT(trace.gradient_norm[0], 0.5 * trace.force_scale) << "the step barely moves";
+    EXPECT_NE(classify(trace), Convergence::far) << trace.gradient_reduction();
+  }
+
+  ConvergenceTrace trace;
+  trace.gradient_norm = {0.01, 0.02, 0.015};
+  EXPECT_GT(trace.gradient_reduction(), 0.5) << "without a scale, against its own start";
+  trace.force_scale = 1.0;
+  EXPECT_DOUBLE_EQ(trace.gradient_reduction(), 0.015);
+  trace.gradient_norm.back() = 0.5;
+  EXPECT_EQ(classify(trace), Convergence::far);
+}
+
 TEST(FrameEnergy, FreeFallingVertex) {
   SpringNetwork network;
   network.V = Eigen::MatrixXd(2, 3);

@@ -200,7 +200,8 @@ PanelStats Viewer::simulation_stats() const {
   stats.pins = host_.simulation().pin_count() - (pick_and_drag_.holds_free_vertex() ? 1 : 0);
   stats.threads = shared_thread_setting().threads;
   stats.steps = host_.simulation().steps_taken();
-  stats.simulated_seconds = host_.simulation().steps_taken() * host_.simulation().params().dt;
+  // The accepted steps' dt summed: a new dt changes the rate from now on, not the past.
+  stats.simulated_seconds = host_.simulation().time();
   stats.notes = scene_.notes;
   stats.has_colliders = !host_.simulation().colliders().empty();
   stats.aerodynamic_wind = host_.simulation().params().wind.model == WindModel::aerodynamic;

@@ -12,6 +12,7 @@ void ConvergenceRecorder::begin_step(const char* solver, bool accelerated) {
   trace_.gradient_norm.clear();
   trace_.chebyshev = accelerated;
   trace_.solver = solver;  // a registered name: static storage
+  trace_.force_scale = force_scale_;
 }
 
 void ConvergenceRecorder::measured(double energy, double gradient_norm) {

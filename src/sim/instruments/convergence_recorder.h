@@ -12,6 +12,8 @@ namespace wobble {
 class ConvergenceRecorder : public StepObserver {
  public:
   void reserve(int max_iterations);
+  // The next steps' force scale (ConvergenceTrace::force_scale, N).
+  void set_force_scale(double force_scale) { force_scale_ = force_scale; }
 
   bool wants_measures() const override { return true; }
   void begin_step(const char* solver, bool accelerated) override;
@@ -22,6 +24,7 @@ class ConvergenceRecorder : public StepObserver {
 
  private:
   ConvergenceTrace trace_;
+  double force_scale_ = 0.0;
 };
 
 }  // namespace wobble

@@ -9,8 +9,11 @@ double ConvergenceTrace::gradient_reduction() const {
   // The first iterate is a prediction: from rest its gradient is only the unbalanced external
   // force, and the first iteration, which lowers the energy, can raise the gradient tenfold.
   // The start of the step is the larger of the two.
-  const double start =
-      gradient_norm.size() > 1 ? std::max(gradient_norm[0], gradient_norm[1]) : gradient_norm[0];
+  // At rest the start's gradient is near nothing, and a leftover far too small to see would read
+  // as far from converged: the inertia's scale over a spring's length is the scale then.
+  const double start = std::max(
+      gradient_norm.size() > 1 ? std::max(gradient_norm[0], gradient_norm[1]) : gradient_norm[0],
+      force_scale);
   if (!(start > 0.0)) return 0.0;
   return gradient_norm.back() / start;
 }
