@@ -2,6 +2,8 @@
 #define WOBBLE_APP_INTERACTION_VIEW_FRAMING_H
 
 #include <Eigen/Core>
+#include <utility>
+#include <vector>
 
 #include "render/camera.h"
 
@@ -15,6 +17,12 @@ namespace wobble {
 //   panel_left, panel_right  the panel's left and right edges, in the same units from the
 //                            view's left edge
 ViewportRegion region_beside_panel(float view_width, float panel_left, float panel_right);
+
+// The same for any windows over the view (the panel, the plots' column): the widest stretch of
+// the view's width that none of `covers` (each [left, right] in window units from the view's left
+// edge; an empty one, right <= left, covers nothing) covers, at full height. The whole view when
+// that stretch is narrower than a quarter of the view.
+ViewportRegion region_free_of(float view_width, const std::vector<std::pair<float, float>>& covers);
 
 // Grow the box [lower, upper] (m, y up) to the room a shape moves in: down to the ground at
 // `ground_height` (m), where hanging cloth falls, and a quarter of the box's largest side to

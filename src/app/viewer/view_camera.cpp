@@ -50,7 +50,7 @@ void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float 
     if (start_yaw_) camera_.yaw = *start_yaw_;
     if (start_pitch_) camera_.pitch = *start_pitch_;
     scene_camera_ = camera_;
-    frame_pending_ = false;
+    fit_scene_camera_ = true;  // into what the panel and the plots leave free, at frame()
   }
   opening_yaw_ = camera_.yaw;
   opening_pitch_ = camera_.pitch;
@@ -67,7 +67,8 @@ void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float 
 void ViewCamera::restore_opening_view() {
   if (scene_camera_) {
     camera_ = *scene_camera_;
-    frame_pending_ = false;
+    fit_scene_camera_ = true;
+    frame_pending_ = true;
     return;
   }
   camera_.yaw = opening_yaw_;
@@ -78,6 +79,20 @@ void ViewCamera::restore_opening_view() {
 void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
                        const ViewportRegion& region, float aspect) {
   if (!frame_pending_) return;
+  frame_pending_ = false;
+  if (fit_scene_camera_) {
+    // The scene's own view, made for the whole window, into the part of it left free: the same
+    // target at the free part's centre, from as much farther away as the part is narrower, so
+    // that what the scene framed across the window fits across the part.
+    fit_scene_camera_ = false;
+    camera_ = *scene_camera_;
+    const float width = region.right - region.left;
+    if (width > 0.0f && width < 1.0f) {
+      camera_.distance = std::min(camera_.distance / width, OrbitCamera::max_distance);
+      camera_.lens_shift = Eigen::Vector2f(region.left + region.right - 1.0f, 0.0f);
+    }
+    return;
+  }
   Eigen::Vector3f lower, upper;
   bounds(positions.data(), static_cast<int>(positions.size() / 3), lower, upper);
   // Always with room to move, on load and on F alike: F right after R sees the flat cloth it
@@ -86,7 +101,6 @@ void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
   // holds the shape wherever it is now (thrown high, the frame only grows).
   add_room_to_move(lower, upper, ground_height);
   frame_box(camera_, lower, upper, aspect, region);
-  frame_pending_ = false;
 }
 
 void ViewCamera::orbit(float dx, float dy, float view_height) {

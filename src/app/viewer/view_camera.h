@@ -20,13 +20,20 @@ class ViewCamera {
   // from the front right, a little above.
   ViewCamera(std::optional<float> yaw, std::optional<float> pitch);
 
-  // A scene opens: its own view if it has one (the angles above still turn it), else a framing
-  // at the next frame(). `rest` is #V by 3 (m); `ground_height` (m) bounds the limits.
+  // A scene opens: its own view if it has one (the angles above still turn it), fitted at the
+  // next frame() into the region left free (from farther away, as the region is narrower than
+  // the view), else a framing at the next frame(). `rest` is #V by 3 (m); `ground_height` (m)
+  // bounds the limits.
   void open(const SceneLook& look, const Eigen::MatrixXd& rest, float ground_height);
   // O: the view the scene opened with.
   void restore_opening_view();
   // F, a new split or its end: frame at the next frame().
-  void frame_next() { frame_pending_ = true; }
+  void frame_next() {
+    frame_pending_ = true;
+    fit_scene_camera_ = false;
+  }
+  // A framing (or the scene's own view) waits for the next frame().
+  bool framing_pending() const { return frame_pending_; }
   // Centre the view on the shape (a split view's halves), keeping the direction.
   void centre() { camera_.lens_shift.setZero(); }
   // If a framing is pending: the shape at `positions` (#V by 3 floats, m) with room to move
@@ -46,6 +53,7 @@ class ViewCamera {
   OrbitCamera camera_;
   std::optional<float> start_yaw_, start_pitch_;  // radians, from the command line
   bool frame_pending_ = true;
+  bool fit_scene_camera_ = false;  // the pending framing is the scene's own view, fitted
   // The view the scene opened with: its own camera, or the angles it was framed from.
   std::optional<OrbitCamera> scene_camera_;
   float opening_yaw_ = 0.0f, opening_pitch_ = 0.0f;

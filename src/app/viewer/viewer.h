@@ -290,6 +290,7 @@ class Viewer {
   ViewCamera view_camera_;          // the camera, its opening view and framing (a component)
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
+  bool framed_with_plots_ = false;  // the plots were open when the view was last framed
   // What the UI shows of the simulation's side, as of the last refresh_shown_state.
   PanelStats shown_stats_;
   std::string shown_twin_warning_;

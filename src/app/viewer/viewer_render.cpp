@@ -89,13 +89,21 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // the drawn pin); while a batch runs, the state it started from is drawn.
   if (!host_.batch_started() && arrays_stale_) update_vertex_arrays();
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
-  // Split, both sides share one camera and each is framed whole; else the shape is framed
-  // beside the panel.
-  const ViewportRegion region = panel_place_.shown && !right_.simulation()
-                                    ? region_beside_panel(window_size.x(), panel_place_.x,
-                                                          panel_place_.x + panel_place_.width)
-                                    : ViewportRegion();
-  view_camera_.frame(positions_, ground_.height, region, aspect);
+  // Split, both sides share one camera and each is framed whole in its half; else the shape is
+  // framed in what the panel and the plots leave free, and again when the plots open or close.
+  std::vector<std::pair<float, float>> covers;
+  if (!right_.simulation()) {
+    if (panel_place_.shown) {
+      covers.emplace_back(panel_place_.x, panel_place_.x + panel_place_.width);
+    }
+    if (instruments_left_ >= 0.0f) covers.emplace_back(instruments_left_, window_size.x());
+  }
+  const bool plots_open = instruments_left_ >= 0.0f;
+  if (plots_open != framed_with_plots_) {
+    framed_with_plots_ = plots_open;
+    if (!view_camera_.framing_pending()) view_camera_.frame_next();
+  }
+  view_camera_.frame(positions_, ground_.height, region_free_of(window_size.x(), covers), aspect);
   const OrbitCamera& camera = view_camera_.camera();
   view_ = view_matrix(camera);
   projection_ = projection_matrix(camera, aspect);

@@ -42,3 +42,31 @@ TEST(ViewFraming, RoomToMoveReachesTheGroundAndAQuarterToEachSide) {
 }
 
 }  // namespace
+
+// Between the panel on the left and the plots' column on the right: the stretch between them;
+// the widest stretch wins; too little anywhere, the whole view.
+TEST(ViewFraming, TheWidestStretchNoWindowCovers) {
+  const wobble::ViewportRegion between =
+      wobble::region_free_of(1280.0f, {{20.0f, 340.0f}, {900.0f, 1280.0f}});
+  EXPECT_FLOAT_EQ(between.left, 340.0f / 1280.0f);
+  EXPECT_FLOAT_EQ(between.right, 900.0f / 1280.0f);
+  EXPECT_FLOAT_EQ(between.top, 0.0f);
+  EXPECT_FLOAT_EQ(between.bottom, 1.0f);
+  // Overlapping covers, given in any order; the free part left of them is wider.
+  const wobble::ViewportRegion left_part =
+      wobble::region_free_of(1000.0f, {{700.0f, 1000.0f}, {500.0f, 800.0f}});
+  EXPECT_FLOAT_EQ(left_part.left, 0.0f);
+  EXPECT_FLOAT_EQ(left_part.right, 0.5f);
+  const wobble::ViewportRegion sliver =
+      wobble::region_free_of(1280.0f, {{0.0f, 680.0f}, {684.0f, 1280.0f}});
+  EXPECT_FLOAT_EQ(sliver.left, 0.0f);
+  EXPECT_FLOAT_EQ(sliver.right, 1.0f);
+  const wobble::ViewportRegion nothing = wobble::region_free_of(1280.0f, {{5.0f, 5.0f}});
+  EXPECT_FLOAT_EQ(nothing.left, 0.0f);
+  EXPECT_FLOAT_EQ(nothing.right, 1.0f) << "an empty cover covers nothing";
+  // The panel alone, as region_beside_panel frames it.
+  const wobble::ViewportRegion panel = wobble::region_free_of(1280.0f, {{20.0f, 340.0f}});
+  const wobble::ViewportRegion beside = wobble::region_beside_panel(1280.0f, 20.0f, 340.0f);
+  EXPECT_FLOAT_EQ(panel.left, beside.left);
+  EXPECT_FLOAT_EQ(panel.right, beside.right);
+}

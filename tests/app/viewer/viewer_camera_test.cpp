@@ -3,6 +3,7 @@
 // The panel is real ImGui with its fonts built on the CPU, so nothing is drawn.
 #include <gtest/gtest.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -11,6 +12,7 @@
 #include "../viewer_screen.h"
 #include "app/interaction/picking.h"
 #include "app/viewer/viewer.h"
+#include "io/load_scene.h"
 
 namespace {
 
@@ -30,11 +32,11 @@ struct CameraFixture {
   explicit CameraFixture(wobble::Scene scene = wobble::make_builtin_scene("cloth"))
       : viewer(std::move(scene), wobble::ViewerSettings(), wobble::builtin_scene_names()) {}
   // One frame as the window runs it, with the panel when `panel` is set.
-  void frame(bool panel = false, bool collapsed = false) {
+  void frame(bool panel = false, bool collapsed = false, float scale = ui_scale) {
     if (panel) {
       ImGui::NewFrame();
       if (collapsed) ImGui::SetNextWindowCollapsed(true);
-      viewer.build_ui(wobble::PanelStats(), ui_scale);
+      viewer.build_ui(wobble::PanelStats(), scale);
       ImGui::EndFrame();
     }
     viewer.advance();
@@ -99,6 +101,69 @@ TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
   const Eigen::Vector2f middle =
       0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
   EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x());
+}
+
+// G opens the plots in a column at the right: the cloth moves into what the panel and the plots
+// leave free, both pins in sight (they hid the right pin and half the cloth), and F frames there.
+TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
+  // At a UI scale of 1 (at 2 the panel and the plots leave too little between them, and the
+  // cloth is framed in the whole window behind them).
+  HeadlessImGui imgui;
+  CameraFixture f;
+  const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.0f); };
+  frame();
+  f.press_key(GLFW_KEY_G);
+  for (int i = 0; i < 3; ++i)
+    frame();
+  const ImGuiWindow* plots = ImGui::FindWindowByName("Convergence of the last step");
+  const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+  ASSERT_NE(plots, nullptr);
+  ASSERT_NE(panel, nullptr);
+  const float plots_left = plots->Pos.x, panel_right = panel->Pos.x + panel->Size.x;
+  ASSERT_GT(plots_left - panel_right, 0.25f * window.x());
+  const auto in_between = [&] {
+    for (const int pin : f.viewer.scene().pins) {
+      const Eigen::Vector2f at = f.on_screen(pin);
+      EXPECT_GT(at.x(), panel_right) << "pin " << pin;
+      EXPECT_LT(at.x(), plots_left) << "pin " << pin;
+    }
+  };
+  in_between();
+  f.drag(Eigen::Vector2f(900.0f, 650.0f), Eigen::Vector2f(300.0f, 0.0f));  // turn away
+  f.press_key(GLFW_KEY_F);
+  frame();
+  in_between();
+  // Closed again, the cloth takes the room back.
+  f.press_key(GLFW_KEY_G);
+  for (int i = 0; i < 3; ++i)
+    frame();
+  const Eigen::Vector2f middle =
+      0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
+  EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x())
+      << "centred beside the panel again";
+}
+
+// A scene with its own camera (the flag) opens in what the panel leaves free: its view, made for
+// the whole window, from farther away and shifted there (it opened pressed against the panel
+// with two thirds of the view empty).
+TEST(ViewerCamera, ASceneCameraOpensBesideThePanel) {
+  HeadlessImGui imgui;
+  CameraFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/flag.json"));
+  f.frame(/*panel=*/true);
+  f.frame(/*panel=*/true);
+  const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+  float lowest_x = window.x(), highest_x = 0.0f;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2f at = f.on_screen(i);
+    lowest_x = std::min(lowest_x, at.x());
+    highest_x = std::max(highest_x, at.x());
+    ASSERT_TRUE(at.y() >= 0.0f && at.y() <= window.y()) << "vertex " << i;
+  }
+  EXPECT_GT(lowest_x, panel_right) << "nothing behind the panel";
+  EXPECT_LT(highest_x, window.x());
+  EXPECT_NEAR(0.5f * (lowest_x + highest_x), 0.5f * (panel_right + window.x()),
+              0.15f * (window.x() - panel_right))
+      << "in the middle of what is free";
 }
 
 TEST(ViewerCamera, ACollapsedPanelCoversNothing) {
