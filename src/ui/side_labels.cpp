@@ -16,7 +16,9 @@ void corner_text(ImDrawList* draw, ImVec2 at, const std::string& text, ImU32 col
 }  // namespace
 
 void draw_side_labels(const SideLabels& labels, float ui_scale) {
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  // Under every window (the panel, the plots, the help), over the scene: the divider once ran
+  // across the help overlay.
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float left = labels.half > 0.0f ? labels.area_left : 0.0f;
   const float width = labels.half > 0.0f ? labels.half : 0.5f * display.x;

@@ -15,7 +15,7 @@ struct SideLabels {
 };
 
 // Writes each half's settings in its bottom-right corner and draws the line between the halves,
-// over everything else (ImGui's foreground list; between NewFrame and Render).
+// over the scene and under every window (ImGui's background list; between NewFrame and Render).
 void draw_side_labels(const SideLabels& labels, float ui_scale);
 
 }  // namespace wobble
