@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "line_plot.h"
@@ -55,6 +56,16 @@ void draw_light(const ConvergenceCurve& side, const char* name) {
 }
 
 }  // namespace
+
+std::string legend_number(double value, double scale) {
+  // Four significant digits of the scale, and the same decimals for every value read against it.
+  const double magnitude =
+      std::abs(scale) > 0.0 && std::isfinite(scale) ? std::floor(std::log10(std::abs(scale))) : 0.0;
+  const int decimals = static_cast<int>(std::clamp(3.0 - magnitude, 0.0, 9.0));
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
 
 const char* convergence_label(ConvergenceLight light) {
   switch (light) {
@@ -206,33 +217,42 @@ void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) 
     // Split: the two sides' totals, in the convergence window's colours for left and right; how
     // the methods lose energy is the comparison (the breakdown is the single view's).
     axes.y_label = "total J";
-    char left[96], right[96];
-    std::snprintf(left, sizeof(left), "left, %s: %.4g J", data.left_solver.c_str(),
-                  data.total->back());
+    const bool right_stepped = !data.right_time->empty();
+    const double scale = std::max(std::abs(data.total->back()),
+                                  right_stepped ? std::abs(data.right_total->back()) : 0.0);
+    const std::string left =
+        "left, " + data.left_solver + ": " + legend_number(data.total->back(), scale) + " J";
+    std::string right;
     std::vector<PlotSeries> series = {
-        {left, data.time->data(), data.total->data(), count, IM_COL32(110, 190, 255, 255)}};
-    if (!data.right_time->empty()) {
-      std::snprintf(right, sizeof(right), "right, %s: %.4g J", data.right_solver.c_str(),
-                    data.right_total->back());
-      series.push_back({right, data.right_time->data(), data.right_total->data(),
+        {left.c_str(), data.time->data(), data.total->data(), count, IM_COL32(110, 190, 255, 255)}};
+    if (right_stepped) {
+      right = "right, " + data.right_solver + ": " +
+              legend_number(data.right_total->back(), scale) + " J";
+      series.push_back({right.c_str(), data.right_time->data(), data.right_total->data(),
                         static_cast<int>(data.right_time->size()), IM_COL32(255, 170, 90, 255)});
     }
     line_plot("energy", series, axes, ImVec2(0.0f, ImGui::GetContentRegionAvail().y));
     ImGui::End();
     return;
   }
-  char kinetic[48], spring[48], gravity[48], total[48];
-  std::snprintf(kinetic, sizeof(kinetic), "kinetic %.4g J", data.kinetic->back());
-  std::snprintf(spring, sizeof(spring), "spring %.4g J", data.spring->back());
-  std::snprintf(gravity, sizeof(gravity), "gravity %.4g J", data.gravity->back());
-  std::snprintf(total, sizeof(total), "total %.4g J", data.total->back());
+  // One number of decimals for all four, from the largest: the legend keeps its layout from
+  // frame to frame (with %g each entry's digits came and went as the values moved).
+  const double scale = std::max({std::abs(data.kinetic->back()), std::abs(data.spring->back()),
+                                 std::abs(data.gravity->back()), std::abs(data.total->back())});
+  const std::string kinetic = "kinetic " + legend_number(data.kinetic->back(), scale) + " J";
+  const std::string spring = "spring " + legend_number(data.spring->back(), scale) + " J";
+  const std::string gravity = "gravity " + legend_number(data.gravity->back(), scale) + " J";
+  const std::string total = "total " + legend_number(data.total->back(), scale) + " J";
   axes.y_label = "J";
   line_plot(
       "energy",
-      {{kinetic, data.time->data(), data.kinetic->data(), count, IM_COL32(255, 120, 90, 255)},
-       {spring, data.time->data(), data.spring->data(), count, IM_COL32(110, 210, 120, 255)},
-       {gravity, data.time->data(), data.gravity->data(), count, IM_COL32(110, 170, 255, 255)},
-       {total, data.time->data(), data.total->data(), count, IM_COL32(240, 240, 240, 255)}},
+      {{kinetic.c_str(), data.time->data(), data.kinetic->data(), count,
+        IM_COL32(255, 120, 90, 255)},
+       {spring.c_str(), data.time->data(), data.spring->data(), count,
+        IM_COL32(110, 210, 120, 255)},
+       {gravity.c_str(), data.time->data(), data.gravity->data(), count,
+        IM_COL32(110, 170, 255, 255)},
+       {total.c_str(), data.time->data(), data.total->data(), count, IM_COL32(240, 240, 240, 255)}},
       axes, ImVec2(0.0f, ImGui::GetContentRegionAvail().y));
   ImGui::End();
 }

@@ -65,6 +65,10 @@ float instrument_column_left(float display_width, float ui_scale);
 // The light's words, e.g. "converged", and the hint shown under it (empty when green); the hint
 // suggests Chebyshev only where it applies (`chebyshev_applies`: local-global).
 const char* convergence_label(ConvergenceLight light);
+// `value` as a legend writes it beside others read against `scale` (the largest of them): four
+// significant digits of the scale and as many decimals for every value ("1.795", "0.016",
+// "0.003" against 1.8), so that the legend keeps its width from frame to frame.
+std::string legend_number(double value, double scale);
 const char* convergence_hint(ConvergenceLight light, bool chebyshev_applies = true);
 
 }  // namespace wobble

@@ -140,6 +140,11 @@ PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning) 
 
 namespace {
 
+// Every number in the panel is dragged, by a step a pixel, as k and dt are (log_drag.h), never
+// set by where a click lands: a click on a slider made the value jump there. Iterations move by
+// one every five pixels; Ctrl+click types a value.
+constexpr float drag_speed_iterations = 0.2f;
+
 // The added settings' sliders, each label followed by `suffix` (" right" for the right side).
 void draw_added_sliders(std::vector<AddedSlider>& sliders, const char* suffix) {
   for (AddedSlider& slider : sliders) {
@@ -149,8 +154,8 @@ void draw_added_sliders(std::vector<AddedSlider>& sliders, const char* suffix) {
       log_drag(label.c_str(), &slider.value, slider.low, slider.high, "%.4g");
       log_drag_tooltip();
     } else {
-      ImGui::SliderFloat(label.c_str(), &slider.value, slider.low, slider.high, "%.4g",
-                         ImGuiSliderFlags_AlwaysClamp);
+      ImGui::DragFloat(label.c_str(), &slider.value, (slider.high - slider.low) / 400.0f,
+                       slider.low, slider.high, "%.4g", ImGuiSliderFlags_AlwaysClamp);
     }
   }
 }
@@ -164,8 +169,9 @@ bool draw_simulation_section(SimulationSettings& settings, const std::vector<Sol
   log_drag_tooltip();
   log_drag("dt (s)", &settings.dt, SimulationSettings::min_dt, SimulationSettings::max_dt, "%.5f");
   log_drag_tooltip();
-  ImGui::SliderInt("iterations", &settings.iterations, SimulationSettings::min_iterations,
-                   SimulationSettings::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::DragInt("iterations", &settings.iterations, drag_speed_iterations,
+                 SimulationSettings::min_iterations, SimulationSettings::max_iterations, "%d",
+                 ImGuiSliderFlags_AlwaysClamp);
   // A course scene reproduces the course's program, which iterates plainly.
   if (course_scene) ImGui::BeginDisabled();
   const bool chebyshev_applies = solver_combo("solver", settings.solver, solvers);
@@ -180,8 +186,8 @@ bool draw_simulation_section(SimulationSettings& settings, const std::vector<Sol
     }
   }
   draw_added_sliders(settings.added, "");
-  ImGui::SliderFloat("gravity (m/s^2)", &settings.gravity, 0.0f, SimulationSettings::max_gravity,
-                     "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::DragFloat("gravity (m/s^2)", &settings.gravity, 0.05f, 0.0f,
+                   SimulationSettings::max_gravity, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   const bool restore_defaults = ImGui::Button("Restore defaults");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("The scene as it opened: its settings, pins, colliders and start");
@@ -195,15 +201,15 @@ void draw_environment_section(EnvironmentSettings& settings, const EnvironmentOf
   log_drag("damping (1/s)", &settings.damping, 0.0f, Limits::max_damping, "%.3f");
   log_drag_tooltip();
   if (offer.colliders) {
-    ImGui::SliderFloat("friction", &settings.friction, 0.0f, Limits::max_friction, "%.2f",
-                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("friction", &settings.friction, 0.005f, 0.0f, Limits::max_friction, "%.2f",
+                     ImGuiSliderFlags_AlwaysClamp);
   }
   ImGui::Checkbox("wind (W)", &settings.wind);
   if (offer.aerodynamic_wind) {
-    ImGui::SliderFloat("wind (m/s)", &settings.wind_speed, 0.0f, Limits::max_wind_speed, "%.1f",
-                       ImGuiSliderFlags_AlwaysClamp);
-    ImGui::SliderFloat("wind heading", &settings.wind_heading, 0.0f, 360.0f, "%.0f deg",
-                       ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("wind (m/s)", &settings.wind_speed, 0.05f, 0.0f, Limits::max_wind_speed,
+                     "%.1f", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::DragFloat("wind heading", &settings.wind_heading, 1.0f, 0.0f, 360.0f, "%.0f deg",
+                     ImGuiSliderFlags_AlwaysClamp);
   }
   if (offer.colliders) ImGui::Checkbox("colliders", &settings.colliders);
   // A course scene reproduces the course's program, which has no self-collision: not offered.
@@ -258,8 +264,9 @@ void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>
   log_drag_tooltip();
   log_drag("dt right", &right.dt, Limits::min_dt, Limits::max_dt, "%.5f");
   log_drag_tooltip();
-  ImGui::SliderInt("iterations right", &right.iterations, Limits::min_iterations,
-                   Limits::max_iterations, "%d", ImGuiSliderFlags_AlwaysClamp);
+  ImGui::DragInt("iterations right", &right.iterations, drag_speed_iterations,
+                 Limits::min_iterations, Limits::max_iterations, "%d",
+                 ImGuiSliderFlags_AlwaysClamp);
   const bool chebyshev_applies = solver_combo("solver right", right.solver, solvers);
   chebyshev_checkbox("Chebyshev right", right.chebyshev, chebyshev_applies);
   draw_added_sliders(right.added, " right");

@@ -297,3 +297,42 @@ TEST(LogDrag, SpeedMakesAFactorAPixelOverTheRange) {
 }
 
 }  // namespace
+
+namespace {
+
+// Every number is dragged, never set by where a click lands: a click on the iterations, gravity,
+// friction or wind made the value jump to the click, while k and dt dragged.
+TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
+  struct Case {
+    const char* label;
+    float (*value)(const PanelSettings&);
+  };
+  const Case cases[] = {
+      {"iterations", [](const PanelSettings& s) { return static_cast<float>(s.iterations); }},
+      {"gravity (m/s^2)", [](const PanelSettings& s) { return s.gravity; }},
+      {"friction", [](const PanelSettings& s) { return s.friction; }},
+      {"wind (m/s)", [](const PanelSettings& s) { return s.wind_speed; }},
+      {"wind heading", [](const PanelSettings& s) { return s.wind_heading; }}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.label);
+    PanelDriver panel(1280.0f, 720.0f, 1.0f);
+    show_everything(panel);
+    panel.settings.wind_heading = 90.0f;
+    panel.settings.friction = 0.5f;
+    panel.settings.wind_speed = 5.0f;
+    panel.settle();
+    std::optional<ImVec2> at = panel.find(c.label);
+    for (int notch = 0; !at && notch < 40; ++notch) {
+      panel.frame(ImVec2(100.0f, 300.0f), false, -1.0f);
+      at = panel.find(c.label);
+    }
+    ASSERT_TRUE(at);
+    const float before = c.value(panel.settings);
+    panel.click(ImVec2(at->x + 120.0f, at->y));  // well to the right on the widget
+    EXPECT_EQ(c.value(panel.settings), before) << "a click sets nothing";
+    panel.drag(ImVec2(at->x + 60.0f, at->y), 40.0f);
+    EXPECT_GT(c.value(panel.settings), before) << "a drag to the right raises it";
+  }
+}
+
+}  // namespace

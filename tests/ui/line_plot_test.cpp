@@ -1,6 +1,7 @@
 // Where line_plot puts its legend: in rows above the curves' frame, never over it, inside the
 // plot's own rectangle and with no two entries on top of each other.
 #include "ui/line_plot.h"
+#include "ui/instrument_windows.h"
 
 #include <gtest/gtest.h>
 
@@ -58,3 +59,16 @@ TEST(LegendLayout, NoNamesLeaveTheWholeHeightToTheCurves) {
 }
 
 }  // namespace
+
+// The energy legend's numbers keep their digits as the values move: one number of decimals for
+// all, from the largest (with %.4g, "0.002569" beside "1.795", then "0.01" a frame later).
+TEST(InstrumentWindows, LegendNumbersKeepTheirDigits) {
+  EXPECT_EQ(wobble::legend_number(1.795, 1.8132), "1.795");
+  EXPECT_EQ(wobble::legend_number(0.002569, 1.8132), "0.003");
+  EXPECT_EQ(wobble::legend_number(0.01626, 1.8132), "0.016");
+  EXPECT_EQ(wobble::legend_number(0.0100, 1.8132).size(),
+            wobble::legend_number(0.0149, 1.79).size());
+  EXPECT_EQ(wobble::legend_number(2816.78, 2816.78), "2817");
+  EXPECT_EQ(wobble::legend_number(0.00012, 0.00031), "0.0001200");
+  EXPECT_EQ(wobble::legend_number(0.0, 0.0), "0.000");
+}
