@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -43,3 +44,16 @@ TEST(PageArguments, TheBenchmarkIsAskedForByItsKey) {
 }
 
 }  // namespace
+
+// A mouse's notch in the browser (deltaY about 100 pixels, positive towards the user) is one
+// notch out, as the desktop's wheel turned towards the user; it reached the camera as 100 notches
+// the wrong way. A trackpad's small deltas are shares of a notch.
+TEST(PageWheel, ANotchIsANotchTheDesktopsWay) {
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(-100.0, 0), 1.0) << "up: zoom in";
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(100.0, 0), -1.0);
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(4.0, 0), -0.04) << "a trackpad's small delta";
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(-3.0, 1), 1.0) << "lines";
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(1.0, 2), -1.0) << "a page";
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(-10000.0, 0), 5.0) << "a fling stays a few";
+  EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(std::nan(""), 0), 0.0);
+}

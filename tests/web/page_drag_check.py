@@ -1,6 +1,7 @@
 """The page answers the mouse, a finger and the keys as the desktop does: in headless Chromium
 (page_check.py's driver, DevTools input events), the cloth's pinned corner is taken with the
-mouse and dragged, then with a finger on a phone-sized page, and W turns the course's wind on.
+mouse and dragged, then with a finger on a phone-sized page, W turns the course's wind on, and
+the wheel zooms a notch at a time, the desktop's way (wheel_checks).
 
 The held vertex is drawn as a yellow dot (the desktop's mark): after each drag the yellow dot
 must be where the pointer let go, not where the corner was; before it, none there. W must tick
@@ -103,6 +104,41 @@ def drag(page, start, end, finger):
     return shot
 
 
+def wheel_checks(page):
+    """A mouse's notch up zooms in by one notch (the camera 1.15 times nearer), a trackpad's
+    small delta by a share of one, and the wheel over the panel leaves the camera alone."""
+    failures = []
+
+    def distance():
+        return page.browser.evaluate('Module.wobbleCameraDistance || 0') or 0
+
+    def wheel(x, y, delta_y):
+        page.browser.call('Input.dispatchMouseEvent',
+                          {'type': 'mouseWheel', 'x': x, 'y': y, 'deltaX': 0, 'deltaY': delta_y})
+        time.sleep(0.6)
+
+    page.mouse('mouseMoved', 1000, 400)
+    time.sleep(0.3)
+    for delta_y, low, high, what in [(-100, 1 / 1.17, 1 / 1.13, 'a notch up: one notch nearer'),
+                                     (100, 1.13, 1.17, 'a notch down: one notch back'),
+                                     (4, 1.0, 1.02, 'a trackpad\'s small delta: a little')]:
+        before = distance()
+        wheel(1000, 400, delta_y)
+        after = distance()
+        ratio = after / before if before else 0
+        print(f'page_drag_check: wheel {delta_y}: the camera {before:.4f} -> {after:.4f} m '
+              f'({ratio:.4f}x)')
+        if not low <= ratio <= high:
+            failures.append(f'wheel {delta_y}: distance x{ratio:.4f}, expected {what}')
+    page.mouse('mouseMoved', 150, 300)
+    time.sleep(0.3)
+    before = distance()
+    wheel(150, 300, -100)
+    if distance() != before:
+        failures.append('the wheel over the panel moved the camera')
+    return failures
+
+
 def main():
     site = sys.argv[1]
     server, url = serve_site(site)
@@ -143,6 +179,7 @@ def main():
                 print(f'page_drag_check: the wind box {unticked} before W, {ticked} after')
                 if sum(abs(a - b) for a, b in zip(unticked, ticked)) < 60:
                     failures.append('W did not tick the wind box')
+                failures += wheel_checks(page)
         finally:
             browser.close()
     server.shutdown()

@@ -1,6 +1,8 @@
 #include "app/web/page_arguments.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 
 #include "app/cli/scene_catalog.h"
@@ -64,6 +66,13 @@ std::vector<std::string> page_arguments(const std::string& query,
   }
   arguments.insert(arguments.begin() + 1, options.begin(), options.end());
   return arguments;
+}
+
+double page_wheel_notches(double delta_y, unsigned long delta_mode) {
+  if (!std::isfinite(delta_y)) return 0.0;
+  const double per_notch = delta_mode == 0 ? 100.0 : delta_mode == 1 ? 3.0 : 1.0;
+  // A burst of many at once (a page, a flung wheel) turns at most a few notches.
+  return std::clamp(-delta_y / per_notch, -5.0, 5.0);
 }
 
 bool page_wants_bench(const std::string& query) {

@@ -17,6 +17,12 @@ namespace wobble {
 std::vector<std::string> page_arguments(const std::string& query,
                                         const std::vector<std::string>& catalog);
 
+// A browser wheel event as notches of a desktop wheel, positive away from the user (zoom in, the
+// panel up), as GLFW counts them on the desktop: the browser's deltaY is positive towards the
+// user and in pixels (about 100 a mouse's notch; a trackpad sends many small ones, each a share
+// of a notch), lines (3 a notch) or pages (one a notch), by `delta_mode` 0, 1 or 2.
+double page_wheel_notches(double delta_y, unsigned long delta_mode);
+
 // Whether the address asks for the step benchmark (`bench` among its keys): the page then first
 // takes `frames` steps of the scene without drawing (step_positions.h) and leaves their median
 // step time (ms) in Module.wobbleBenchStepMs, for scripts/benchmark-web.sh.

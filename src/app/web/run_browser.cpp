@@ -17,6 +17,7 @@
 #include "app/cli/scene_catalog.h"
 #include "app/viewer/frame_loop.h"
 #include "app/viewer/viewer.h"
+#include "app/web/page_arguments.h"
 #include "platform/glfw_window.h"
 
 namespace wobble {
@@ -58,7 +59,21 @@ class PageHost : public FrameHost {
   explicit PageHost(GlfwWindow& window) : window_(window) {}
   std::vector<InputEvent> poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
     follow_page_size(window_);
-    return window_.poll_events();
+    std::vector<InputEvent> events = window_.poll_events();
+    // The wheel, read by on_wheel from the browser's own event, in notches: to the camera and
+    // to ImGui's panel (before its new frame) alike.
+    for (const double notches : wheel_) {
+      InputEvent event;
+      event.type = InputEvent::Type::scroll;
+      event.y = notches;
+      events.push_back(event);
+      ImGui::GetIO().MouseWheel += static_cast<float>(notches);
+    }
+    wheel_.clear();
+    return events;
+  }
+  void wheel(double notches) {
+    if (notches != 0.0) wheel_.push_back(notches);
   }
   // Copied into the page's file system by emscripten's GLFW.
   std::vector<std::string> take_dropped_paths() override { return window_.take_dropped_paths(); }
@@ -92,6 +107,7 @@ class PageHost : public FrameHost {
           Module.wobbleSteps = $1;
         },
         frames_drawn_, static_cast<double>(viewer.shown_steps()));
+    EM_ASM({ Module.wobbleCameraDistance = $0; }, static_cast<double>(viewer.camera().distance));
   }
 
  private:
@@ -99,6 +115,7 @@ class PageHost : public FrameHost {
   std::string title_;
   int width_ = 0;
   long frames_drawn_ = 0;
+  std::vector<double> wheel_;  // notches since the last poll
 };
 
 // Everything a frame needs, kept alive after main returns.
@@ -109,6 +126,13 @@ struct BrowserApp {
   std::unique_ptr<PageHost> host;
   FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
 };
+
+// The browser's wheel over the canvas, in notches (page_wheel_notches); the page itself does not
+// scroll. (Emscripten's GLFW passes the raw deltaY on, about 100 a notch and the other way.)
+EM_BOOL on_wheel(int /*type*/, const EmscriptenWheelEvent* event, void* host) {
+  static_cast<PageHost*>(host)->wheel(page_wheel_notches(event->deltaY, event->deltaMode));
+  return EM_TRUE;
+}
 
 void frame_or_report(void* app_pointer) {
   BrowserApp& app = *static_cast<BrowserApp*>(app_pointer);
@@ -135,6 +159,10 @@ void run_browser(const CommandLine& command) {
   fill_missing_gl_functions();
   app->ui = std::make_unique<ImGuiSession>(app->window->handle(), "#version 300 es", 1.0f);
   app->host = std::make_unique<PageHost>(*app->window);
+  // The wheel from the browser's event, which says its unit; GLFW's path (ImGui's and the
+  // window's callbacks) is turned off.
+  glfwSetScrollCallback(app->window->handle(), nullptr);
+  emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
   print_notes(app->viewer.scene(), std::cerr);
   app->viewer.attach_renderer();
   // 0 frames a second: the browser's own rate (requestAnimationFrame); do not simulate an
