@@ -29,11 +29,39 @@ TEST(PageArguments, NoQueryOpensTheDefaultScene) {
 
 TEST(PageArguments, EscapesAreDecodedAndUnknownKeysLeftOut) {
   // An option that writes files never comes from an address.
-  EXPECT_EQ(wobble::page_arguments("?screenshot=x.png&k=1%2E5e3&scene=my+scene", catalog),
-            (Arguments{"wobble", "--k", "1.5e3", "--", "my scene"}));
+  EXPECT_EQ(wobble::page_arguments("?screenshot=x.png&k=1%2E5e3&scene=my+scene.json", catalog),
+            (Arguments{"wobble", "--k", "1.5e3", "--", "my scene.json"}));
   // A scene named like an option stays a scene.
-  EXPECT_EQ(wobble::page_arguments("?scene=--help", catalog),
-            (Arguments{"wobble", "--", "--help"}));
+  EXPECT_EQ(wobble::page_arguments("?scene=--help.json", catalog),
+            (Arguments{"wobble", "--", "--help.json"}));
+}
+
+// A typo in a slide's link says so on the page, one line naming the address's key, and costs
+// only itself: the scene opens with the settings that were right (it showed the default cloth
+// with none of them, the reason only on the console, listing 2 of the scenes).
+TEST(PageArguments, WhatTheAddressGotWrongIsSaidAndCostsOnlyItself) {
+  const wobble::PageRequest bad_k = wobble::read_page_address("?scene=flag&k=abc&dt=0.01", catalog);
+  EXPECT_EQ(bad_k.arguments, (Arguments{"wobble", "--dt", "0.01", "--", "/site/assets/flag.json"}));
+  ASSERT_EQ(bad_k.refusals.size(), 1u);
+  EXPECT_EQ(bad_k.refusals[0], "address: k: expected a positive finite number, got 'abc'");
+
+  const wobble::PageRequest bad_scene =
+      wobble::read_page_address("?scene=flg&iterations=5", catalog);
+  EXPECT_EQ(bad_scene.arguments, (Arguments{"wobble", "--iterations", "5"}));
+  ASSERT_EQ(bad_scene.refusals.size(), 1u);
+  EXPECT_EQ(bad_scene.refusals[0],
+            "address: scene: no scene 'flg' (the scenes: cloth, jelly, flag, curtain); opening "
+            "the default");
+
+  const wobble::PageRequest unknown = wobble::read_page_address("?scene=flag&kk=3", catalog);
+  EXPECT_EQ(unknown.arguments, (Arguments{"wobble", "--", "/site/assets/flag.json"}));
+  ASSERT_EQ(unknown.refusals.size(), 1u);
+  EXPECT_EQ(unknown.refusals[0].rfind("address: kk: not a key of the address", 0), 0u);
+
+  EXPECT_TRUE(
+      wobble::read_page_address("?scene=flag&k=2000&plots&bench", catalog).refusals.empty());
+  EXPECT_EQ(wobble::read_page_address("?iterations=0", catalog).refusals,
+            (Arguments{"address: iterations: expected a whole number from 1 to 5000, got '0'"}));
 }
 
 TEST(PageArguments, TheBenchmarkIsAskedForByItsKey) {

@@ -97,6 +97,9 @@ class Viewer {
   // Draw the notices (the window); headless images never show them, so that they do not
   // depend on the wall clock.
   void show_notices(bool on) { show_notices_ = on; }
+  // Tells the user one line: on screen for a few seconds (while notices show) and among the
+  // panel's notes (a page's refused address key, a file written).
+  void tell(const std::string& what) { saved(what); }
   // What the scene picker lists, in its order.
   const std::vector<std::string>& scene_labels() const { return scene_labels_; }
   // The window: the panel's "record" (F9) records into new folders in `folder`, `progress`

@@ -1,6 +1,7 @@
 // wobble in the browser: the page's address becomes a command line (page_arguments.h), and the
-// viewer runs in the browser's loop (run_browser.h). An address the command line refuses opens
-// the default scene instead, the reason on the browser's console.
+// viewer runs in the browser's loop (run_browser.h). What the address got wrong is said on the
+// page, one line a key, and costs only that key; a scene that does not open opens the default
+// scene instead, with the reason.
 #include <emscripten.h>
 
 #include <exception>
@@ -31,8 +32,10 @@ std::optional<wobble::CommandLine> parse(const std::vector<std::string>& argumen
 
 int main() {
   const char* search = emscripten_run_script_string("location.search");
-  std::vector<std::string> arguments =
-      wobble::page_arguments(search != nullptr ? search : "", wobble::scene_catalog());
+  const wobble::PageRequest request =
+      wobble::read_page_address(search != nullptr ? search : "", wobble::scene_catalog());
+  std::vector<std::string> arguments = request.arguments;
+  std::vector<std::string> messages = request.refusals;
   // A page has one thread: the solver's pool runs everything on the caller.
   arguments.insert(arguments.begin() + 1, {"--threads", "1"});
   std::optional<wobble::CommandLine> command;
@@ -48,11 +51,12 @@ int main() {
         EM_ASM({ Module.wobbleBenchStepMs = JSON.parse(UTF8ToString($0)).step_ms_median; },
                json.str().c_str());
       }
-      wobble::run_browser(*command);
+      wobble::run_browser(*command, messages);
       return 0;
     }
   } catch (const std::exception& error) {
-    std::cerr << "wobble: " << wobble::one_line(error.what()) << "; opening the default scene\n";
+    messages.push_back("address: " + wobble::one_line(error.what()) +
+                       "; opening the default scene");
   }
   try {
     command = parse({"wobble", "--threads", "1"});
@@ -61,7 +65,7 @@ int main() {
     } catch (const std::logic_error&) {
       // The pool already has its one thread (the refused scene got that far).
     }
-    wobble::run_browser(*command);
+    wobble::run_browser(*command, messages);
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";
     return 1;

@@ -4,8 +4,11 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
+#include "app/cli/command_line.h"
 #include "app/cli/scene_catalog.h"
+#include "sim/input_error.h"
 
 namespace wobble {
 
@@ -29,43 +32,75 @@ std::string decode(const std::string& text) {
 
 }  // namespace
 
-std::vector<std::string> page_arguments(const std::string& query,
-                                        const std::vector<std::string>& catalog) {
-  std::vector<std::string> arguments{"wobble"};
+PageRequest read_page_address(const std::string& query, const std::vector<std::string>& catalog) {
+  PageRequest request;
   std::string scene;
   std::vector<std::string> options;
+  const auto refuse = [&](const std::string& key, const std::string& why) {
+    request.refusals.push_back("address: " + key + ": " + why);
+  };
   std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
   while (start < query.size()) {
     std::size_t end = query.find('&', start);
     if (end == std::string::npos) end = query.size();
     const std::string pair = query.substr(start, end - start);
     start = end + 1;
+    if (pair.empty()) continue;
     const std::size_t equals = pair.find('=');
     const std::string key = decode(pair.substr(0, equals));
     const std::string value = equals == std::string::npos ? "" : decode(pair.substr(equals + 1));
-    if (key == "scene" && !value.empty()) {
-      scene = value;
+    if (key == "scene") {
+      if (value.empty()) continue;
+      std::string found;
       for (const std::string& source : catalog) {
-        if (scene_label(source) == value) {
-          scene = source;
-          break;
-        }
+        if (scene_label(source) == value || source == value) found = source;
       }
-    } else if ((key == "k" || key == "dt" || key == "iterations" || key == "frames") &&
-               !value.empty()) {
-      options.push_back("--" + key);
-      options.push_back(value);
+      // A path (a dropped file's, a scene beside the site) is tried as it is.
+      const bool path =
+          value.find('/') != std::string::npos || value.find('.') != std::string::npos;
+      if (!found.empty() || path) {
+        scene = found.empty() ? value : found;
+      } else {
+        std::string names;
+        for (const std::string& source : catalog)
+          names += (names.empty() ? "" : ", ") + scene_label(source);
+        refuse(key, "no scene '" + value + "' (the scenes: " + names + "); opening the default");
+      }
+    } else if (key == "k" || key == "dt" || key == "iterations" || key == "frames") {
+      // Read as the command line reads it, alone: one bad value costs only itself.
+      const std::string option = "--" + key;
+      const char* const argv[] = {"wobble", option.c_str(), value.c_str()};
+      std::ostringstream ignored;
+      try {
+        parse_command_line(3, argv, ignored);
+        options.push_back(option);
+        options.push_back(value);
+      } catch (const InputError& error) {
+        std::string why = error.what();
+        if (why.rfind(option + ": ", 0) == 0) why = why.substr(option.size() + 2);
+        refuse(key, why);
+      }
     } else if (key == "plots") {
       options.push_back("--plots");
+    } else if (key != "bench") {
+      refuse(key,
+             "not a key of the address (it takes scene, k, dt, iterations, frames, plots "
+             "and bench)");
     }
   }
+  request.arguments = {"wobble"};
+  request.arguments.insert(request.arguments.end(), options.begin(), options.end());
   // "--" first: a scene named like an option is still a scene.
   if (!scene.empty()) {
-    arguments.push_back("--");
-    arguments.push_back(scene);
+    request.arguments.push_back("--");
+    request.arguments.push_back(scene);
   }
-  arguments.insert(arguments.begin() + 1, options.begin(), options.end());
-  return arguments;
+  return request;
+}
+
+std::vector<std::string> page_arguments(const std::string& query,
+                                        const std::vector<std::string>& catalog) {
+  return read_page_address(query, catalog).arguments;
 }
 
 double page_wheel_notches(double delta_y, unsigned long delta_mode) {

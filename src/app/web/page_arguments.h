@@ -17,6 +17,18 @@ namespace wobble {
 std::vector<std::string> page_arguments(const std::string& query,
                                         const std::vector<std::string>& catalog);
 
+// The same, with what the address got wrong said instead of silently dropped: each key whose
+// value the command line refuses, an unknown key, and a scene that is none of the catalogue's,
+// one line each as the command line words it, naming the address's key ("address: k: expected a
+// positive finite number, got 'abc'"; "address: scene: no scene 'flg' (cloth, jelly, ...)").
+// The arguments keep every key that is right, so a typo in one setting still opens the scene
+// with the others; a scene that is not found opens the default scene.
+struct PageRequest {
+  std::vector<std::string> arguments;
+  std::vector<std::string> refusals;
+};
+PageRequest read_page_address(const std::string& query, const std::vector<std::string>& catalog);
+
 // A browser wheel event as notches of a desktop wheel, positive away from the user (zoom in, the
 // panel up), as GLFW counts them on the desktop: the browser's deltaY is positive towards the
 // user and in pixels (about 100 a mouse's notch; a trackpad sends many small ones, each a share

@@ -145,7 +145,7 @@ void frame_or_report(void* app_pointer) {
 
 }  // namespace
 
-void run_browser(const CommandLine& command) {
+void run_browser(const CommandLine& command, const std::vector<std::string>& messages) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
   app.reset(new BrowserApp{open_viewer(command), nullptr, nullptr, nullptr, {}});
   app->viewer.show_notices(true);
@@ -164,6 +164,19 @@ void run_browser(const CommandLine& command) {
   glfwSetScrollCallback(app->window->handle(), nullptr);
   emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
   print_notes(app->viewer.scene(), std::cerr);
+  std::string told;
+  for (const std::string& message : messages) {
+    app->viewer.tell(message);
+    std::cerr << "wobble: " << message << "\n";
+    told += (told.empty() ? "" : "\n") + message;
+  }
+  // For the page's tests (tests/web): what the page told, and the scene it opened.
+  EM_ASM(
+      {
+        Module.wobbleMessages = UTF8ToString($0);
+        Module.wobbleScene = UTF8ToString($1);
+      },
+      told.c_str(), app->viewer.scene().name.c_str());
   app->viewer.attach_renderer();
   // 0 frames a second: the browser's own rate (requestAnimationFrame); do not simulate an
   // infinite loop, so main returns and the page keeps running.
