@@ -3,6 +3,7 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "shader_program.h"
@@ -38,6 +39,9 @@ struct Renderer::Resources {
   GLuint vertex_colors = 0;
   SpringColorTable spring_colors;
   bool vertex_colored = false, springs_colored = false;
+  // Desktop GL sizes points from the shader only with GL_PROGRAM_POINT_SIZE on; GL ES (WebGL 2)
+  // always does, and refuses the enum (a console warning twice a frame in the page).
+  bool program_point_size = false;
   int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
   int solid_triangle_count = 0;
   SurfaceColors colors;
@@ -112,6 +116,9 @@ struct Renderer::Resources {
 };
 
 Renderer::Renderer() : resources_(std::make_unique<Resources>()) {
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  resources_->program_point_size =
+      version == nullptr || std::string(version).rfind("OpenGL ES", 0) != 0;
   set_ground(GroundGrid());
 }
 
@@ -329,10 +336,10 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     // projection(1, 1) = 1 / tan(fov / 2): the viewport's height spans 2 tan(fov / 2) at 1 m.
     glUniform1f(r.point.uniform("metres_per_pixel"),
                 2.0f / (projection(1, 1) * static_cast<float>(std::max(height, 1))));
-    glEnable(GL_PROGRAM_POINT_SIZE);
+    if (r.program_point_size) glEnable(GL_PROGRAM_POINT_SIZE);
     glBindVertexArray(r.point_array);
     glDrawArrays(GL_POINTS, 0, r.vertex_count);
-    glDisable(GL_PROGRAM_POINT_SIZE);
+    if (r.program_point_size) glDisable(GL_PROGRAM_POINT_SIZE);
   }
   glBindVertexArray(0);
   glUseProgram(0);

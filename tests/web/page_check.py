@@ -108,6 +108,10 @@ class Chromium:
             if reply.get('method') == 'Runtime.consoleAPICalled':
                 self.console.append(' '.join(str(argument.get('value', argument.get('description')))
                                              for argument in reply['params']['args']))
+            if reply.get('method') == 'Log.entryAdded':  # the browser's own: WebGL, the network
+                entry = reply['params']['entry']
+                self.console.append(f'{entry.get("source")}: {entry.get("text")} '
+                                    f'{entry.get("url", "")}')
             if reply.get('id') == self.next_id:
                 if 'error' in reply:
                     raise RuntimeError(f'{method}: {reply["error"]}')
@@ -175,6 +179,7 @@ def main():
     browser = Chromium(args.chromium)
     try:
         browser.call('Runtime.enable')
+        browser.call('Log.enable')
         browser.call('Emulation.setDeviceMetricsOverride',
                      {'width': width, 'height': height, 'deviceScaleFactor': 1,
                       'mobile': width < 600})
@@ -204,6 +209,12 @@ def main():
                 failure = f'{frames} frames, {shown_steps} steps after {args.timeout:.0f} s'
                 break
             time.sleep(0.1)
+        # A clean console: no WebGL error (glEnable of a desktop-only enum twice a frame) and no
+        # file the page asks for missing (the favicon).
+        noise = [line for line in browser.console
+                 if 'INVALID_ENUM' in line or 'Failed to load resource' in line]
+        if noise and not failure:
+            failure = f'the console: {noise[0]} ({len(noise)} such lines)'
         if first_frame is not None and first_frame > args.first_frame_limit:
             failure = failure or (f'first frame after {first_frame:.1f} s, more than '
                                   f'{args.first_frame_limit:.0f} s')
