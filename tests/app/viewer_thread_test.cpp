@@ -113,6 +113,19 @@ TEST(ViewerThread, WithAStepLimitItStopsThere) {
     viewer.exchange(now, frame_seconds);
   viewer.finish_steps();
   EXPECT_EQ(viewer.simulation().steps_taken(), 7);
+  // Stopped there, it says so: paused (the page's frames=N froze the cloth mid-swing while the
+  // button still said Pause), and Play goes on.
+  EXPECT_TRUE(viewer.paused());
+  wobble::InputEvent space;
+  space.type = wobble::InputEvent::Type::key_press;
+  space.code = GLFW_KEY_SPACE;
+  viewer.handle_events({space}, false, false, window);
+  for (int frame = 0; frame < 60000 && viewer.shown_steps() < 10; ++frame, now += frame_seconds) {
+    viewer.exchange(now, frame_seconds);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  viewer.finish_steps();
+  EXPECT_GE(viewer.simulation().steps_taken(), 10);
 }
 
 // While a batch is out, a reset and a Ctrl+click wait for it, then happen in the order done:

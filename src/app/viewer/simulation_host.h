@@ -77,6 +77,10 @@ class SimulationHost {
   void restart_clock() { pacer_.restart(); }
   // Never step beyond this many steps in all (the window's --frames).
   void set_step_limit(long steps) { step_limit_ = steps; }
+  // The steps taken reached the limit.
+  bool at_step_limit() const {
+    return step_limit_ >= 0 && simulation_ && simulation_->steps_taken() >= step_limit_;
+  }
 
   // Start a batch of `steps` steps, recording the last step's convergence trace and the energy
   // after each as asked; on the stepping thread once there is one, else finished on return.

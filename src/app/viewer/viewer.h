@@ -145,6 +145,7 @@ class Viewer {
   // Whether a batch of steps runs on the stepping thread now.
   bool stepping() const { return host_.stepping(); }
   // Never step beyond this many steps in all (the window's --frames).
+  // Step at most `steps` steps in all; once there (exchange), paused, and Play goes on.
   void set_step_limit(long steps) { host_.set_step_limit(steps); }
   // Called after each good step, on the thread that took it, with the simulation (the CSV rows
   // and OBJ sequences of the window).

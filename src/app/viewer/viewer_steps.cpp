@@ -75,6 +75,12 @@ bool Viewer::exchange(double now, double frame_seconds) {
   finish_batch();
   hand_over_changes();
   refresh_shown_state();
+  // At the step limit (the page's frames=N) the simulation is paused, as the button then says;
+  // Play goes on from there. (The window's --frames ends the run once step N is drawn.)
+  if (host_.at_step_limit()) {
+    panel_.paused = true;
+    host_.set_step_limit(-1);
+  }
   const int steps = steps_to_start(now, frame_seconds);
   if (steps > 0) start_batch(steps);
   return true;
