@@ -3,6 +3,7 @@
 #include "app/viewer/save_and_record.h"
 
 #include <exception>
+#include <filesystem>
 #include <utility>
 
 #include "app/cli/scene_catalog.h"
@@ -41,6 +42,10 @@ SavedScene SaveAndRecord::save_scene(const Scene& scene, const Simulation& simul
     const Eigen::Vector3d eye = camera_eye(camera).cast<double>();
     save_current_scene(path, scene, simulation,
                        std::make_pair(eye, Eigen::Vector3d(camera.target.cast<double>())));
+    if (written_) {
+      written_(std::filesystem::path(path).replace_extension(".obj").string());  // its mesh
+      written_(path);
+    }
     return SavedScene{"saved the scene as " + path + " (wobble " + path +
                           " opens it; the scene picker lists it as " + scene_label(path) + ")",
                       path};
@@ -53,6 +58,7 @@ std::string SaveAndRecord::export_obj(const Scene& scene, const Simulation& simu
   const std::string path = unused_file_name(".", "wobble-" + scene.name, ".obj");
   try {
     write_obj(path, simulation.positions(), scene.network.F, scene.network.E);
+    if (written_) written_(path);
     return "exported " + path;
   } catch (const std::exception& error) {
     return std::string("export failed: ") + error.what();
@@ -73,6 +79,7 @@ std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, lo
     try {
       write_png(path, read_frame());
       told.push_back("saved " + path);
+      if (written_) written_(path);
     } catch (const std::exception& error) {
       told.push_back(std::string("screenshot failed: ") + error.what());
     }

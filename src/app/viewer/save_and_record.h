@@ -40,6 +40,11 @@ class SaveAndRecord {
   // `command`.
   bool command(ViewerCommand command);
   bool recording() const { return recording_; }
+  // Called with each file written from then on (a screenshot, an OBJ, a scene and its mesh):
+  // the page offers each as a download.
+  void set_written(std::function<void(const std::string& path)> written) {
+    written_ = std::move(written);
+  }
 
   // The simulation's side, once a running batch finished.
   // Ctrl+S: the scene with its pins and settings, and `camera`'s view, as
@@ -66,7 +71,8 @@ class SaveAndRecord {
   bool recording_ = false;  // the record toggle
   bool screenshot_requested_ = false;
   std::unique_ptr<WindowRecorder> recorder_;  // null: nowhere to record (headless)
-  long recorded_step_ = -1;                   // the step count of the last frame recorded
+  std::function<void(const std::string& path)> written_;
+  long recorded_step_ = -1;  // the step count of the last frame recorded
 };
 
 }  // namespace wobble

@@ -97,6 +97,11 @@ class Viewer {
   // Draw the notices (the window); headless images never show them, so that they do not
   // depend on the wall clock.
   void show_notices(bool on) { show_notices_ = on; }
+  // Each file a save writes from then on (F12 or PNG, F11 or OBJ, Ctrl+S or Save scene: the scene
+  // and its mesh), as its path: the page offers each as a download.
+  void set_file_written(std::function<void(const std::string& path)> written) {
+    save_and_record_.set_written(std::move(written));
+  }
   // Tells the user one line: on screen for a few seconds (while notices show) and among the
   // panel's notes (a page's refused address key, a file written).
   void tell(const std::string& what) { saved(what); }

@@ -3,6 +3,7 @@
 // page, one line a key, and costs only that key; a scene that does not open opens the default
 // scene instead, with the reason.
 #include <emscripten.h>
+#include <sys/stat.h>
 
 #include <exception>
 #include <iostream>
@@ -31,6 +32,9 @@ std::optional<wobble::CommandLine> parse(const std::vector<std::string>& argumen
 }  // namespace
 
 int main() {
+  // As a desktop session starts: emscripten's starts with a umask of 0777, which left every file
+  // the page writes (a saved PNG, OBJ or scene) unreadable, even to its download.
+  umask(022);
   const char* search = emscripten_run_script_string("location.search");
   const wobble::PageRequest request =
       wobble::read_page_address(search != nullptr ? search : "", wobble::scene_catalog());

@@ -19,6 +19,7 @@
 #include "app/viewer/viewer.h"
 #include "app/web/page_arguments.h"
 #include "platform/glfw_window.h"
+#include "render/offscreen_target.h"
 
 namespace wobble {
 
@@ -82,6 +83,7 @@ class PageHost : public FrameHost {
     window_.window_size(width, height);
     window = Eigen::Vector2f(static_cast<float>(width), static_cast<float>(height));
     width_ = width;
+    height_ = height;
   }
   void new_platform_frame() override { ImGuiSession::new_glfw_frame(); }
   void before_panel() override {
@@ -97,7 +99,17 @@ class PageHost : public FrameHost {
     if (title != title_) window_.set_title(title_ = title);
   }
   void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
-  void present(Viewer& viewer, bool /*drawn*/) override {
+  void present(Viewer& viewer, bool drawn) override {
+    // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
+    // its back buffer; the file is then offered as a download (offer_download).
+    const int width = width_, height = height_;
+    viewer.write_window_files(drawn, [width, height] {
+      RgbaImage shown;
+      shown.width = width;
+      shown.height = height;
+      read_framebuffer_rgba(width, height, shown.pixels);
+      return shown;
+    });
     // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they
     // show.
     ++frames_drawn_;
@@ -113,7 +125,7 @@ class PageHost : public FrameHost {
  private:
   GlfwWindow& window_;
   std::string title_;
-  int width_ = 0;
+  int width_ = 0, height_ = 0;
   long frames_drawn_ = 0;
   std::vector<double> wheel_;  // notches since the last poll
 };
@@ -126,6 +138,39 @@ struct BrowserApp {
   std::unique_ptr<PageHost> host;
   FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
 };
+
+// A file the viewer wrote into the page's memory, handed to the browser as a download under its
+// own name (the page has no folder of its own to write into).
+void offer_download(const std::string& path) {
+  EM_ASM(
+      {
+        var path = UTF8ToString($0);
+        var name = path.substring(path.lastIndexOf('/') + 1);
+        try {
+          var link = document.createElement('a');
+          var cwd = FS.cwd();
+          var full = path.charAt(0) == '/'
+                         ? path
+                         : (cwd == '/' ? '' : cwd) + '/' +
+                               (path.indexOf('./') == 0 ? path.substring(2) : path);
+          link.href = URL.createObjectURL(new Blob([FS.readFile(full)]));
+          link.download = name;
+          document.body.appendChild(link);
+          link.click();
+          setTimeout(
+              function() {
+                URL.revokeObjectURL(link.href);
+                link.remove();
+              },
+              10000);
+          Module.wobbleDownloads = (Module.wobbleDownloads || []).concat([name]);
+        } catch (error) {
+          console.error('wobble: could not offer ' + name + ' as a download: ' + error + ' ' +
+                        (error.errno || ''));
+        }
+      },
+      path.c_str());
+}
 
 // The browser's wheel over the canvas, in notches (page_wheel_notches); the page itself does not
 // scroll. (Emscripten's GLFW passes the raw deltaY on, about 100 a notch and the other way.)
@@ -163,6 +208,7 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
   // window's callbacks) is turned off.
   glfwSetScrollCallback(app->window->handle(), nullptr);
   emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
+  app->viewer.set_file_written(offer_download);
   print_notes(app->viewer.scene(), std::cerr);
   std::string told;
   for (const std::string& message : messages) {

@@ -96,6 +96,24 @@ TEST_F(SaveAndRecordTest, F9RecordsEachNewStateIntoAFolderOfItsOwn) {
   EXPECT_EQ(frames, 3);
 }
 
+// Each file written is told by its path (the page offers each as a download): the screenshot,
+// the OBJ, and a saved scene's mesh and scene file.
+TEST_F(SaveAndRecordTest, EachFileWrittenIsToldByItsPath) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params);
+  wobble::SaveAndRecord saves;
+  std::vector<std::string> written;
+  saves.set_written([&](const std::string& path) { written.push_back(path); });
+  saves.command(wobble::ViewerCommand::screenshot);
+  saves.write_frame("cloth", 1, true, grey_frame);
+  saves.export_obj(scene, simulation);
+  const wobble::SavedScene saved = saves.save_scene(scene, simulation, wobble::OrbitCamera());
+  EXPECT_EQ(written, (std::vector<std::string>{"./wobble-cloth-0001.png", "./wobble-cloth-0001.obj",
+                                               "./wobble-cloth-scene-0001.obj", saved.path}));
+  for (const std::string& path : written)
+    EXPECT_TRUE(fs::exists(path)) << path;
+}
+
 TEST_F(SaveAndRecordTest, CtrlSAndF11WriteASceneAndAnObjThatReadBack) {
   wobble::Scene scene = wobble::make_builtin_scene("cloth");
   wobble::Simulation simulation(scene.network, scene.pins, scene.params);

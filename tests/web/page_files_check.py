@@ -1,0 +1,116 @@
+"""The page gives its files to the browser: in headless Chromium at 1280x720, the panel's PNG
+button downloads a PNG of what the canvas shows, OBJ the cloth's 1600 vertices, and Save scene
+the scene and its mesh, each under the desktop's name (wobble-cloth-0001.png, ...). (Before,
+they were written into the page's memory, where nobody could reach them.)
+
+  page_files_check.py SITE
+
+Exit 0 when every check holds; otherwise one line each that failed.
+"""
+import base64
+import os
+import shutil
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_check import Chromium, serve_site  # noqa: E402
+from png_files import read_png  # noqa: E402
+
+
+def click(browser, x, y):
+    for kind in ('mouseMoved', 'mousePressed', 'mouseReleased'):
+        event = {'type': kind, 'x': x, 'y': y}
+        if kind != 'mouseMoved':
+            event.update({'button': 'left', 'buttons': 1 if kind == 'mousePressed' else 0,
+                          'clickCount': 1})
+        browser.call('Input.dispatchMouseEvent', event)
+        time.sleep(0.15)
+
+
+def wait_for(path, timeout=20.0):
+    start = time.monotonic()
+    while time.monotonic() - start < timeout:
+        if os.path.exists(path) and os.path.getsize(path) > 0:
+            time.sleep(0.3)  # the browser finishes writing
+            return True
+        time.sleep(0.2)
+    return False
+
+
+def main():
+    site = sys.argv[1]
+    server, url = serve_site(site)
+    folder = tempfile.mkdtemp(prefix='wobble-downloads-')
+    failures = []
+    browser = Chromium(shutil.which('chromium') or 'chromium')
+    try:
+        browser.call('Runtime.enable')
+        # A browser-wide setting: sent outside the page's session.
+        session, browser.session = browser.session, None
+        browser.call('Browser.setDownloadBehavior', {'behavior': 'allow', 'downloadPath': folder})
+        browser.session = session
+        browser.call('Emulation.setDeviceMetricsOverride',
+                     {'width': 1280, 'height': 720, 'deviceScaleFactor': 1, 'mobile': False})
+        browser.call('Page.navigate', {'url': f'{url}?frames=30'})
+        start = time.monotonic()
+        while time.monotonic() - start < 60:
+            steps = browser.evaluate('typeof Module == "object" ? (Module.wobbleSteps || 0) : 0')
+            if steps and steps >= 30:
+                break
+            time.sleep(0.2)
+        time.sleep(0.5)
+        # The save row as the panel opens at 1280x720: Save scene, OBJ, PNG.
+        buttons = {'save scene': (57, 92), 'obj': (118, 92), 'png': (155, 92)}
+        click(browser, *buttons['png'])
+        time.sleep(1.0)
+        print('page_files_check: the page offered', browser.evaluate('Module.wobbleDownloads || []'))
+        png = os.path.join(folder, 'wobble-cloth-0001.png')
+        if not wait_for(png):
+            failures.append(f'PNG: no download ({os.listdir(folder)})')
+        else:
+            width, height, pixels = read_png(png)
+            shot_path = os.path.join(folder, 'screenshot.png')
+            with open(shot_path, 'wb') as file:
+                file.write(base64.b64decode(
+                    browser.call('Page.captureScreenshot', {'format': 'png'})['data']))
+            _, _, shot = read_png(shot_path)
+            # Where the cloth is, the download and the screen agree (the panel's timings may not).
+            differing = sum(1 for y in range(100, 600, 10) for x in range(400, 1200, 10)
+                            if max(abs(a - b) for a, b in zip(pixels[y][4 * x:4 * x + 3],
+                                                              shot[y][4 * x:4 * x + 3])) > 40)
+            print(f'page_files_check: PNG {width}x{height}, {differing} of 4000 sampled pixels '
+                  f'differ from the screen')
+            if (width, height) != (1280, 720):
+                failures.append(f'PNG: {width}x{height}, expected the canvas, 1280x720')
+            if differing > 200:
+                failures.append(f'PNG: {differing} of 4000 pixels differ from what the page shows')
+        click(browser, *buttons['obj'])
+        obj = os.path.join(folder, 'wobble-cloth-0001.obj')
+        if not wait_for(obj):
+            failures.append(f'OBJ: no download ({os.listdir(folder)})')
+        else:
+            with open(obj) as file:
+                vertices = sum(1 for line in file if line.startswith('v '))
+            print(f'page_files_check: OBJ with {vertices} vertices')
+            if vertices != 1600:
+                failures.append(f'OBJ: {vertices} vertices, expected 1600')
+        click(browser, *buttons['save scene'])
+        scene = os.path.join(folder, 'wobble-cloth-scene-0001.json')
+        if not wait_for(scene) or not wait_for(os.path.join(folder,
+                                                            'wobble-cloth-scene-0001.obj')):
+            failures.append(f'Save scene: no scene and mesh ({os.listdir(folder)})')
+        else:
+            print('page_files_check: the scene and its mesh downloaded')
+    finally:
+        browser.close()
+        server.shutdown()
+        shutil.rmtree(folder, ignore_errors=True)
+    for failure in failures:
+        print(f'page_files_check: FAILED: {failure}')
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
