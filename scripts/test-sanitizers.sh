@@ -42,14 +42,16 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp"
 # wobble_render_tests). Left to the plain pass of scripts/test.sh, which runs them all: the golden
 # images (their time is Mesa's software rasterizer, whose code is not Wobble's; the app tests
 # still render through it under the sanitizers), the course checker's scenarios
-# (CheckAssignment.*: scripts/check-assignment.sh compiles the student's and the checker's code
-# itself, without these flags, so under this build they would repeat the plain pass's work
-# exactly), the docs checks, and the benchmarks, which no test runs.
+# (CheckAssignment.*, labelled checker_scenario: scripts/check-assignment.sh compiles the
+# student's and the checker's code itself, without these flags, so under this build they would
+# repeat the plain pass's work exactly; SeedPasses and BuildStepServers stay, since the student
+# tests need the cache and the step servers they build), the docs checks, and the benchmarks,
+# which no test runs.
 targets=(wobble_sim_tests wobble_sim_allocation_tests wobble_io_tests wobble_bounded_tests
   wobble_student_step_tests wobble_student_view_tests wobble_student_build_tests wobble_app_tests
   wobble_added_setting_test wobble_interaction_tests wobble_ui_tests wobble_render_tests
   seed_standalone)
 cmake --build build-sanitize --parallel "$(nproc)" --target "${targets[@]}"
 ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" \
-  --exclude-regex '_NOT_BUILT|^CheckAssignment[.]|^docs/'
+  --label-exclude checker_scenario --exclude-regex '_NOT_BUILT|^docs/'
 
