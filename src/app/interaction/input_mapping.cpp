@@ -106,4 +106,22 @@ const std::vector<Binding>& viewer_bindings() {
   return bindings;
 }
 
+std::vector<Binding> page_bindings() {
+  std::vector<Binding> bindings;
+  for (const Binding& binding : viewer_bindings()) {
+    const std::string& input = binding.input;
+    if (input == "F12" || input == "F11" || input == "F9" || input == "Ctrl+S" ||
+        input == "Ctrl+Q") {
+      continue;
+    }
+    if (input == "H") {
+      bindings.push_back({"PNG, OBJ, Save scene",
+                          "the panel's buttons: downloads of the picture, "
+                          "the positions, the scene and its mesh"});
+    }
+    bindings.push_back(binding);
+  }
+  return bindings;
+}
+
 }  // namespace wobble

@@ -61,6 +61,10 @@ struct Binding {
   std::string action;
 };
 const std::vector<Binding>& viewer_bindings();
+// What of them works in a page (the help a page shows): the desktop's keys but those the browser
+// keeps for itself (F12, F11, Ctrl+S, Ctrl+Q) and recording (F9, no folder to write into), and
+// the panel's buttons that download files in their place.
+std::vector<Binding> page_bindings();
 
 }  // namespace wobble
 

@@ -102,6 +102,8 @@ class Viewer {
   void set_file_written(std::function<void(const std::string& path)> written) {
     save_and_record_.set_written(std::move(written));
   }
+  // What the help (H) lists: viewer_bindings(), or a page's page_bindings().
+  void set_help(std::vector<Binding> bindings) { help_ = std::move(bindings); }
   // Tells the user one line: on screen for a few seconds (while notices show) and among the
   // panel's notes (a page's refused address key, a file written).
   void tell(const std::string& what) { saved(what); }
@@ -300,6 +302,7 @@ class Viewer {
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
   bool framed_with_plots_ = false;  // the plots were open when the view was last framed
+  std::vector<Binding> help_ = viewer_bindings();
   // What the UI shows of the simulation's side, as of the last refresh_shown_state.
   PanelStats shown_stats_;
   std::string shown_twin_warning_;

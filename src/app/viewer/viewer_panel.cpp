@@ -60,7 +60,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     panel_place_ = PanelPlace();  // a hidden panel covers nothing: F frames in the whole window
   }
   std::vector<std::pair<std::string, std::string>> help;
-  for (const Binding& binding : viewer_bindings())
+  for (const Binding& binding : help_)
     help.emplace_back(binding.input, binding.action);
   draw_help_overlay(help, panel_.show_help);
   draw_step_warning(step_warning_, ui_scale);

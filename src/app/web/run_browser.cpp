@@ -209,6 +209,7 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
   glfwSetScrollCallback(app->window->handle(), nullptr);
   emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
   app->viewer.set_file_written(offer_download);
+  app->viewer.set_help(page_bindings());
   print_notes(app->viewer.scene(), std::cerr);
   std::string told;
   for (const std::string& message : messages) {

@@ -120,3 +120,25 @@ TEST(InputMapping, RightAndMiddlePan) {
 }
 
 }  // namespace
+
+// A page's help lists only what works there: not the keys the browser keeps (F12, F11, Ctrl+S,
+// Ctrl+Q) nor recording, and the panel's download buttons in their place; everything else as
+// the desktop's.
+TEST(InputMapping, APagesHelpListsOnlyWhatWorksThere) {
+  const std::vector<wobble::Binding> page = wobble::page_bindings();
+  const auto lists = [&](const std::string& input) {
+    for (const wobble::Binding& binding : page)
+      if (binding.input == input) return true;
+    return false;
+  };
+  for (const char* taken : {"F12", "F11", "F9", "Ctrl+S", "Ctrl+Q"})
+    EXPECT_FALSE(lists(taken)) << taken;
+  EXPECT_TRUE(lists("PNG, OBJ, Save scene"));
+  for (const wobble::Binding& binding : wobble::viewer_bindings()) {
+    const std::string& input = binding.input;
+    if (input != "F12" && input != "F11" && input != "F9" && input != "Ctrl+S" &&
+        input != "Ctrl+Q") {
+      EXPECT_TRUE(lists(input)) << input;
+    }
+  }
+}
