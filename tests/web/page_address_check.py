@@ -11,10 +11,10 @@ import base64
 import os
 import shutil
 import sys
-import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_check import Chromium, serve_site  # noqa: E402
+from page_drag_check import Page  # noqa: E402
 
 
 def main():
@@ -29,16 +29,7 @@ def main():
         browser = Chromium(shutil.which('chromium') or 'chromium')
         try:
             browser.call('Runtime.enable')
-            browser.call('Emulation.setDeviceMetricsOverride',
-                         {'width': 1280, 'height': 720, 'deviceScaleFactor': 1, 'mobile': False})
-            browser.call('Page.navigate', {'url': f'{url}?{query}'})
-            start = time.monotonic()
-            frames = 0
-            while time.monotonic() - start < 60 and frames < 10:
-                time.sleep(0.2)
-                frames = browser.evaluate(
-                    'typeof Module == "object" ? (Module.wobbleFrames || 0) : 0') or 0
-            if frames < 10:
+            if not Page(browser, (1280, 720), False).open(f'{url}?{query}'):
                 failures.append(f'{query}: the page drew no frames')
                 continue
             opened = browser.evaluate('Module.wobbleScene || ""')

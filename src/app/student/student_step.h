@@ -18,7 +18,8 @@ namespace wobble {
 //   scripts/check-assignment.sh --build-step-server DIR
 //
 // builds from DIR/fast_mass_springs_step_sparse.cpp; it runs Wobble's reference precomputation
-// once, then the student's step for each request (src/check/step_server/step_protocol.h has the messages).
+// once, then the student's step for each request (src/check/step_server/step_protocol.h has the
+// messages).
 //
 // The server runs in a process group of its own (check/bounded_process.h) within 2 GiB of
 // address space (WOBBLE_STEP_SERVER_MEMORY_MIB) and 64 MiB a file, and stopping it ends its

@@ -1,12 +1,28 @@
 #include "app/viewer/frame_loop.h"
 
+#include <glad/gl.h>
+// glad first: the backends must not include a GL header of their own.
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
 #include "app/viewer/viewer.h"
+#include "render/offscreen_target.h"
 
 namespace wobble {
+
+void read_shown_frame(int width, int height, RgbaImage& image) {
+  image.width = width;
+  image.height = height;
+  glReadBuffer(GL_BACK);
+  read_framebuffer_rgba(width, height, image.pixels);
+}
+
+RgbaImage read_shown_frame(int width, int height) {
+  RgbaImage image;
+  read_shown_frame(width, height, image);
+  return image;
+}
 
 FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale) {
   FrameResult result;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/viewer/frame_meters.h"
+#include "io/png_image.h"
 #include "platform/input_event.h"
 
 struct GLFWwindow;
@@ -53,6 +54,12 @@ class FrameHost {
   // 6. The picture drawn: read back what is wanted (files, images), then show it (swap) or not.
   virtual void present(Viewer& viewer, bool drawn) = 0;
 };
+
+// The picture just drawn into the default framebuffer, read back before it is shown (the window's
+// swap, the page's return to the browser): what the window and the page write their PNGs from.
+// `image` is resized to width by height pixels, its buffer kept.
+void read_shown_frame(int width, int height, RgbaImage& image);
+RgbaImage read_shown_frame(int width, int height);
 
 // What one frame did.
 struct FrameResult {

@@ -18,7 +18,6 @@
 #include "app/viewer/frame_loop.h"
 #include "app/viewer/viewer.h"
 #include "platform/glfw_window.h"
-#include "render/offscreen_target.h"
 
 namespace wobble {
 
@@ -88,14 +87,7 @@ class WindowHost : public FrameHost {
   void present(Viewer& viewer, bool drawn) override {
     const int width = width_, height = height_;
     // F12 and the panel's record toggle (F9), from what the window shows, panel included.
-    viewer.write_window_files(drawn, [width, height] {
-      RgbaImage shown;
-      shown.width = width;
-      shown.height = height;
-      glReadBuffer(GL_BACK);
-      read_framebuffer_rgba(width, height, shown.pixels);
-      return shown;
-    });
+    viewer.write_window_files(drawn, [width, height] { return read_shown_frame(width, height); });
     // --record: each step's state once, numbered by the step; --frames ends once step N is
     // drawn, and --screenshot is that picture.
     const long steps = viewer.stats().steps;
@@ -104,10 +96,7 @@ class WindowHost : public FrameHost {
     const bool keep =
         (new_step && outputs_.wants(last_)) || (!command_.frames && !command_.screenshot.empty());
     if (keep && drawn) {
-      glReadBuffer(GL_BACK);
-      image_.width = width;
-      image_.height = height;
-      read_framebuffer_rgba(width, height, image_.pixels);
+      read_shown_frame(width, height, image_);
       if (new_step && outputs_.wants(last_)) outputs_.write(steps, last_, image_);
     }
     recorded_steps_ = steps;

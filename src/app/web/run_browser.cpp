@@ -19,7 +19,6 @@
 #include "app/viewer/viewer.h"
 #include "app/web/page_arguments.h"
 #include "platform/glfw_window.h"
-#include "render/offscreen_target.h"
 
 namespace wobble {
 
@@ -103,13 +102,7 @@ class PageHost : public FrameHost {
     // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
     // its back buffer; the file is then offered as a download (offer_download).
     const int width = width_, height = height_;
-    viewer.write_window_files(drawn, [width, height] {
-      RgbaImage shown;
-      shown.width = width;
-      shown.height = height;
-      read_framebuffer_rgba(width, height, shown.pixels);
-      return shown;
-    });
+    viewer.write_window_files(drawn, [width, height] { return read_shown_frame(width, height); });
     // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they
     // show.
     ++frames_drawn_;
