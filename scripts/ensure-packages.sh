@@ -11,6 +11,8 @@ run_packages=(
   libglfw3-dev libimgui-dev             # window and panel
   libegl-dev libegl-mesa0 libgl1-mesa-dri  # headless EGL, and Mesa's renderer (llvmpipe)
   libspng-dev                           # PNG input and output
+  # --record FILE.webm / FILE.mp4: FFmpeg's libraries (they bring libvpx and libx264)
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   procps                                # ps: the checker's clean-up on a signal
 )
 # What the test suite needs on top: the window smoke test runs under a virtual X server.

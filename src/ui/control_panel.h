@@ -94,7 +94,8 @@ struct PanelSettings : SceneRowSettings,
                        ViewSettings,
                        InstrumentSettings,
                        SplitSettings {
-  bool recording = false;  // every new state drawn written as a PNG (F9)
+  bool recording = false;  // every new state drawn written as a PNG or a video frame (F9)
+  int record_format = 0;   // what the recording writes: a RecordFormat (panel_sections.h)
 };
 
 // Buttons pressed this frame, and where the panel was drawn.

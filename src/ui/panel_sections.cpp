@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "log_drag.h"
 
 namespace wobble {
@@ -79,7 +81,8 @@ SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
   return requests;
 }
 
-SaveRowRequests draw_save_rows(bool& recording, const std::string& recording_status) {
+SaveRowRequests draw_save_rows(bool& recording, int& record_format,
+                               const std::string& recording_status) {
   SaveRowRequests requests;
   // Files into the working folder, each under the next free number.
   requests.save_scene = ImGui::Button("Save scene");
@@ -99,9 +102,32 @@ SaveRowRequests draw_save_rows(bool& recording, const std::string& recording_sta
   ImGui::Checkbox("record", &recording);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "F9: every new state drawn as DIR/frame_00001.png, ...\n"
-        "into a new folder wobble-SCENE-frames-0001");
+        "F9: every new state drawn, as the combo beside says:\n"
+        "PNG frames: DIR/frame_00001.png, ... in a new folder wobble-SCENE-frames-0001\n"
+        "WebM video: wobble-SCENE-0001.webm (VP9; plays in every browser)\n"
+        "MP4 video: wobble-SCENE-0001.mp4 (H.264; slides and players)\n"
+        "A video's frames play at their simulated time.");
   }
+  // Short names in the row, the full ones in the list; beside the toggle where it fits.
+  static const char* const shown[] = {"PNG", "WebM", "MP4"};
+  static const char* const listed[] = {"PNG frames", "WebM video", "MP4 video"};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float combo_width =
+      ImGui::CalcTextSize("WebM").x + ImGui::GetFrameHeight() + 2.0f * style.FramePadding.x;
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < combo_width) ImGui::NewLine();
+  ImGui::SetNextItemWidth(combo_width);
+  record_format = std::clamp(record_format, 0, 2);
+  ImGui::BeginDisabled(recording);  // one recording, one format
+  if (ImGui::BeginCombo("##record as", shown[record_format])) {
+    for (int format = 0; format < 3; ++format) {
+      if (ImGui::Selectable(listed[format], format == record_format)) record_format = format;
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("what record writes: PNG frames, a WebM video or an MP4 video");
   if (!recording_status.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));
     ImGui::TextWrapped("recording to %s", recording_status.c_str());

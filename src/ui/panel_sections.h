@@ -23,14 +23,18 @@ struct SceneRowRequests {
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
                                  const std::vector<std::string>& scene_names);
 
-// Files into the working folder: Save scene, OBJ, PNG and the record toggle, and where a
-// recording goes ("DIR/ (N frames)", empty when not recording).
+// Files into the working folder: Save scene, OBJ, PNG, the record toggle and what it writes
+// (`record_format`, a RecordFormat; fixed while recording), and where a recording goes
+// ("DIR/ (N frames)", empty when not recording).
 struct SaveRowRequests {
   bool save_scene = false;  // save the scene with its pins and settings (Ctrl+S)
   bool export_obj = false;  // the current positions as an OBJ (F11)
   bool screenshot = false;  // the window as a PNG (F12)
 };
-SaveRowRequests draw_save_rows(bool& recording, const std::string& recording_status);
+// What the record toggle writes, the combo beside it: PNG frames in a folder, or one video.
+enum RecordFormat : int { record_png_frames = 0, record_webm_video = 1, record_mp4_video = 2 };
+SaveRowRequests draw_save_rows(bool& recording, int& record_format,
+                               const std::string& recording_status);
 
 // Play, Step, Reset, Frame, View and Help, real time, and why the simulation paused by itself
 // (`warning`, or empty).

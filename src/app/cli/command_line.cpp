@@ -192,7 +192,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--width", width, "Window or image width in pixels (default 1280)");
   app.add_option("--height", height, "Window or image height in pixels (default 720)");
   app.add_option("--screenshot", screenshot, "Write the last frame as a PNG");
-  app.add_option("--record", record, "Write every frame as DIR/frame_00001.png, ...");
+  app.add_option("--record", record,
+                 "Write every frame as DIR/frame_00001.png, ..., or as one video FILE.webm "
+                 "(VP9) or FILE.mp4 (H.264)");
   app.add_flag("--ui", command.ui, "Headless images show the control panel too");
   app.add_flag("--plots", command.plots,
                "Open the convergence and energy plots (key G), in images too");

@@ -44,7 +44,7 @@ struct CommandLine {
   // Images (both modes) and what they show.
   int width = 1280, height = 720;  // window or offscreen image size, pixels
   std::string screenshot;          // PNG of the frame after the last step; empty: none
-  std::string record;              // folder for one PNG per frame; empty: none
+  std::string record;              // folder for one PNG per frame, or a .webm/.mp4; empty: none
   bool ui = false;                 // headless: draw the ImGui panel too
   bool plots = false;              // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;

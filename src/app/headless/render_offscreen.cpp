@@ -64,7 +64,7 @@ class OffscreenHost : public FrameHost {
     render_start_ = std::chrono::steady_clock::now();
     target_.bind();
   }
-  void present(Viewer& /*viewer*/, bool /*drawn*/) override {
+  void present(Viewer& viewer, bool /*drawn*/) override {
     const bool last = frame_ == options_.frames;
     if (last || (outputs_ != nullptr && outputs_->wants(last))) {
       target_.read_rgba(image_.pixels);
@@ -76,7 +76,11 @@ class OffscreenHost : public FrameHost {
                                        std::chrono::steady_clock::now() - render_start_)
                                        .count());
     }
-    if (outputs_ != nullptr && outputs_->wants(last)) outputs_->write(frame_, last, image_);
+    if (outputs_ != nullptr && outputs_->wants(last)) {
+      // Every step is a frame: a video of them plays at 1/dt frames a second.
+      const Simulation& simulation = viewer.simulation();
+      outputs_->write(frame_, last, image_, FrameTime{simulation.time(), simulation.params().dt});
+    }
   }
 
   RgbaImage& image() { return image_; }

@@ -51,6 +51,7 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   OffscreenReport report;
   try {
     render_offscreen(viewer, options, &outputs, &report);
+    outputs.finish();  // the video's index; a failure above completes it in its destructor
   } catch (...) {
     instruments.write();  // the frames before a failure are kept, as the images are
     throw;

@@ -97,9 +97,12 @@ class WindowHost : public FrameHost {
         (new_step && outputs_.wants(last_)) || (!command_.frames && !command_.screenshot.empty());
     if (keep && drawn) {
       read_shown_frame(width, height, image_);
-      if (new_step && outputs_.wants(last_)) outputs_.write(steps, last_, image_);
+      if (new_step && outputs_.wants(last_)) {
+        outputs_.write(steps, last_, image_, viewer.shown_time());
+      }
     }
     recorded_steps_ = steps;
+    recorded_time_ = viewer.shown_time();
     window_.swap_buffers();
   }
 
@@ -107,7 +110,7 @@ class WindowHost : public FrameHost {
   // Without --frames, --screenshot is the last picture the window showed.
   void write_screenshot() {
     if (!command_.frames && !command_.screenshot.empty() && !image_.pixels.empty()) {
-      outputs_.write(recorded_steps_, /*last=*/true, image_);
+      outputs_.write(recorded_steps_, /*last=*/true, image_, recorded_time_);
     }
   }
 
@@ -124,6 +127,7 @@ class WindowHost : public FrameHost {
   int quiet_frames_ = 0, width_ = 0, height_ = 0;
   RgbaImage image_;
   long recorded_steps_ = 0;
+  FrameTime recorded_time_;
   bool last_ = false;
 };
 
@@ -175,6 +179,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
     throw;
   }
   host.write_screenshot();
+  outputs.finish();  // the video's index; a failure above completes it in its destructor
   viewer.detach_renderer();
   instruments.write();
   if (command.stats) {

@@ -16,7 +16,7 @@ namespace wobble {
 SaveRowRequests SaveAndRecord::draw_panel_rows() {
   std::string status;
   if (recorder_) status = recorder_->status();
-  SaveRowRequests requests = draw_save_rows(recording_, status);
+  SaveRowRequests requests = draw_save_rows(recording_, record_format_, status);
   if (requests.screenshot) command(ViewerCommand::screenshot);
   requests.screenshot = false;  // taken
   return requests;
@@ -69,9 +69,16 @@ void SaveAndRecord::record_into(std::string folder, std::ostream& progress) {
   recorder_ = std::make_unique<WindowRecorder>(std::move(folder), progress);
 }
 
+void SaveAndRecord::set_record_format(std::optional<VideoFormat> video) {
+  record_format_ = !video                        ? record_png_frames
+                   : *video == VideoFormat::webm ? record_webm_video
+                                                 : record_mp4_video;
+}
+
 std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, long steps,
                                                     bool drawn,
-                                                    const std::function<RgbaImage()>& read_frame) {
+                                                    const std::function<RgbaImage()>& read_frame,
+                                                    const FrameTime& time) {
   std::vector<std::string> told;
   // What the window shows, panel included.
   if (screenshot_requested_ && drawn) {
@@ -85,17 +92,20 @@ std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, lo
     }
   }
   screenshot_requested_ = false;
-  if (recorder_) record(scene, steps, drawn, read_frame, told);
+  if (recorder_) record(scene, steps, drawn, read_frame, time, told);
   return told;
 }
 
 void SaveAndRecord::record(const std::string& scene, long steps, bool drawn,
-                           const std::function<RgbaImage()>& read_frame,
+                           const std::function<RgbaImage()>& read_frame, const FrameTime& time,
                            std::vector<std::string>& told) {
-  // Each new state drawn while the toggle is on, into a folder of its own.
+  // Each new state drawn while the toggle is on, into a folder or a video of its own.
   if (recording_ && !recorder_->active()) {
+    std::optional<VideoFormat> video;
+    if (record_format_ == record_webm_video) video = VideoFormat::webm;
+    if (record_format_ == record_mp4_video) video = VideoFormat::mp4;
     try {
-      recorder_->start(scene);
+      recorder_->start(scene, video);
     } catch (const std::exception& error) {
       told.push_back(std::string("recording failed: ") + error.what());
       recording_ = false;
@@ -105,7 +115,7 @@ void SaveAndRecord::record(const std::string& scene, long steps, bool drawn,
   if (!recording_ && recorder_->active()) told.push_back(recorder_->stop());
   if (recorder_->active() && steps != recorded_step_ && drawn) {
     try {
-      recorder_->write(read_frame());
+      recorder_->write(read_frame(), time);
     } catch (const std::exception& error) {
       told.push_back(recorder_->stop());
       told.push_back(std::string("recording stopped: ") + error.what());

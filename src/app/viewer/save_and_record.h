@@ -4,6 +4,7 @@
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,14 +62,20 @@ class SaveAndRecord {
   // as wobble-SCENE-NNNN.png, and while recording each new state. `read_frame` reads the frame
   // drawn, when `drawn` (a minimized window draws none). Returns what to tell the user, in
   // order.
+  // `time` is the state's simulated time, for a video's frames.
   std::vector<std::string> write_frame(const std::string& scene, long steps, bool drawn,
-                                       const std::function<RgbaImage()>& read_frame);
+                                       const std::function<RgbaImage()>& read_frame,
+                                       const FrameTime& time = FrameTime());
+  // What the record toggle writes from its next start: PNG frames (the default), or a video.
+  void set_record_format(std::optional<VideoFormat> video);
 
  private:
   void record(const std::string& scene, long steps, bool drawn,
-              const std::function<RgbaImage()>& read_frame, std::vector<std::string>& told);
+              const std::function<RgbaImage()>& read_frame, const FrameTime& time,
+              std::vector<std::string>& told);
 
   bool recording_ = false;  // the record toggle
+  int record_format_ = 0;   // the panel's choice: RecordFormat (panel_sections.h)
   bool screenshot_requested_ = false;
   std::unique_ptr<WindowRecorder> recorder_;  // null: nowhere to record (headless)
   std::function<void(const std::string& path)> written_;

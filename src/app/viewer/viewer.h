@@ -118,6 +118,8 @@ class Viewer {
   // new state. `read_frame` reads the frame drawn, when `drawn` (a minimized window draws
   // none). What was written, or why not, shows as notices.
   void write_window_files(bool drawn, const std::function<RgbaImage()>& read_frame);
+  // The simulated time of the state shown and the step it is taken with, for a video's frames.
+  FrameTime shown_time() const;
 
   // Create the renderer. Needs the GL context current until detach_renderer or destruction.
   void attach_renderer();

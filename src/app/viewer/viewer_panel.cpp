@@ -123,8 +123,15 @@ void Viewer::apply_panel_settings() {
 
 void Viewer::write_window_files(bool drawn, const std::function<RgbaImage()>& read_frame) {
   for (const std::string& what :
-       save_and_record_.write_frame(scene_.name, shown_steps(), drawn, read_frame))
+       save_and_record_.write_frame(scene_.name, shown_steps(), drawn, read_frame, shown_time()))
     saved(what);
+}
+
+FrameTime Viewer::shown_time() const {
+  // While a batch runs, the simulation is the stepping thread's: the copy taken before it.
+  const double seconds =
+      host_.batch_started() ? shown_stats_.simulated_seconds : host_.simulation().time();
+  return FrameTime{seconds, static_cast<double>(panel_.dt)};
 }
 
 }  // namespace wobble

@@ -46,7 +46,7 @@ TEST(ImageOutputs, RecordCreatesItsFolderAtTheFirstFrameAndWritesEveryFrame) {
   for (long frame = 1; frame <= 250; ++frame) {
     const bool last = frame == 250;
     ASSERT_TRUE(outputs.wants(last));
-    outputs.write(frame, last, tiny(static_cast<unsigned char>(frame)));
+    outputs.write(frame, last, tiny(static_cast<unsigned char>(frame)), wobble::FrameTime());
   }
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(record),
                           std::filesystem::directory_iterator()),

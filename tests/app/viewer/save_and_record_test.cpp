@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -94,6 +95,35 @@ TEST_F(SaveAndRecordTest, F9RecordsEachNewStateIntoAFolderOfItsOwn) {
   }
   EXPECT_EQ(folders, 1);
   EXPECT_EQ(frames, 3);
+}
+
+// With the record combo on a video, F9 writes one file, wobble-SCENE-NNNN.webm, beside the
+// other saves: each new state a frame (VideoFile's own test decodes them), and the notice
+// names the file.
+TEST_F(SaveAndRecordTest, F9RecordsAVideoFileWhenTheComboSaysSo) {
+  wobble::SaveAndRecord saves;
+  std::ostringstream progress;
+  saves.record_into(".", progress);
+  saves.set_record_format(wobble::VideoFormat::webm);
+  saves.command(wobble::ViewerCommand::toggle_record);
+  const auto frame = [] {
+    wobble::RgbaImage image;
+    image.width = 33;  // odd: cropped to 32
+    image.height = 24;
+    image.pixels.assign(33 * 24 * 4, 200);
+    return image;
+  };
+  for (long step : {1, 1, 2, 3})  // step 1 drawn twice: one frame
+    saves.write_frame("cloth", step, true, frame, wobble::FrameTime{step / 60.0, 1 / 60.0});
+  saves.command(wobble::ViewerCommand::toggle_record);
+  const std::vector<std::string> told = saves.write_frame("cloth", 4, true, frame);
+  ASSERT_EQ(told.size(), 1u);
+  EXPECT_EQ(told[0], "recorded 3 frames as ./wobble-cloth-0001.webm");
+  std::ifstream file("wobble-cloth-0001.webm", std::ios::binary);
+  char magic[4] = {};
+  file.read(magic, 4);
+  EXPECT_EQ(std::string(magic, 4), std::string("\x1a\x45\xdf\xa3", 4)) << "a Matroska file";
+  EXPECT_FALSE(fs::exists("wobble-cloth-frames-0001"));
 }
 
 // Each file written is told by its path (the page offers each as a download): the screenshot,
