@@ -130,7 +130,8 @@ bool is_course_scene(const nlohmann::json& object) {
   return object.is_object() && object.contains("obj") && object.contains("b");
 }
 
-Scene load_course_scene(const std::string& json_path, const nlohmann::json& object) {
+Scene load_course_scene(const std::string& json_path, const nlohmann::json& object,
+                        MissingTexture missing_texture) {
   if (!is_course_scene(object)) {
     throw InputError(json_path +
                      ": not a course scene, expected a JSON object with keys `obj` and `b`");
@@ -159,10 +160,16 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
                     [](const std::string& path) { return input_file_problem(path, obj_file); });
   // The texture is checked now, though only drawing reads it, so that a scene is refused or
   // accepted whether or not it is drawn.
-  const std::string texture =
-      object.contains("png")
-          ? existing_file(json_path, object, "png", "a PNG texture", texture_problem)
-          : "";
+  std::string texture;
+  std::string texture_note;
+  if (object.contains("png")) {
+    try {
+      texture = existing_file(json_path, object, "png", "a PNG texture", texture_problem);
+    } catch (const InputError& error) {
+      if (missing_texture == MissingTexture::refuse) throw;
+      texture_note = std::string(error.what()) + "; drawn without its texture";
+    }
+  }
 
   const ObjMesh mesh = read_obj(obj_path);
   Scene scene;
@@ -194,6 +201,7 @@ Scene load_course_scene(const std::string& json_path, const nlohmann::json& obje
 
   scene.look.uv = mesh.uv;
   scene.look.texture = texture;
+  if (!texture_note.empty()) scene.notes.push_back(texture_note);
   if (!texture.empty() && mesh.uv.size() == 0) {
     scene.notes.push_back("the OBJ has no `vt` texture coordinates, so its texture cannot show");
   }

@@ -4,6 +4,7 @@
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
+#include "io/missing_texture.h"
 #include "sim/scene.h"
 
 namespace wobble {
@@ -41,8 +42,10 @@ bool is_course_scene(const nlohmann::json& object);
 // Build the Scene of an already parsed course scene read from json_path (which names it, and
 // which "obj" and "png" are relative to). Scene::name is the JSON file's stem.
 // Throws InputError with a one-line message naming the JSON file and the key (or the OBJ file
-// and its line) and what was expected.
-Scene load_course_scene(const std::string& json_path, const nlohmann::json& object);
+// and its line) and what was expected. A "png" that cannot be read is refused, or noted and left
+// out (`missing_texture`).
+Scene load_course_scene(const std::string& json_path, const nlohmann::json& object,
+                        MissingTexture missing_texture = MissingTexture::refuse);
 
 // Read and parse json_path, then load it as above. Malformed JSON throws InputError
 // "PATH: line L: malformed JSON: ...".

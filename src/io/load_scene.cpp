@@ -44,7 +44,7 @@ Scene bare_mesh_scene(const std::string& path, bool fill) {
 
 }  // namespace
 
-Scene load_scene(const std::string& source, bool fill) {
+Scene load_scene(const std::string& source, bool fill, MissingTexture missing_texture) {
   const std::vector<std::string> builtins = builtin_scene_names();
   if (std::find(builtins.begin(), builtins.end(), source) != builtins.end()) {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled, not '" + source + "'");
@@ -67,8 +67,8 @@ Scene load_scene(const std::string& source, bool fill) {
     if (fill) throw InputError("--fill: only an OBJ surface can be filled; set it in the scene");
     nlohmann::json object = read_json_file(source);
     const ReleaseJsonOnExit release(object);
-    if (is_course_scene(object)) return load_course_scene(source, object);
-    if (is_wobble_scene(object)) return load_wobble_scene(source, object);
+    if (is_course_scene(object)) return load_course_scene(source, object, missing_texture);
+    if (is_wobble_scene(object)) return load_wobble_scene(source, object, missing_texture);
     throw InputError(source +
                      ": not a scene: expected a Wobble scene (with \"mesh\") or a course scene "
                      "(with \"obj\" and \"b\")");

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "io/missing_texture.h"
 #include "sim/scene.h"
 
 namespace wobble {
@@ -15,7 +16,11 @@ namespace wobble {
 //                 vertices pinned
 // What was chosen for the user is recorded in scene.notes. Throws InputError with one line naming
 // the file and the line or key at fault.
-Scene load_scene(const std::string& source, bool fill = false);
+// A scene file's texture that cannot be read refuses the scene, unless `missing_texture` says to
+// note it (scene.notes) and open the scene without it: the page does, for files dropped onto it
+// without the picture their scene names.
+Scene load_scene(const std::string& source, bool fill = false,
+                 MissingTexture missing_texture = MissingTexture::refuse);
 
 }  // namespace wobble
 

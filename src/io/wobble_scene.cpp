@@ -158,7 +158,8 @@ bool is_wobble_scene(const nlohmann::json& object) {
   return object.is_object() && object.contains("mesh");
 }
 
-Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
+Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
+                        MissingTexture missing_texture) {
   if (!is_wobble_scene(object)) {
     throw InputError(path + ": not a Wobble scene, expected a JSON object with a \"mesh\"");
   }
@@ -285,10 +286,12 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object) {
       // whether or not it is drawn.
       const std::string problem = texture_problem(scene.look.texture);
       if (!problem.empty()) {
-        throw InputError(appearance.where("texture") + ": '" + scene.look.texture +
-                         "': " + problem);
-      }
-      if (shape.mesh.uv.rows() != n) {
+        const std::string why =
+            appearance.where("texture") + ": '" + scene.look.texture + "': " + problem;
+        if (missing_texture == MissingTexture::refuse) throw InputError(why);
+        scene.notes.push_back(why + "; drawn without its texture");
+        scene.look.texture.clear();
+      } else if (shape.mesh.uv.rows() != n) {
         scene.notes.push_back(path + ": the mesh has no texture coordinates; texture ignored");
       }
     }

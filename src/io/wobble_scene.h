@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/missing_texture.h"
 #include "sim/scene.h"
 
 namespace wobble {
@@ -15,7 +16,9 @@ bool is_wobble_scene(const nlohmann::json& object);
 // documents the format). `path` names the file in messages and anchors relative paths. An
 // unknown key stops loading, as a wrong value does. Throws InputError naming the file, the key
 // and what was expected (or, when `object` is not a JSON object with a "mesh", saying so).
-Scene load_wobble_scene(const std::string& path, const nlohmann::json& object);
+// A texture that cannot be read is refused, or noted and left out (`missing_texture`).
+Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
+                        MissingTexture missing_texture = MissingTexture::refuse);
 
 }  // namespace wobble
 

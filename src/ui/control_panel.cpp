@@ -37,8 +37,11 @@ PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, 
   // taller than the display. Where the display is shorter, the sections scroll in a list of
   // their own and the stats stay pinned under it.
   const float width = 330.0f * ui_scale;
-  const float tallest =
-      std::max(ImGui::GetIO().DisplaySize.y - 20.0f * ui_scale, 100.0f * ui_scale);
+  // On a screen hardly wider than the panel (a phone held upright) it takes at most the upper
+  // part, so that the scene shows below it.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float room = display.x < width + 200.0f * ui_scale ? 0.55f * display.y : display.y;
+  const float tallest = std::max(room - 20.0f * ui_scale, 100.0f * ui_scale);
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, tallest));
   // Begin returns false when the panel is collapsed to its title bar, which covers next to
   // nothing: the view is then framed as if there were no panel.
@@ -51,6 +54,14 @@ PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, 
   place.width = size.x;
   place.height = size.y;
   if (!place.shown) {
+    // A click or a tap on the folded panel's title bar opens it (ImGui's own needs a double-click
+    // or its small arrow, which a finger hardly hits); dragging the title moves it as before.
+    const ImGuiIO& io = ImGui::GetIO();
+    const float slop = io.MouseDragThreshold;
+    if (ImGui::IsWindowHovered() && ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+        io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] <= slop * slop) {
+      ImGui::SetWindowCollapsed(false);
+    }
     ImGui::End();
     return place;
   }

@@ -70,6 +70,19 @@ SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
       ImGui::EndCombo();
     }
   }
+  if (settings.page) {
+    requests.pick_files = ImGui::Button("Open file...");
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "A scene (.json) with its mesh, or a mesh (.obj, .mesh, .node, .ele);\n"
+          "or drop the files onto the page");
+    }
+    ImGui::SameLine();
+    requests.copy_link = ImGui::Button("Copy link");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("An address that opens this scene with its current settings");
+    return requests;
+  }
   // A scene or mesh file by path (or dropped on the window): Enter or the button opens it.
   const bool entered =
       ImGui::InputTextWithHint("##open", "scene or mesh file path", settings.open_path,
@@ -82,7 +95,7 @@ SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
 }
 
 SaveRowRequests draw_save_rows(bool& recording, int& record_format,
-                               const std::string& recording_status) {
+                               const std::string& recording_status, bool offer_record) {
   SaveRowRequests requests;
   // Files into the working folder, each under the next free number.
   requests.save_scene = ImGui::Button("Save scene");
@@ -98,6 +111,7 @@ SaveRowRequests draw_save_rows(bool& recording, int& record_format,
   ImGui::SameLine();
   requests.screenshot = ImGui::Button("PNG");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("F12: the window as wobble-SCENE-0001.png");
+  if (!offer_record) return requests;
   ImGui::SameLine();
   ImGui::Checkbox("record", &recording);
   if (ImGui::IsItemHovered()) {

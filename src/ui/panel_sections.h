@@ -11,14 +11,18 @@ namespace wobble {
 // panel keeps for it (control_panel.h); none touches the simulation or GL. Between
 // ImGui::Begin and End, inside the panel's list of sections.
 
-// The scene picker and the "open" field: rows at the top.
+// The scene picker and the "open" field: rows at the top. A page has no paths to type: it shows
+// "Open file..." (the browser's file picker) and "Copy link" instead of the field.
 struct SceneRowSettings {
   int scene = 0;             // index into the scene names
   char open_path[512] = "";  // the "open" field's text
+  bool page = false;         // the page's buttons instead of the field
 };
 struct SceneRowRequests {
   bool scene_changed = false;  // the picker chose a scene (the current one again: reopen it)
   std::string open_path;       // a scene or mesh file to open (the "open" field), or empty
+  bool pick_files = false;     // the page's "Open file..."
+  bool copy_link = false;      // the page's "Copy link"
 };
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
                                  const std::vector<std::string>& scene_names);
@@ -33,8 +37,10 @@ struct SaveRowRequests {
 };
 // What the record toggle writes, the combo beside it: PNG frames in a folder, or one video.
 enum RecordFormat : int { record_png_frames = 0, record_webm_video = 1, record_mp4_video = 2 };
+// Without `offer_record` (the page, which has no folder to record into), the toggle and the
+// combo are left out.
 SaveRowRequests draw_save_rows(bool& recording, int& record_format,
-                               const std::string& recording_status);
+                               const std::string& recording_status, bool offer_record = true);
 
 // Play, Step, Reset, Frame, View and Help, real time, and why the simulation paused by itself
 // (`warning`, or empty).

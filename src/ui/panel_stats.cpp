@@ -11,7 +11,7 @@ namespace {
 // Rows of label and value, aligned at `column` (in the default font's units).
 void stat_row(const char* label, const char* format, double value, float column = 110.0f) {
   ImGui::TextUnformatted(label);
-  ImGui::SameLine(column * ImGui::GetIO().FontGlobalScale);
+  ImGui::SameLine(column * ImGui::GetFontSize() / 13.0f);
   ImGui::Text(format, value);
 }
 

@@ -5,8 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include "app/cli/command_line.h"
+#include "app/cli/scene_catalog.h"
+#include "io/load_scene.h"
 
 namespace {
 
@@ -62,6 +68,91 @@ TEST(PageArguments, WhatTheAddressGotWrongIsSaidAndCostsOnlyItself) {
       wobble::read_page_address("?scene=flag&k=2000&plots&bench", catalog).refusals.empty());
   EXPECT_EQ(wobble::read_page_address("?iterations=0", catalog).refusals,
             (Arguments{"address: iterations: expected a whole number from 1 to 5000, got '0'"}));
+}
+
+// A link can say what the panel sets: every setting and view option the command line takes that
+// writes no file, switches on with no value or 1.
+TEST(PageArguments, TheAddressTakesTheCommandLinesSettings) {
+  const wobble::PageRequest request = wobble::read_page_address(
+      "?scene=flag&solver=lbfgs&damping=0.5&friction=0.3&wind&self-collision=1&chebyshev=0"
+      "&self-collision-thickness=0.004&camera-yaw=30&wireframe=on",
+      catalog);
+  EXPECT_TRUE(request.refusals.empty()) << request.refusals[0];
+  EXPECT_EQ(request.arguments,
+            (Arguments{"wobble", "--solver", "lbfgs", "--damping", "0.5", "--friction", "0.3",
+                       "--wind", "--self-collision", "--self-collision-thickness", "0.004",
+                       "--camera-yaw", "30", "--wireframe", "--", "/site/assets/flag.json"}));
+  EXPECT_EQ(
+      wobble::read_page_address("?wind=maybe&solver=newton", catalog).refusals,
+      (Arguments{"address: wind: expected no value, 1 or 0, got 'maybe'",
+                 "address: solver: " + wobble::read_page_address("?solver=newton", catalog)
+                                           .refusals.at(0)
+                                           .substr(std::string("address: solver: ").size())}));
+  EXPECT_EQ(wobble::read_page_address("?record=x", catalog).refusals.size(), 1u)
+      << "an option that writes files is no key of the address";
+}
+
+// "Copy link" gives an address that opens the scene with the settings it has now: read back as
+// the page reads it, the scene opens with the same values, to the last bit.
+TEST(PageLink, TheLinkOpensTheSceneWithItsCurrentSettings) {
+  const std::vector<std::string> scenes = wobble::scene_catalog();
+  int checked = 0;
+  for (const std::string& source : scenes) {
+    const std::string label = wobble::scene_label(source);
+    if (label != "cloth" && label != "flag" && label != "banner") continue;
+    const wobble::SimulationParams opened = wobble::load_scene(source).params;
+    wobble::SimulationParams now = opened;
+    now.k = opened.k * 1.7;
+    now.dt = 0.0123;
+    now.iterations = 17;
+    now.wind.on = true;
+    // A course scene keeps the reference's method: only k, dt, iterations and the wind change.
+    if (label != "banner") {
+      now.solver = "lbfgs";
+      now.damping = 0.3;
+      now.contact.friction = 0.2;
+      now.self_collision.on = true;
+      now.self_collision.thickness = 0.004;
+    }
+    const std::string query = wobble::page_link_query(label, opened, now);
+    const wobble::PageRequest request = wobble::read_page_address(query, scenes);
+    ASSERT_TRUE(request.refusals.empty()) << query << ": " << request.refusals[0];
+    std::vector<const char*> argv;
+    for (const std::string& argument : request.arguments)
+      argv.push_back(argument.c_str());
+    std::ostringstream out;
+    const std::optional<wobble::CommandLine> command =
+        wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+    ASSERT_TRUE(command) << query;
+    EXPECT_EQ(command->scene, source) << query;
+    // As the viewer starts it: the scene's own overrides, then --k, --dt and the rest.
+    const wobble::SimulationParams got =
+        command->settings.applied_to(wobble::open_scene(*command).params);
+    EXPECT_EQ(got.k, now.k) << query;
+    EXPECT_EQ(got.dt, now.dt) << query;
+    EXPECT_EQ(got.iterations, now.iterations) << query;
+    EXPECT_EQ(got.solver, now.solver) << query;
+    EXPECT_EQ(got.damping, now.damping) << query;
+    EXPECT_EQ(got.contact.friction, now.contact.friction) << query;
+    EXPECT_EQ(got.wind.on, now.wind.on) << query;
+    EXPECT_EQ(got.self_collision.on, now.self_collision.on) << query;
+    EXPECT_EQ(got.self_collision.thickness, now.self_collision.thickness) << query;
+    EXPECT_TRUE(wobble::page_link_losses(opened, now).empty());
+    // Nothing changed: the scene alone.
+    EXPECT_EQ(wobble::page_link_query(label, opened, opened), "?scene=" + label);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3) << "the built-in cloth, the flag and the course's banner";
+}
+
+// What an address cannot say is said instead of dropped in silence.
+TEST(PageLink, WhatTheLinkCannotCarryIsSaid) {
+  wobble::SimulationParams opened;
+  opened.wind.on = true;
+  wobble::SimulationParams now = opened;
+  now.wind.on = false;
+  now.gravity.y() = 0.0;
+  EXPECT_EQ(wobble::page_link_losses(opened, now), (Arguments{"the wind off", "gravity"}));
 }
 
 TEST(PageArguments, TheBenchmarkIsAskedForByItsKey) {

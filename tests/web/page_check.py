@@ -80,6 +80,7 @@ class Chromium:
         self.reader = os.fdopen(from_chromium_read, 'rb')
         self.next_id = 0
         self.console = []
+        self.events = []  # the protocol's events, as call() read them past its replies
         self.session = None
         targets = self.call('Target.getTargets')['targetInfos']
         page = next(target for target in targets if target['type'] == 'page')
@@ -112,6 +113,8 @@ class Chromium:
                 entry = reply['params']['entry']
                 self.console.append(f'{entry.get("source")}: {entry.get("text")} '
                                     f'{entry.get("url", "")}')
+            if 'method' in reply and len(self.events) < 1000:  # for a test that awaits one
+                self.events.append(reply)
             if reply.get('id') == self.next_id:
                 if 'error' in reply:
                     raise RuntimeError(f'{method}: {reply["error"]}')

@@ -18,6 +18,13 @@ ViewportRegion region_beside_panel(float view_width, float panel_left, float pan
   return region;
 }
 
+ViewportRegion region_below(float view_height, float cover_bottom) {
+  ViewportRegion region;
+  if (view_height > 0.0f && cover_bottom > 0.0f && view_height - cover_bottom >= view_height / 3.0f)
+    region.top = cover_bottom / view_height;
+  return region;
+}
+
 ViewportRegion region_free_of(float view_width,
                               const std::vector<std::pair<float, float>>& covers) {
   ViewportRegion region;

@@ -24,6 +24,11 @@ ViewportRegion region_beside_panel(float view_width, float panel_left, float pan
 // that stretch is narrower than a quarter of the view.
 ViewportRegion region_free_of(float view_width, const std::vector<std::pair<float, float>>& covers);
 
+// Below a window that spans the view's width (the panel on a phone held upright): the view's
+// full width under `cover_bottom` (window units from the view's top edge), when that leaves at
+// least a third of `view_height`; otherwise the whole view.
+ViewportRegion region_below(float view_height, float cover_bottom);
+
 // Grow the box [lower, upper] (m, y up) to the room a shape moves in: down to the ground at
 // `ground_height` (m), where hanging cloth falls, and a quarter of the box's largest side to
 // either side in x and z, where it swings.

@@ -6,6 +6,8 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <cmath>
+
 #include "app/viewer/viewer.h"
 #include "render/offscreen_target.h"
 
@@ -30,8 +32,7 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   const std::vector<InputEvent> events = host.poll(viewer, meters);
   result.start = host.now();
   meters.start_frame(result.start);
-  for (const std::string& path : host.take_dropped_paths())
-    viewer.open_file(path);  // the last one stays
+  viewer.open_files(host.take_dropped_paths());  // a scene with its mesh, or a mesh
   int width = 0, height = 0;
   Eigen::Vector2f window = Eigen::Vector2f::Zero();
   host.sizes(width, height, window);
@@ -80,10 +81,7 @@ ImGuiSession::ImGuiSession(GLFWwindow* window, const char* glsl_version, float s
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini left in whatever folder wobble was started from
-  if (scale != 1.0f) {
-    io.FontGlobalScale = scale;
-    ImGui::GetStyle().ScaleAllSizes(scale);
-  }
+  apply_scale(scale);
   if (window != nullptr) {
     ImGui_ImplGlfw_InitForOpenGL(window, true);  // chains to the window's callbacks
     platform_ = true;
@@ -92,6 +90,27 @@ ImGuiSession::ImGuiSession(GLFWwindow* window, const char* glsl_version, float s
     io.DeltaTime = 1.0f / 60.0f;
   }
   ImGui_ImplOpenGL3_Init(glsl_version);
+}
+
+void ImGuiSession::apply_scale(float scale) {
+  scale_ = scale;
+  ImGui::GetStyle() = ImGuiStyle();  // ImGui's own, as every session starts from it
+  if (scale != 1.0f) ImGui::GetStyle().ScaleAllSizes(scale);
+  // The built-in font at the pixel size the scale asks for (13 px at 1), drawn from its outlines:
+  // magnifying the 13 px atlas would blur it on a high-DPI screen.
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  ImFontConfig font;
+  font.SizePixels = std::round(13.0f * scale);
+  io.Fonts->AddFontDefault(&font);
+  io.FontGlobalScale = 1.0f;
+}
+
+void ImGuiSession::rescale(float scale) {
+  if (scale == scale_) return;
+  apply_scale(scale);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
 }
 
 void ImGuiSession::new_glfw_frame() {

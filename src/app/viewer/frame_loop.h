@@ -90,11 +90,18 @@ class ImGuiSession {
   ~ImGuiSession();
   // GLFW's part of a new frame, for a host whose session has a window.
   static void new_glfw_frame();
+  // Sizes and fonts for another scale (a page moved to a screen of another pixel ratio, or
+  // zoomed): the style as it was made, scaled once, and the font drawn again at its pixel size
+  // rather than magnified, so that text stays sharp. Between frames only.
+  void rescale(float scale);
+  float scale() const { return scale_; }
   ImGuiSession(const ImGuiSession&) = delete;
   ImGuiSession& operator=(const ImGuiSession&) = delete;
 
  private:
+  void apply_scale(float scale);
   bool platform_ = false;
+  float scale_ = 1.0f;
 };
 
 }  // namespace wobble

@@ -16,7 +16,7 @@ namespace wobble {
 SaveRowRequests SaveAndRecord::draw_panel_rows() {
   std::string status;
   if (recorder_) status = recorder_->status();
-  SaveRowRequests requests = draw_save_rows(recording_, record_format_, status);
+  SaveRowRequests requests = draw_save_rows(recording_, record_format_, status, record_offered_);
   if (requests.screenshot) command(ViewerCommand::screenshot);
   requests.screenshot = false;  // taken
   return requests;

@@ -46,6 +46,8 @@ class SaveAndRecord {
   void set_written(std::function<void(const std::string& path)> written) {
     written_ = std::move(written);
   }
+  // Leave the record toggle out of the panel (the page, which has nowhere to record into).
+  void hide_record() { record_offered_ = false; }
 
   // The simulation's side, once a running batch finished.
   // Ctrl+S: the scene with its pins and settings, and `camera`'s view, as
@@ -74,8 +76,9 @@ class SaveAndRecord {
               const std::function<RgbaImage()>& read_frame, const FrameTime& time,
               std::vector<std::string>& told);
 
-  bool recording_ = false;  // the record toggle
-  int record_format_ = 0;   // the panel's choice: RecordFormat (panel_sections.h)
+  bool recording_ = false;      // the record toggle
+  bool record_offered_ = true;  // the panel shows the toggle (not in the page)
+  int record_format_ = 0;       // the panel's choice: RecordFormat (panel_sections.h)
   bool screenshot_requested_ = false;
   std::unique_ptr<WindowRecorder> recorder_;  // null: nowhere to record (headless)
   std::function<void(const std::string& path)> written_;

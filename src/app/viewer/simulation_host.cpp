@@ -11,6 +11,7 @@ namespace wobble {
 void SimulationHost::replace(std::unique_ptr<Simulation> simulation) {
   pacer_.restart();
   drag_script_ = DragScript();
+  limit_passed_ = false;  // the new scene stops at the limit again
   simulation_ = std::move(simulation);
 }
 
@@ -34,7 +35,7 @@ void SimulationHost::hand_over_changes() {
 int SimulationHost::steps_to_start(bool step_once, bool paused, bool real_time,
                                    std::optional<double> now, double frame_seconds,
                                    double step_seconds) {
-  const bool below_limit = step_limit_ < 0 || simulation_->steps_taken() < step_limit_;
+  const bool below_limit = !limit_applies() || simulation_->steps_taken() < step_limit_;
   if (step_once) {
     pacer_.restart();
     return below_limit ? 1 : 0;
@@ -45,9 +46,9 @@ int SimulationHost::steps_to_start(bool step_once, bool paused, bool real_time,
   }
   // Headless, and the window's --frames: every step drawn, as fast as the machine goes; without
   // real time, a step a frame.
-  if (!now || !real_time || step_limit_ >= 0) return 1;
+  if (!now || !real_time || limit_applies()) return 1;
   const int steps = pacer_.steps_due(*now, simulation_->params().dt, step_seconds, frame_seconds);
-  if (step_limit_ < 0) return steps;
+  if (!limit_applies()) return steps;
   return static_cast<int>(std::min<long>(steps, step_limit_ - simulation_->steps_taken()));
 }
 

@@ -75,12 +75,18 @@ class SimulationHost {
                      double frame_seconds, double step_seconds);
   // Start the real-time clock afresh (a new dt).
   void restart_clock() { pacer_.restart(); }
-  // Never step beyond this many steps in all (the window's --frames).
-  void set_step_limit(long steps) { step_limit_ = steps; }
-  // The steps taken reached the limit.
-  bool at_step_limit() const {
-    return step_limit_ >= 0 && simulation_ && simulation_->steps_taken() >= step_limit_;
+  // Stop after this many steps of each scene (the window's --frames, the page's frames=N): a
+  // scene that replaces this one stops there again.
+  void set_step_limit(long steps) {
+    step_limit_ = steps;
+    limit_passed_ = false;
   }
+  // The steps taken reached the limit, and it was not passed.
+  bool at_step_limit() const {
+    return limit_applies() && simulation_ && simulation_->steps_taken() >= step_limit_;
+  }
+  // Go on past the limit (Play once the page paused there), until the next scene.
+  void pass_step_limit() { limit_passed_ = true; }
 
   // Start a batch of `steps` steps, recording the last step's convergence trace and the energy
   // after each as asked; on the stepping thread once there is one, else finished on return.
@@ -109,7 +115,9 @@ class SimulationHost {
   std::unique_ptr<StepThread> thread_;          // null: batches run on the caller
   std::vector<std::function<void()>> pending_;  // the user's changes while a batch ran
   StepPacer pacer_;
-  long step_limit_ = -1;  // < 0: none
+  long step_limit_ = -1;       // < 0: none
+  bool limit_passed_ = false;  // this scene went on past it
+  bool limit_applies() const { return step_limit_ >= 0 && !limit_passed_; }
 };
 
 }  // namespace wobble

@@ -86,10 +86,12 @@ void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
     // that what the scene framed across the window fits across the part.
     fit_scene_camera_ = false;
     camera_ = *scene_camera_;
-    const float width = region.right - region.left;
-    if (width > 0.0f && width < 1.0f) {
-      camera_.distance = std::min(camera_.distance / width, OrbitCamera::max_distance);
-      camera_.lens_shift = Eigen::Vector2f(region.left + region.right - 1.0f, 0.0f);
+    const float width = region.right - region.left, height = region.bottom - region.top;
+    const float part = std::min(width, height);
+    if (part > 0.0f && part < 1.0f) {
+      camera_.distance = std::min(camera_.distance / part, OrbitCamera::max_distance);
+      camera_.lens_shift =
+          Eigen::Vector2f(region.left + region.right - 1.0f, 1.0f - (region.top + region.bottom));
     }
     return;
   }

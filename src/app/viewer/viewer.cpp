@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <utility>
 
@@ -46,6 +47,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   settings.color_by = command.color_by;
   settings.compare = command.compare;
   settings.plots = command.plots;
+  settings.scene_source = command.scene;
   if (command.camera_yaw) settings.camera_yaw_degrees = static_cast<float>(*command.camera_yaw);
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
@@ -55,6 +57,7 @@ ViewerSettings viewer_settings(const CommandLine& command) {
 
 Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources)
     : scene_sources_(std::move(scene_sources)),
+      scene_source_(settings.scene_source),
       view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees)),
       right_(settings.student_server) {
   for (const std::string& source : scene_sources_)
@@ -80,12 +83,31 @@ Viewer::~Viewer() = default;
 
 bool Viewer::open_file(const std::string& path) {
   try {
-    load(load_scene(path));
+    load(load_scene(path, false, missing_texture_));
+    scene_source_ = path;
     return true;
   } catch (const std::exception& error) {
-    scene_.notes.push_back(error.what());
+    // In the notes, and on screen (a dropped file's reason would otherwise go unseen).
+    tell(error.what());
     return false;
   }
+}
+
+bool Viewer::open_files(const std::vector<std::string>& paths) {
+  if (paths.empty()) return false;
+  std::string chosen = paths.back();
+  for (const std::string& path : paths) {
+    const std::string name = std::filesystem::path(path).extension().string();
+    if (name == ".json" || name == ".JSON") chosen = path;
+  }
+  return open_file(chosen);
+}
+
+void Viewer::set_page_actions(PageActions actions) {
+  page_actions_ = std::move(actions);
+  panel_.page = static_cast<bool>(page_actions_.pick_files);
+  if (panel_.page) save_and_record_.hide_record();
+  missing_texture_ = panel_.page ? MissingTexture::note : MissingTexture::refuse;
 }
 
 void Viewer::restore_defaults() {
@@ -123,6 +145,8 @@ void Viewer::load(Scene scene) {
   step_warning_.clear();
   scene_ = std::move(scene);
   host_.replace(std::move(simulation));  // its scripted drags forgotten, its clock afresh
+  // Paused by the step limit, not by the user: the new scene runs to the limit in its turn.
+  if (paused_at_limit_) panel_.paused = paused_at_limit_ = false;
   instruments_.clear();
   update_recording();
   if (scene_.params.wind.on) {

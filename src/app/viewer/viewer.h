@@ -22,6 +22,7 @@
 #include "app/viewer/save_and_record.h"
 #include "app/viewer/simulation_host.h"
 #include "app/viewer/view_camera.h"
+#include "io/missing_texture.h"
 #include "io/png_image.h"
 #include "platform/input_event.h"
 #include "render/camera.h"
@@ -47,6 +48,8 @@ struct ViewerSettings {
   // wobble --student: the step server built from the student's folder (student_server.h), or
   // empty. The split view then shows the student's sparse step on the right.
   std::string student_server;
+  // Where the first scene came from (a built-in scene's name or a file), as scene_source says.
+  std::string scene_source;
 };
 
 // The start-up settings a command line asks for.
@@ -91,6 +94,16 @@ class Viewer {
   // as load_scene reads it. A file that does not load leaves the current scene running, the
   // reason shown in the panel's notes; returns whether it loaded.
   bool open_file(const std::string& path);
+  // Files dropped or picked together: the scene file among them (the last .json) opens, its mesh
+  // and texture beside it; with no scene file, the last one. Returns whether it loaded.
+  bool open_files(const std::vector<std::string>& paths);
+  // The page's own: its file picker and its link (the panel shows "Open file..." and "Copy link"
+  // instead of the path field), and scene files that open without a texture they lack (noted).
+  struct PageActions {
+    std::function<void()> pick_files;
+    std::function<void()> copy_link;
+  };
+  void set_page_actions(PageActions actions);
   // The on-screen confirmations of what was written, and what a scene does as it opens (its
   // wind blowing, and the key that turns it off).
   const Notices& notices() const { return notices_; }
@@ -199,6 +212,8 @@ class Viewer {
   bool paused() const { return panel_.paused; }
   bool help_shown() const { return panel_.show_help; }
   bool panel_shown() const { return show_panel_; }
+  // Shown and not folded to its title bar, when it was last drawn.
+  bool panel_open() const { return show_panel_ && panel_place_.shown; }
   // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
   // target).
   const std::vector<float>& drawn_positions() const { return positions_; }
@@ -213,6 +228,9 @@ class Viewer {
   const std::string& step_warning() const { return step_warning_; }
   const Simulation& simulation() const { return host_.simulation(); }
   const Scene& scene() const { return scene_; }
+  // What the current scene was opened from: a built-in scene's name, or the file's path (as the
+  // picker's sources name them, or a file opened or dropped); empty when not known.
+  const std::string& scene_source() const { return scene_source_; }
   const OrbitCamera& camera() const { return view_camera_.camera(); }
   // How far the mouse may take the camera, for this scene's shape and ground.
   const CameraLimits& camera_limits() const { return view_camera_.limits(); }
@@ -288,6 +306,7 @@ class Viewer {
 
   Scene scene_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
+  std::string scene_source_;  // what the current scene was opened from (scene_source)
   // The panel's settings that the viewer draws and applies itself (the components keep theirs).
   struct OwnPanelSettings : SceneRowSettings,
                             PlaySettings,
@@ -304,7 +323,11 @@ class Viewer {
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
   bool framed_with_plots_ = false;  // the plots were open when the view was last framed
+  float framed_panel_bottom_ = 0.0f;  // ... and the bottom of a panel as wide as it (0: none)
   std::vector<Binding> help_ = viewer_bindings();
+  PageActions page_actions_;
+  bool paused_at_limit_ = false;  // paused by the step limit, not by the user
+  MissingTexture missing_texture_ = MissingTexture::refuse;
   // What the UI shows of the simulation's side, as of the last refresh_shown_state.
   PanelStats shown_stats_;
   std::string shown_twin_warning_;

@@ -30,8 +30,11 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
                                                         static_cast<float>(figure.value)});
   }
 
-  // The panel's UI scale (for projectors) multiplies the screen's.
-  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale;
+  // The panel's UI scale (for projectors) multiplies the screen's. The font may already be drawn
+  // at the screen's scale (ImGuiSession: 13 px times it), so only what is left magnifies it.
+  const float font_drawn_at =
+      ImGui::GetIO().Fonts->Fonts.empty() ? 1.0f : ImGui::GetIO().Fonts->Fonts[0]->FontSize / 13.0f;
+  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale / font_drawn_at;
   ui_scale *= panel_.ui_scale;
   // Each part of the panel is drawn by what owns its settings; what was pressed is carried out
   // below, in this order, once the panel is drawn.
@@ -85,6 +88,8 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     open_file(requests.open_path);
     return;
   }
+  if (requests.pick_files && page_actions_.pick_files) page_actions_.pick_files();
+  if (requests.copy_link && page_actions_.copy_link) page_actions_.copy_link();
   if (requests.restore_defaults) {
     restore_defaults();
     return;

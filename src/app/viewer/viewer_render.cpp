@@ -98,12 +98,20 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
     }
     if (instruments_left_ >= 0.0f) covers.emplace_back(instruments_left_, window_size.x());
   }
+  ViewportRegion region = region_free_of(window_size.x(), covers);
+  // A panel that leaves neither side room (a phone held upright): the shape below it, framed
+  // again as the panel opens, folds or changes its height (it settles over a few frames).
+  const bool below_panel =
+      !right_.simulation() && panel_place_.shown && region.left == 0.0f && region.right == 1.0f;
+  const float panel_bottom = below_panel ? panel_place_.y + panel_place_.height : 0.0f;
+  if (below_panel) region = region_below(window_size.y(), panel_bottom);
   const bool plots_open = instruments_left_ >= 0.0f;
-  if (plots_open != framed_with_plots_) {
+  if (plots_open != framed_with_plots_ || std::abs(panel_bottom - framed_panel_bottom_) > 1.0f) {
     framed_with_plots_ = plots_open;
+    framed_panel_bottom_ = panel_bottom;
     if (!view_camera_.framing_pending()) view_camera_.frame_next();
   }
-  view_camera_.frame(positions_, ground_.height, region_free_of(window_size.x(), covers), aspect);
+  view_camera_.frame(positions_, ground_.height, region, aspect);
   const OrbitCamera& camera = view_camera_.camera();
   view_ = view_matrix(camera);
   projection_ = projection_matrix(camera, aspect);

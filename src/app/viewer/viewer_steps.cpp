@@ -76,10 +76,13 @@ bool Viewer::exchange(double now, double frame_seconds) {
   hand_over_changes();
   refresh_shown_state();
   // At the step limit (the page's frames=N) the simulation is paused, as the button then says;
-  // Play goes on from there. (The window's --frames ends the run once step N is drawn.)
+  // Play goes on from there, and a scene opened next runs to the limit again. (The window's
+  // --frames ends the run once step N is drawn.)
+  if (!panel_.paused) paused_at_limit_ = false;
   if (host_.at_step_limit()) {
     panel_.paused = true;
-    host_.set_step_limit(-1);
+    paused_at_limit_ = true;
+    host_.pass_step_limit();
   }
   const int steps = steps_to_start(now, frame_seconds);
   if (steps > 0) start_batch(steps);

@@ -8,7 +8,6 @@
 #include <exception>
 #include <iostream>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,7 +17,6 @@
 #include "app/cli/thread_setting.h"
 #include "app/web/page_arguments.h"
 #include "app/web/run_browser.h"
-#include "app/web/step_positions.h"
 
 namespace {
 
@@ -47,15 +45,13 @@ int main() {
     command = parse(arguments);
     if (command) {
       wobble::obey_thread_setting(*command, std::cerr);
-      if (wobble::page_wants_bench(search != nullptr ? search : "")) {
-        // The same steps as the node and native runs of scripts/benchmark-web.sh, before the
-        // page draws anything.
-        std::ostringstream json;
-        wobble::step_positions(*command, json);
-        EM_ASM({ Module.wobbleBenchStepMs = JSON.parse(UTF8ToString($0)).step_ms_median; },
-               json.str().c_str());
+      const bool bench = wobble::page_wants_bench(search != nullptr ? search : "");
+      if (bench) {
+        messages.push_back("bench: measuring the step (" +
+                           std::to_string(command->frames.value_or(60)) +
+                           " steps, one thread); the page pauses for a few seconds");
       }
-      wobble::run_browser(*command, messages);
+      wobble::run_browser(*command, messages, bench);
       return 0;
     }
   } catch (const std::exception& error) {

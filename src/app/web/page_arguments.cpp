@@ -4,11 +4,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <iomanip>
 #include <sstream>
 
 #include "app/cli/command_line.h"
 #include "app/cli/scene_catalog.h"
 #include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
@@ -30,7 +32,100 @@ std::string decode(const std::string& text) {
   return decoded;
 }
 
+// The command line's options an address may give: settings and the view, never an option that
+// writes files or starts a process.
+const std::vector<std::string> address_value_options = {
+    "k",          "dt",           "iterations", "frames",
+    "solver",     "damping",      "friction",   "self-collision-thickness",
+    "camera-yaw", "camera-pitch", "color-by"};
+const std::vector<std::string> address_switches = {
+    "plots", "chebyshev", "wind", "self-collision", "wireframe", "springs", "points"};
+
+bool is_address_setting(const std::string& key) {
+  return std::find(address_value_options.begin(), address_value_options.end(), key) !=
+             address_value_options.end() ||
+         find_added_setting(key) != nullptr;
+}
+
+bool is_address_switch(const std::string& key) {
+  return std::find(address_switches.begin(), address_switches.end(), key) != address_switches.end();
+}
+
+std::string address_keys() {
+  std::string keys = "scene";
+  for (const std::string& key : address_value_options)
+    keys += ", " + key;
+  for (const SettingSpec& spec : added_settings())
+    keys += ", " + spec.name;
+  for (const std::string& key : address_switches)
+    keys += ", " + key;
+  return keys + " and bench";
+}
+
+// The shortest decimal that reads back as `value` exactly.
+std::string exact_number(double value) {
+  for (int digits = 6; digits < 17; ++digits) {
+    std::ostringstream text;
+    text << std::setprecision(digits) << value;
+    if (std::stod(text.str()) == value) return text.str();
+  }
+  std::ostringstream text;
+  text << std::setprecision(17) << value;
+  return text.str();
+}
+
+std::string encode(const std::string& text) {
+  static const char hex[] = "0123456789ABCDEF";
+  std::string encoded;
+  for (const unsigned char c : text) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~' || c == '/') {
+      encoded += static_cast<char>(c);
+    } else {
+      encoded += '%';
+      encoded += hex[c >> 4];
+      encoded += hex[c & 15];
+    }
+  }
+  return encoded;
+}
+
 }  // namespace
+
+std::string page_link_query(const std::string& scene_label, const SimulationParams& opened,
+                            const SimulationParams& current) {
+  std::string query = "?scene=" + encode(scene_label);
+  const auto number = [&](const char* key, double was, double is) {
+    if (is != was) query += std::string("&") + key + "=" + exact_number(is);
+  };
+  const auto on = [&](const char* key, bool was, bool is) {
+    if (is && !was) query += std::string("&") + key;
+  };
+  number("k", opened.k, current.k);
+  number("dt", opened.dt, current.dt);
+  number("iterations", opened.iterations, current.iterations);
+  if (current.solver != opened.solver) query += "&solver=" + encode(current.solver);
+  on("chebyshev", opened.chebyshev, current.chebyshev);
+  number("damping", opened.damping, current.damping);
+  number("friction", opened.contact.friction, current.contact.friction);
+  on("wind", opened.wind.on, current.wind.on);
+  on("self-collision", opened.self_collision.on, current.self_collision.on);
+  number("self-collision-thickness", opened.self_collision.thickness,
+         current.self_collision.thickness);
+  for (const SettingSpec& spec : added_settings()) {
+    number(spec.name.c_str(), setting_value(opened, spec.name), setting_value(current, spec.name));
+  }
+  return query;
+}
+
+std::vector<std::string> page_link_losses(const SimulationParams& opened,
+                                          const SimulationParams& current) {
+  std::vector<std::string> lost;
+  if (opened.chebyshev && !current.chebyshev) lost.push_back("Chebyshev off");
+  if (opened.wind.on && !current.wind.on) lost.push_back("the wind off");
+  if (opened.self_collision.on && !current.self_collision.on) lost.push_back("self-collision off");
+  if (opened.gravity != current.gravity) lost.push_back("gravity");
+  return lost;
+}
 
 PageRequest read_page_address(const std::string& query, const std::vector<std::string>& catalog) {
   PageRequest request;
@@ -66,7 +161,7 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
           names += (names.empty() ? "" : ", ") + scene_label(source);
         refuse(key, "no scene '" + value + "' (the scenes: " + names + "); opening the default");
       }
-    } else if (key == "k" || key == "dt" || key == "iterations" || key == "frames") {
+    } else if (is_address_setting(key)) {
       // Read as the command line reads it, alone: one bad value costs only itself.
       const std::string option = "--" + key;
       const char* const argv[] = {"wobble", option.c_str(), value.c_str()};
@@ -80,12 +175,15 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
         if (why.rfind(option + ": ", 0) == 0) why = why.substr(option.size() + 2);
         refuse(key, why);
       }
-    } else if (key == "plots") {
-      options.push_back("--plots");
+    } else if (is_address_switch(key)) {
+      // "plots", "plots=1" or "plots=on" turns it on; "plots=0" leaves it as the scene has it.
+      if (value.empty() || value == "1" || value == "on" || value == "true") {
+        options.push_back("--" + key);
+      } else if (value != "0" && value != "off" && value != "false") {
+        refuse(key, "expected no value, 1 or 0, got '" + value + "'");
+      }
     } else if (key != "bench") {
-      refuse(key,
-             "not a key of the address (it takes scene, k, dt, iterations, frames, plots "
-             "and bench)");
+      refuse(key, "not a key of the address (it takes " + address_keys() + ")");
     }
   }
   request.arguments = {"wobble"};

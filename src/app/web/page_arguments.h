@@ -4,13 +4,18 @@
 #include <string>
 #include <vector>
 
+#include "sim/simulation_params.h"
+
 namespace wobble {
 
 // The command line a page's address asks for: `query` is the address's query part, as
 // `location.search` gives it (e.g. "?scene=flag&k=2000&dt=0.01&iterations=20"), percent-escapes
-// and '+' decoded. The result starts with the program's name; then --k, --dt, --iterations and
-// --frames (the page stops stepping after that many steps, as the window's --frames does),
-// --plots for `plots`, and last the scene: the source in `catalog` (scene_catalog()) whose
+// and '+' decoded. The result starts with the program's name; then the settings and the view as
+// the command line names them (k, dt, iterations, frames: the page stops stepping after that
+// many steps, as the window's --frames does; solver, damping, friction,
+// self-collision-thickness, camera-yaw, camera-pitch, color-by, every added setting; and the
+// switches plots, chebyshev, wind, self-collision, wireframe, springs, points, on when given
+// without a value or as 1), and last the scene: the source in `catalog` (scene_catalog()) whose
 // picker label (scene_label) is the `scene` value, or the value itself. Keys it does not know are
 // left out, so an address never reaches an option that writes files. The values are checked by
 // parse_command_line.
@@ -34,6 +39,16 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
 // user and in pixels (about 100 a mouse's notch; a trackpad sends many small ones, each a share
 // of a notch), lines (3 a notch) or pages (one a notch), by `delta_mode` 0, 1 or 2.
 double page_wheel_notches(double delta_y, unsigned long delta_mode);
+
+// The page's "Copy link": the query that opens the scene picker's `scene_label` with `current`'s
+// settings, each that differs from `opened` (the scene's own, as an address without keys opens
+// it), in the keys read_page_address reads; numbers in the fewest digits that read back exactly.
+std::string page_link_query(const std::string& scene_label, const SimulationParams& opened,
+                            const SimulationParams& current);
+// What such a link cannot carry (an address only turns switches on; gravity has no key), in
+// words, for the page to say: empty when the link reproduces `current` whole.
+std::vector<std::string> page_link_losses(const SimulationParams& opened,
+                                          const SimulationParams& current);
 
 // Whether the address asks for the step benchmark (`bench` among its keys): the page then first
 // takes `frames` steps of the scene without drawing (step_positions.h) and leaves their median

@@ -8,9 +8,13 @@
 #include <emscripten/html5.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <exception>
+#include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -18,6 +22,8 @@
 #include "app/viewer/frame_loop.h"
 #include "app/viewer/viewer.h"
 #include "app/web/page_arguments.h"
+#include "app/web/step_positions.h"
+#include "io/load_scene.h"
 #include "platform/glfw_window.h"
 
 namespace wobble {
@@ -39,14 +45,24 @@ double seconds_now() {
   return 1e-3 * emscripten_get_now();
 }
 
-// The canvas fills the page (index.html's style sheet); its drawing buffer follows that size.
-void follow_page_size(GlfwWindow& window) {
+// The screen's device pixels per CSS pixel (2 on most laptops and phones, 1 on an ordinary
+// monitor; the browser's zoom changes it too), within what is worth drawing.
+float page_pixel_ratio() {
+  const double ratio = emscripten_get_device_pixel_ratio();
+  return static_cast<float>(std::isfinite(ratio) ? std::clamp(ratio, 0.5, 4.0) : 1.0);
+}
+
+// The canvas fills the page (index.html's style sheet); its drawing buffer follows that size in
+// device pixels, so that a high-DPI screen shows it sharp. The window's units are then device
+// pixels too (emscripten's GLFW scales the mouse to the drawing buffer), and the panel is drawn
+// `ratio` times larger, so it keeps its size on the screen.
+void follow_page_size(GlfwWindow& window, float ratio) {
   double css_width = 0.0, css_height = 0.0;
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
   int width = 0, height = 0;
   window.window_size(width, height);
-  const int wanted_width = static_cast<int>(css_width),
-            wanted_height = static_cast<int>(css_height);
+  const int wanted_width = static_cast<int>(std::lround(css_width * ratio)),
+            wanted_height = static_cast<int>(std::lround(css_height * ratio));
   if (wanted_width > 0 && wanted_height > 0 && (wanted_width != width || wanted_height != height)) {
     glfwSetWindowSize(window.handle(), wanted_width, wanted_height);
   }
@@ -56,9 +72,11 @@ void follow_page_size(GlfwWindow& window) {
 // thread, and the canvas the browser shows once the frame returns.
 class PageHost : public FrameHost {
  public:
-  explicit PageHost(GlfwWindow& window) : window_(window) {}
+  PageHost(GlfwWindow& window, ImGuiSession& ui) : window_(window), ui_(ui) {}
   std::vector<InputEvent> poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
-    follow_page_size(window_);
+    // The pixel ratio changes with the browser's zoom, or a window moved to another screen.
+    ui_.rescale(page_pixel_ratio());
+    follow_page_size(window_, ui_.scale());
     std::vector<InputEvent> events = window_.poll_events();
     // The wheel, read by on_wheel from the browser's own event, in notches: to the camera and
     // to ImGui's panel (before its new frame) alike.
@@ -70,13 +88,39 @@ class PageHost : public FrameHost {
       ImGui::GetIO().MouseWheel += static_cast<float>(notches);
     }
     wheel_.clear();
+    if (pinch_notches_ != 0.0) {
+      InputEvent event;
+      event.type = InputEvent::Type::scroll;
+      event.y = pinch_notches_;
+      events.push_back(event);
+      pinch_notches_ = 0.0;
+    }
     return events;
   }
   void wheel(double notches) {
     if (notches != 0.0) wheel_.push_back(notches);
   }
-  // Copied into the page's file system by emscripten's GLFW.
-  std::vector<std::string> take_dropped_paths() override { return window_.take_dropped_paths(); }
+  // Two fingers' spread grown `ratio` times: the camera that much nearer, as the wheel zooms
+  // (1.15 times a notch, ViewCamera), but not over the panel.
+  void pinch(double ratio) {
+    if (std::isfinite(ratio) && ratio > 0.0) pinch_notches_ += std::log(ratio) / std::log(1.15);
+  }
+  // The files dropped onto the page or chosen with "Open file..." (index.html writes them into
+  // the page's file system), and any emscripten's GLFW took.
+  std::vector<std::string> take_dropped_paths() override {
+    std::vector<std::string> paths = window_.take_dropped_paths();
+    const std::string opened = emscripten_run_script_string(
+        "typeof Module.wobbleTakeOpened == 'function' ? Module.wobbleTakeOpened() : ''");
+    std::size_t start = 0;
+    while (start < opened.size()) {
+      std::size_t end = opened.find('\n', start);
+      if (end == std::string::npos) end = opened.size();
+      if (end > start) paths.push_back(opened.substr(start, end - start));
+      start = end + 1;
+    }
+    return paths;
+  }
+  float scale() const { return ui_.scale(); }
   double now() const override { return seconds_now(); }
   void sizes(int& width, int& height, Eigen::Vector2f& window) override {
     window_.window_size(width, height);
@@ -88,7 +132,8 @@ class PageHost : public FrameHost {
   void before_panel() override {
     // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens
     // it), so that the scene shows. The panel is the first window build_ui begins.
-    if (frames_drawn_ == 0 && width_ < 600) ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
+    if (frames_drawn_ == 0 && width_ < 600 * scale())
+      ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
   }
   bool advance(Viewer& viewer, double now) override {
     constexpr double frame_seconds = 1.0 / 60.0;
@@ -112,11 +157,23 @@ class PageHost : public FrameHost {
           Module.wobbleSteps = $1;
         },
         frames_drawn_, static_cast<double>(viewer.shown_steps()));
-    EM_ASM({ Module.wobbleCameraDistance = $0; }, static_cast<double>(viewer.camera().distance));
+    EM_ASM(
+        {
+          Module.wobbleCameraDistance = $0;
+          Module.wobbleCameraYaw = $1;
+          Module.wobbleUiScale = $2;
+          Module.wobbleScene = UTF8ToString($3);
+          Module.wobblePanelOpen = $4;
+        },
+        static_cast<double>(viewer.camera().distance), static_cast<double>(viewer.camera().yaw),
+        static_cast<double>(scale()), viewer.scene().name.c_str(), viewer.panel_open() ? 1 : 0);
   }
+  long frames_drawn() const { return frames_drawn_; }
 
  private:
   GlfwWindow& window_;
+  ImGuiSession& ui_;
+  double pinch_notches_ = 0.0;
   std::string title_;
   int width_ = 0, height_ = 0;
   long frames_drawn_ = 0;
@@ -130,7 +187,11 @@ struct BrowserApp {
   std::unique_ptr<ImGuiSession> ui;
   std::unique_ptr<PageHost> host;
   FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
+  CommandLine command;
+  bool bench = false;  // ?bench: measure the step once the page shows the scene
 };
+
+BrowserApp* the_app = nullptr;  // for the page's calls into the program (wobble_pinch)
 
 // A file the viewer wrote into the page's memory, handed to the browser as a download under its
 // own name (the page has no folder of its own to write into).
@@ -172,20 +233,74 @@ EM_BOOL on_wheel(int /*type*/, const EmscriptenWheelEvent* event, void* host) {
   return EM_TRUE;
 }
 
+// ?bench: the same steps as the node and native runs of scripts/benchmark-web.sh (step_positions),
+// taken once the page shows the scene and says what it is doing; the result is said on the page
+// and left in Module.wobbleBenchStepMs for the script.
+void run_bench(BrowserApp& app) {
+  std::ostringstream json;
+  step_positions(app.command, json);
+  const double median_ms = EM_ASM_DOUBLE(
+      {
+        Module.wobbleBenchStepMs = JSON.parse(UTF8ToString($0)).step_ms_median;
+        return Module.wobbleBenchStepMs;
+      },
+      json.str().c_str());
+  std::ostringstream told;
+  told << "bench: a step of " << app.viewer.scene().name << " takes " << std::fixed
+       << std::setprecision(2) << median_ms << " ms (the median of "
+       << app.command.frames.value_or(60) << " steps, one thread)";
+  app.viewer.tell(told.str());
+  std::cerr << "wobble: " << told.str() << "\n";
+}
+
 void frame_or_report(void* app_pointer) {
   BrowserApp& app = *static_cast<BrowserApp*>(app_pointer);
   try {
-    draw_frame(app.viewer, *app.host, app.meters, 1.0f);
+    // The bench blocks the page for seconds: the scene and the notice saying so are shown first.
+    if (app.bench && app.host->frames_drawn() == 2) {
+      app.bench = false;
+      run_bench(app);
+    }
+    draw_frame(app.viewer, *app.host, app.meters, app.host->scale());
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << error.what() << "\n";
   }
 }
 
+// "Copy link": an address that opens the scene with its settings as they are now, relative to
+// the scene's own (as the catalogue opens it), told on the page and put on the clipboard.
+void copy_link(BrowserApp& app) {
+  const std::string name = app.viewer.scene().name;
+  const std::string& source = app.viewer.scene_source();
+  const std::vector<std::string> catalog = scene_catalog();
+  if (std::find(catalog.begin(), catalog.end(), source) == catalog.end()) {
+    app.viewer.tell("Copy link: " + name +
+                    " came from a file on this computer, which an address cannot open; "
+                    "Save scene gives the file to share");
+    return;
+  }
+  const SimulationParams opened = load_scene(source).params;
+  const SimulationParams& current = app.viewer.simulation().params();
+  const std::string query = page_link_query(scene_label(source), opened, current);
+  // The query is percent-encoded: no quote or backslash reaches the script.
+  const char* link =
+      emscripten_run_script_string(("Module.wobbleCopyLink('" + query + "')").c_str());
+  const bool copied = EM_ASM_INT({ return navigator.clipboard && window.isSecureContext ? 1 : 0; });
+  std::string told = std::string(copied ? "link copied: " : "link (this page cannot copy): ") +
+                     (link != nullptr ? link : query);
+  const std::vector<std::string> lost = page_link_losses(opened, current);
+  for (std::size_t i = 0; i < lost.size(); ++i)
+    told += (i == 0 ? " (an address cannot carry " : ", ") + lost[i] +
+            (i + 1 == lost.size() ? ")" : "");
+  app.viewer.tell(told);
+}
+
 }  // namespace
 
-void run_browser(const CommandLine& command, const std::vector<std::string>& messages) {
+void run_browser(const CommandLine& command, const std::vector<std::string>& messages, bool bench) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
-  app.reset(new BrowserApp{open_viewer(command), nullptr, nullptr, nullptr, {}});
+  app.reset(new BrowserApp{open_viewer(command), nullptr, nullptr, nullptr, {}, command, bench});
+  the_app = app.get();
   app->viewer.show_notices(true);
   if (command.frames) app->viewer.set_step_limit(*command.frames);
   double css_width = 0.0, css_height = 0.0;
@@ -195,13 +310,16 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
       std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,
                                    css_height > 0 ? static_cast<int>(css_height) : 720, title);
   fill_missing_gl_functions();
-  app->ui = std::make_unique<ImGuiSession>(app->window->handle(), "#version 300 es", 1.0f);
-  app->host = std::make_unique<PageHost>(*app->window);
+  app->ui =
+      std::make_unique<ImGuiSession>(app->window->handle(), "#version 300 es", page_pixel_ratio());
+  app->host = std::make_unique<PageHost>(*app->window, *app->ui);
   // The wheel from the browser's event, which says its unit; GLFW's path (ImGui's and the
   // window's callbacks) is turned off.
   glfwSetScrollCallback(app->window->handle(), nullptr);
   emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
   app->viewer.set_file_written(offer_download);
+  app->viewer.set_page_actions(
+      {[] { EM_ASM({ Module.wobblePickFiles(); }); }, [] { copy_link(*the_app); }});
   app->viewer.set_help(page_bindings());
   print_notes(app->viewer.scene(), std::cerr);
   std::string told;
@@ -224,3 +342,25 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
 }
 
 }  // namespace wobble
+
+// For the page's tests (tests/web/page_files_in_check.py): the scene shown, its steps and its
+// positions, as JSON in Module.wobblePositions (17 significant digits, as step_positions writes).
+extern "C" EMSCRIPTEN_KEEPALIVE void wobble_report_positions() {
+  if (wobble::the_app == nullptr) return;
+  const wobble::Viewer& viewer = wobble::the_app->viewer;
+  const Eigen::MatrixXd& positions = viewer.simulation().positions();
+  std::ostringstream out;
+  out << std::setprecision(17) << "{\"scene\": \"" << viewer.scene().name
+      << "\", \"steps\": " << viewer.simulation().steps_taken() << ", \"positions\": [";
+  for (Eigen::Index i = 0; i < positions.rows(); ++i) {
+    out << (i == 0 ? "" : ", ") << "[" << positions(i, 0) << ", " << positions(i, 1) << ", "
+        << positions(i, 2) << "]";
+  }
+  out << "]}";
+  EM_ASM({ Module.wobblePositions = UTF8ToString($0); }, out.str().c_str());
+}
+
+// The page's pinch (index.html): the fingers' spread grown `ratio` times since the last call.
+extern "C" EMSCRIPTEN_KEEPALIVE void wobble_pinch(double ratio) {
+  if (wobble::the_app != nullptr && wobble::the_app->host) wobble::the_app->host->pinch(ratio);
+}

@@ -14,8 +14,10 @@ namespace wobble {
 // between frames. The steps run on the caller (a single-threaded page has no stepping thread), as
 // many a frame as keep up with the wall clock. The canvas follows the size of the browser's
 // window. `messages` (what the address got wrong) are told on the page, among the panel's notes
-// and on the console. Returns at once; the loop goes on after main returns.
-void run_browser(const CommandLine& command, const std::vector<std::string>& messages = {});
+// and on the console. With `bench` (?bench), the page measures the step once it shows the scene
+// (step_positions.h) and says the result. Returns at once; the loop goes on after main returns.
+void run_browser(const CommandLine& command, const std::vector<std::string>& messages = {},
+                 bool bench = false);
 
 }  // namespace wobble
 

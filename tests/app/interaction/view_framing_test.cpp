@@ -70,3 +70,17 @@ TEST(ViewFraming, TheWidestStretchNoWindowCovers) {
   EXPECT_FLOAT_EQ(panel.left, beside.left);
   EXPECT_FLOAT_EQ(panel.right, beside.right);
 }
+
+// A phone held upright: the open panel spans the width, so the shape is framed below it, in the
+// part it leaves (the shape was framed behind the panel).
+TEST(RegionBelow, BelowAPanelAsWideAsTheView) {
+  const wobble::ViewportRegion below = wobble::region_below(2532.0f, 1392.0f);
+  EXPECT_FLOAT_EQ(below.top, 1392.0f / 2532.0f);
+  EXPECT_FLOAT_EQ(below.bottom, 1.0f);
+  EXPECT_FLOAT_EQ(below.left, 0.0f);
+  EXPECT_FLOAT_EQ(below.right, 1.0f);
+  // Less than a third left: the whole view, behind the panel, rather than a sliver.
+  const wobble::ViewportRegion whole = wobble::region_below(844.0f, 700.0f);
+  EXPECT_FLOAT_EQ(whole.top, 0.0f);
+  EXPECT_FLOAT_EQ(whole.bottom, 1.0f);
+}

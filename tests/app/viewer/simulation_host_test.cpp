@@ -80,6 +80,15 @@ TEST(SimulationHost, StepsToStartHonourPauseOneStepAndTheLimit) {
       << "at the limit";
   EXPECT_EQ(host.steps_to_start(true, false, true, std::nullopt, frame, 0.001), 0)
       << "not even one asked for";
+  // Play past it (the page, paused there): on; a scene opened next stops at the limit again.
+  host.pass_step_limit();
+  EXPECT_FALSE(host.at_step_limit());
+  EXPECT_EQ(host.steps_to_start(false, false, true, std::nullopt, frame, 0.001), 1);
+  host.replace(cloth());
+  host.start_batch(2, false, false);
+  host.finish_batch();
+  EXPECT_TRUE(host.at_step_limit()) << "the next scene stops at the limit too";
+  EXPECT_EQ(host.steps_to_start(false, false, true, std::nullopt, frame, 0.001), 0);
 }
 
 TEST(SimulationHost, ObserversSeeEachGoodStepAfterTheSplitView) {

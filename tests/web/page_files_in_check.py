@@ -1,0 +1,317 @@
+#!/usr/bin/env python3
+"""Files into the page, its link, and the page on high-DPI screens and phones, in headless
+Chromium (page_check.py's driver):
+
+1. Files in. With ?frames=60, a course scene and its OBJ dropped onto the page together (a real
+   drop event carrying both files) open that scene, which stops after 60 steps with the positions
+   the native program gives for the same file (wobble_step_positions), to 1e-9 of the rest
+   shape's bounding-box diagonal. It opens although the texture it names (../textures/flag.png)
+   was not dropped with it: the page notes that and draws it untextured. The panel's "Open file..." opens the browser's file chooser,
+   and the files chosen there (a Wobble scene whose mesh sits in a subfolder) open too.
+2. Copy link. After k is changed through the address's own reading, "Copy link" gives an
+   address; opened in a fresh page, it shows the same scene with the same k.
+3. Sharp at any pixel ratio. At a device pixel ratio of 2 the canvas draws 2560x1440 pixels
+   for 1280x720 CSS pixels and the panel's text has one-pixel detail (a canvas magnified from
+   CSS pixels has none).
+4. A phone (390x844, ratio 3, touch). The panel opens folded; a tap on its title opens it, and
+   the cloth is then framed below it; two fingers moving apart zoom in by their ratio without
+   turning the view.
+
+  page_files_in_check.py SITE NATIVE_STEP_POSITIONS ASSETS
+
+Exit 0 when every check holds; otherwise one line each that failed.
+"""
+import base64
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_check import Chromium, serve_site  # noqa: E402
+from png_files import read_png  # noqa: E402
+
+TOLERANCE = 1e-9  # of the bounding-box diagonal, as compare_positions.py
+
+
+def open_page(browser, url, size, ratio=1, mobile=False, timeout=90.0):
+    browser.call('Emulation.setDeviceMetricsOverride',
+                 {'width': size[0], 'height': size[1], 'deviceScaleFactor': ratio,
+                  'mobile': mobile})
+    if mobile:
+        browser.call('Emulation.setTouchEmulationEnabled', {'enabled': True, 'maxTouchPoints': 5})
+    browser.call('Page.navigate', {'url': url})
+    return wait(browser, '(typeof Module == "object" ? (Module.wobbleFrames || 0) : 0) > 10',
+                timeout)
+
+
+def wait(browser, condition, timeout=60.0):
+    start = time.monotonic()
+    while time.monotonic() - start < timeout:
+        if browser.evaluate(condition):
+            return True
+        time.sleep(0.2)
+    return False
+
+
+def screenshot(browser):
+    data = base64.b64decode(browser.call('Page.captureScreenshot', {'format': 'png'})['data'])
+    with tempfile.NamedTemporaryFile(suffix='.png', delete=False) as file:
+        file.write(data)
+    try:
+        return read_png(file.name)
+    finally:
+        os.unlink(file.name)
+
+
+def click(browser, x, y):
+    for kind in ('mouseMoved', 'mousePressed', 'mouseReleased'):
+        event = {'type': kind, 'x': x, 'y': y}
+        if kind != 'mouseMoved':
+            event.update({'button': 'left', 'buttons': 1 if kind == 'mousePressed' else 0,
+                          'clickCount': 1})
+        browser.call('Input.dispatchMouseEvent', event)
+        time.sleep(0.15)
+
+
+def page_positions(browser):
+    browser.evaluate('Module._wobble_report_positions()')
+    return json.loads(browser.evaluate('Module.wobblePositions'))
+
+
+def largest_share(native, page):
+    if len(native['positions']) != len(page['positions']):
+        return math.inf
+    largest = max(math.dist(a, b) for a, b in zip(native['positions'], page['positions']))
+    return largest / native['diagonal']
+
+
+def drop(browser, files):
+    """A drop event on the canvas carrying `files` ({name: bytes}), as a file manager's."""
+    entries = json.dumps({name: base64.b64encode(data).decode() for name, data in files.items()})
+    browser.evaluate(f'''(() => {{
+        const transfer = new DataTransfer();
+        for (const [name, data] of Object.entries({entries})) {{
+            const bytes = Uint8Array.from(atob(data), (c) => c.charCodeAt(0));
+            transfer.items.add(new File([bytes], name));
+        }}
+        canvas.dispatchEvent(new DragEvent('dragover', {{dataTransfer: transfer, bubbles: true,
+                                                        cancelable: true}}));
+        canvas.dispatchEvent(new DragEvent('drop', {{dataTransfer: transfer, bubbles: true,
+                                                    cancelable: true}}));
+    }})()''')
+
+
+def files_in(site_url, native_program, assets, failures):
+    course = os.path.join(assets, 'course')
+    native = json.loads(subprocess.run(
+        [native_program, os.path.join(course, 'banner.json'), '--frames', '60', '--threads', '1'],
+        capture_output=True, text=True, check=True, timeout=300).stdout)
+    browser = Chromium(shutil.which('chromium') or 'chromium')
+    try:
+        browser.call('Runtime.enable')
+        if not open_page(browser, site_url + '?frames=60', (1280, 720)):
+            failures.append('files in: the page drew no frames')
+            return
+        wait(browser, 'Module.wobbleSteps >= 60')
+        files = {name: open(os.path.join(course, name), 'rb').read()
+                 for name in ('banner.json', 'banner.obj')}
+        drop(browser, files)
+        if not wait(browser, 'Module.wobbleScene == "banner" && Module.wobbleSteps >= 60', 90):
+            failures.append(f'files in: the dropped banner did not open and take 60 steps '
+                            f'(scene {browser.evaluate("Module.wobbleScene")})')
+            return
+        time.sleep(0.5)
+        page = page_positions(browser)
+        share = largest_share(native, page)
+        print(f'page_files_in_check: dropped banner.json + banner.obj: {page["steps"]} steps, '
+              f'largest distance from native {share:.3e} of the diagonal')
+        if page['steps'] != 60 or not share <= TOLERANCE:
+            failures.append(f'files in: the dropped scene after {page["steps"]} steps is '
+                            f'{share:.3e} of the diagonal from native (at most {TOLERANCE:g})')
+        # The panel's "Open file..." opens the browser's chooser; a Wobble scene whose mesh is in
+        # a subfolder, chosen there with its mesh, opens.
+        browser.call('Page.enable')  # its events: the chooser opened
+        browser.call('Page.setInterceptFileChooserDialog', {'enabled': True})
+        browser.events.clear()
+        click(browser, 60, 69)  # "Open file...", in the panel as it opens at 1280x720
+        deadline = time.monotonic() + 10
+        chooser = None
+        while chooser is None and time.monotonic() < deadline:
+            browser.evaluate('1')  # reads what arrived
+            chooser = next((event for event in browser.events
+                            if event.get('method') == 'Page.fileChooserOpened'), None)
+            time.sleep(0.2)
+        if chooser is None:
+            failures.append('files in: "Open file..." opened no file chooser')
+            return
+        browser.call('DOM.setFileInputFiles',
+                     {'files': [os.path.join(assets, 'cloth_pile.json'),
+                                os.path.join(assets, 'meshes', 'pleated_cloth.obj')],
+                      'backendNodeId': chooser['params']['backendNodeId']})
+        if not wait(browser, 'Module.wobbleScene == "cloth_pile"', 60):
+            failures.append('files in: the scene chosen in the file chooser did not open '
+                            f'(scene {browser.evaluate("Module.wobbleScene")}; console: '
+                            f'{" | ".join(browser.console[-5:])})')
+        else:
+            print('page_files_in_check: "Open file..." chose cloth_pile.json and its mesh: opened')
+    finally:
+        browser.close()
+
+
+def copy_link(site_url, failures):
+    browser = Chromium(shutil.which('chromium') or 'chromium')
+    try:
+        browser.call('Runtime.enable')
+        if not open_page(browser, site_url + '?scene=flag&k=2345.5&iterations=12', (1280, 720)):
+            failures.append('copy link: the page drew no frames')
+            return
+        click(browser, 175, 69)  # "Copy link"
+        if not wait(browser, 'typeof Module.wobbleLink == "string"', 10):
+            failures.append('copy link: "Copy link" gave no link')
+            return
+        link = browser.evaluate('Module.wobbleLink')
+        print(f'page_files_in_check: Copy link gave {link}')
+        if not open_page(browser, link, (1280, 720)):
+            failures.append(f'copy link: {link} drew no frames')
+            return
+        browser.evaluate('Module._wobble_report_positions()')
+        scene = browser.evaluate('Module.wobbleScene')
+        settings = browser.evaluate('Module.wobbleMessages')
+        if scene != 'flag' or 'k=2345.5' not in link or 'iterations=12' not in link:
+            failures.append(f'copy link: {link} opened {scene}, expected the flag with k 2345.5 '
+                            f'and 12 iterations')
+        if settings:
+            failures.append(f'copy link: the link\'s page refused part of it: {settings}')
+    finally:
+        browser.close()
+
+
+def steep_edges(image, box):
+    """Of the strong edges in `box` (the green channel changing by more than 120 across three
+    pixels in a row), the share made in one pixel's step: text drawn at the screen's own
+    resolution changes at once; a picture magnified twice spreads every edge over two steps
+    (at most two thirds of it in one)."""
+    width, height, pixels = image
+    x0, y0, x1, y1 = box
+    strong = steep = 0
+    for y in range(y0, min(y1, height)):
+        row = pixels[y]
+        for x in range(max(x0, 1), min(x1, width - 1)):
+            left, here, right = row[4 * x - 3], row[4 * x + 1], row[4 * x + 5]
+            span = abs(right - left)
+            if span > 120:
+                strong += 1
+                steep += max(abs(here - left), abs(right - here)) >= 0.85 * span
+    return steep / strong if strong else 0.0
+
+
+def sharp(site_url, failures):
+    browser = Chromium(shutil.which('chromium') or 'chromium')
+    try:
+        browser.call('Runtime.enable')
+        if not open_page(browser, site_url + '?frames=30', (1280, 720), ratio=2):
+            failures.append('ratio 2: the page drew no frames')
+            return
+        time.sleep(1.0)
+        size = browser.evaluate('[canvas.width, canvas.height, Module.wobbleUiScale]')
+        steep = steep_edges(screenshot(browser), (20, 40, 660, 1400))
+        print(f'page_files_in_check: ratio 2: canvas {size[0]}x{size[1]}, UI scale {size[2]}, '
+              f'{steep:.0%} of the panel\'s edges in one pixel')
+        if size[:2] != [2560, 1440] or size[2] != 2:
+            failures.append(f'ratio 2: canvas {size[0]}x{size[1]} at UI scale {size[2]}, '
+                            'expected 2560x1440 at 2')
+        if steep < 0.8:
+            failures.append(f'ratio 2: {steep:.0%} of the panel\'s edges in one pixel: blurred')
+    finally:
+        browser.close()
+
+
+def orange_below(image, top_share):
+    width, height, pixels = image
+    count = 0
+    for y in range(int(height * top_share), height, 2):
+        row = pixels[y]
+        for x in range(0, width, 2):
+            r, g, b = row[4 * x:4 * x + 3]
+            count += r > 150 and 60 < g < 170 and b < 90 or (r < 120 and b > 180)
+    return count
+
+
+def phone(site_url, failures):
+    browser = Chromium(shutil.which('chromium') or 'chromium')
+    try:
+        browser.call('Runtime.enable')
+        if not open_page(browser, site_url + '?frames=40', (390, 844), ratio=3, mobile=True):
+            failures.append('phone: the page drew no frames')
+            return
+        wait(browser, 'Module.wobbleSteps >= 40')
+        if browser.evaluate('Module.wobblePanelOpen'):
+            failures.append('phone: the panel opened unfolded over the scene')
+
+        def tap(x, y):
+            browser.call('Input.dispatchTouchEvent',
+                         {'type': 'touchStart', 'touchPoints': [{'x': x, 'y': y}]})
+            time.sleep(0.1)
+            browser.call('Input.dispatchTouchEvent', {'type': 'touchEnd', 'touchPoints': []})
+            time.sleep(1.0)
+
+        tap(60, 18)  # the folded panel's title, away from its small arrow
+        opened = browser.evaluate('Module.wobblePanelOpen')
+        shown = orange_below(screenshot(browser), 0.56)
+        print(f'page_files_in_check: phone: a tap on the title: panel open {opened}; '
+              f'{shown} pixels of cloth below it')
+        if not opened:
+            failures.append('phone: a tap on the folded panel\'s title did not open it')
+        if shown < 200:
+            failures.append(f'phone: with the panel open the cloth is not below it ({shown} px)')
+        tap(60, 18)  # a tap on an open panel's title leaves it open
+        before = browser.evaluate('[Module.wobbleCameraDistance, Module.wobbleCameraYaw]')
+        browser.call('Input.dispatchTouchEvent',
+                     {'type': 'touchStart', 'touchPoints': [{'x': 195, 'y': 600, 'id': 1}]})
+        browser.call('Input.dispatchTouchEvent',
+                     {'type': 'touchStart', 'touchPoints': [{'x': 195, 'y': 600, 'id': 1},
+                                                            {'x': 195, 'y': 700, 'id': 2}]})
+        for i in range(1, 11):
+            time.sleep(0.05)
+            browser.call('Input.dispatchTouchEvent',
+                         {'type': 'touchMove',
+                          'touchPoints': [{'x': 195, 'y': 600 - 5 * i, 'id': 1},
+                                          {'x': 195, 'y': 700 + 5 * i, 'id': 2}]})
+        browser.call('Input.dispatchTouchEvent', {'type': 'touchEnd', 'touchPoints': []})
+        time.sleep(0.8)
+        after = browser.evaluate('[Module.wobbleCameraDistance, Module.wobbleCameraYaw]')
+        ratio = before[0] / after[0] if after[0] else 0
+        print(f'page_files_in_check: phone: fingers 100 -> 200 px apart: the camera '
+              f'{before[0]:.3f} -> {after[0]:.3f} m ({ratio:.3f}x nearer), yaw {before[1]:.4f} -> '
+              f'{after[1]:.4f}')
+        if not 1.9 <= ratio <= 2.1:
+            failures.append(f'phone: a pinch to twice the spread zoomed {ratio:.3f}x, expected 2')
+        if abs(after[1] - before[1]) > 1e-6:
+            failures.append('phone: the pinch turned the view')
+    finally:
+        browser.close()
+
+
+def main():
+    site, native_program, assets = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
+    server, url = serve_site(site)
+    failures = []
+    try:
+        for check in (lambda: files_in(url, native_program, assets, failures),
+                      lambda: copy_link(url, failures), lambda: sharp(url, failures),
+                      lambda: phone(url, failures)):
+            check()
+    finally:
+        server.shutdown()
+    for failure in failures:
+        print(f'page_files_in_check: FAILED: {failure}')
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
