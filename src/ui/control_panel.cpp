@@ -113,8 +113,11 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
                                  const std::vector<std::string>& scene_names, float ui_scale) {
   PanelRequests requests;
   PanelParts parts;
+  std::vector<SceneChoice> scenes;
+  for (const std::string& name : scene_names)
+    scenes.push_back(SceneChoice{name, "", false});
   parts.scene_rows = [&] {
-    static_cast<SceneRowRequests&>(requests) = draw_scene_rows(settings, scene_names);
+    static_cast<SceneRowRequests&>(requests) = draw_scene_rows(settings, scenes);
   };
   parts.save_rows = [&] {
     static_cast<SaveRowRequests&>(requests) =

@@ -55,20 +55,36 @@ void chebyshev_checkbox(const char* label, bool& on, bool applies) {
 }  // namespace
 
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
-                                 const std::vector<std::string>& scene_names) {
+                                 const std::vector<SceneChoice>& scenes) {
   SceneRowRequests requests;
-  if (!scene_names.empty()) {
-    const char* current = scene_names[settings.scene].c_str();
-    if (ImGui::BeginCombo("scene", current)) {
-      for (int i = 0; i < static_cast<int>(scene_names.size()); ++i) {
-        // Choosing the current scene again opens it afresh, with its own settings.
-        if (ImGui::Selectable(scene_names[i].c_str(), i == settings.scene)) {
-          settings.scene = i;
-          requests.scene_changed = true;
+  if (!scenes.empty()) {
+    const int count = static_cast<int>(scenes.size());
+    settings.scene = std::clamp(settings.scene, 0, count - 1);
+    const char* current = scenes[settings.scene].name.c_str();
+    if (ImGui::BeginCombo("scene", current, ImGuiComboFlags_HeightLarge)) {
+      // Wobble's scenes, then the course's under a heading; each says what it shows.
+      for (const bool course : {false, true}) {
+        bool heading = !course;
+        for (int i = 0; i < count; ++i) {
+          if (scenes[i].course != course) continue;
+          if (!heading) {
+            ImGui::Separator();
+            ImGui::TextDisabled("the course's scenes");
+            heading = true;
+          }
+          // Choosing the current scene again opens it afresh, with its own settings.
+          if (ImGui::Selectable(scenes[i].name.c_str(), i == settings.scene)) {
+            settings.scene = i;
+            requests.scene_changed = true;
+          }
+          if (!scenes[i].description.empty() && ImGui::IsItemHovered())
+            ImGui::SetTooltip("%s", scenes[i].description.c_str());
         }
       }
       ImGui::EndCombo();
     }
+    if (!scenes[settings.scene].description.empty() && ImGui::IsItemHovered())
+      ImGui::SetTooltip("%s", scenes[settings.scene].description.c_str());
   }
   if (settings.page) {
     requests.pick_files = ImGui::Button("Open file...");

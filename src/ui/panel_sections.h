@@ -24,8 +24,15 @@ struct SceneRowRequests {
   bool pick_files = false;     // the page's "Open file..."
   bool copy_link = false;      // the page's "Copy link"
 };
+// What the picker lists of a scene: the label, what it shows (a tooltip), and whether it is one
+// of the course's scenes (listed after Wobble's own, under a heading).
+struct SceneChoice {
+  std::string name;
+  std::string description;
+  bool course = false;
+};
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
-                                 const std::vector<std::string>& scene_names);
+                                 const std::vector<SceneChoice>& scenes);
 
 // Files into the working folder: Save scene, OBJ, PNG, the record toggle and what it writes
 // (`record_format`, a RecordFormat; fixed while recording), and where a recording goes

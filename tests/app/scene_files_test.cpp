@@ -116,3 +116,27 @@ TEST(SceneCatalog, ListsTheSubfoldersOfAssets) {
   const wobble::testing::Result result = wobble::testing::run_wobble("--list-scenes");
   EXPECT_NE(result.out.find("course/rope.json"), std::string::npos) << result.out;
 }
+
+// The picker says what each scene shows and lists the course's scenes apart: every scene of the
+// catalogue has a description (read from its file, or made from a course scene's mesh, k and
+// pins), and exactly the files of assets/course/ are the course's.
+TEST(SceneCatalog, EachSceneSaysWhatItShowsAndTheCoursesAreApart) {
+  int course = 0;
+  for (const std::string& source : wobble::scene_catalog()) {
+    const std::string description = wobble::scene_description(source);
+    EXPECT_FALSE(description.empty()) << source;
+    const bool in_course = source.find("/course/") != std::string::npos;
+    EXPECT_EQ(wobble::is_course_scene_source(source), in_course) << source;
+    course += in_course;
+    if (wobble::scene_label(source) == "banner") {
+      EXPECT_EQ(description, "the course's scene: banner.obj, k = 2000, 2 pins");
+    }
+    if (wobble::scene_label(source) == "curtain") {
+      EXPECT_EQ(description,
+                "the paper's curtain: 81 x 81 vertices hanging from a rail, pushed once");
+    }
+  }
+  EXPECT_EQ(course, 2) << "banner and rope";
+  EXPECT_EQ(wobble::scene_description("cloth"), "40x40 cloth hanging from its two top corners");
+  EXPECT_EQ(wobble::scene_description("/no/such/file.json"), "") << "said when it is chosen";
+}

@@ -336,3 +336,30 @@ TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
 }
 
 }  // namespace
+
+// A phone's tap, or one click, on the folded panel's title opens it: ImGui's own needs a
+// double-click or a hit on its small arrow. A drag of the title still only moves it.
+TEST(ControlPanel, AClickOnTheFoldedTitleOpensThePanel) {
+  PanelDriver panel(390.0f, 844.0f, 1.0f);
+  panel.settle();
+  ImGui::SetWindowCollapsed("Wobble", true);
+  panel.settle();
+  ImGuiWindow* window = PanelDriver::panel();
+  ASSERT_TRUE(window->Collapsed);
+  const ImVec2 title(window->Pos.x + 0.5f * window->Size.x, window->Pos.y + 5.0f);
+  // A drag along the title moves it and leaves it folded.
+  panel.frame(title);
+  panel.frame(title, true);
+  panel.frame(ImVec2(title.x + 30.0f, title.y), true);
+  panel.frame(ImVec2(title.x + 30.0f, title.y), false);
+  panel.settle();
+  EXPECT_TRUE(window->Collapsed) << "a drag does not open it";
+  const ImVec2 moved(window->Pos.x + 0.5f * window->Size.x, window->Pos.y + 5.0f);
+  panel.frame(moved);
+  panel.frame(moved, true);
+  panel.frame(moved, false);
+  panel.settle();
+  EXPECT_FALSE(window->Collapsed) << "one click on the title opens it";
+  // Open on a phone-shaped display, it takes at most the upper part, so the scene shows below.
+  EXPECT_LE(window->Pos.y + window->Size.y, 0.56f * 844.0f);
+}

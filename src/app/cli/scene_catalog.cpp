@@ -1,11 +1,14 @@
 #include "app/cli/scene_catalog.h"
 
 #include <algorithm>
+#include <exception>
 #include <filesystem>
 #include <ostream>
 #include <sstream>
 
+#include "io/course_scene.h"
 #include "io/load_scene.h"
+#include "io/read_json_file.h"
 #include "sim/contact/self_collision.h"
 #include "sim/input_error.h"
 #include "sim/shapes/builtin_scenes.h"
@@ -38,6 +41,31 @@ std::vector<std::string> scene_catalog() {
 std::string scene_label(const std::string& source) {
   const std::filesystem::path path(source);
   return path.has_extension() ? path.stem().string() : source;
+}
+
+bool is_course_scene_source(const std::string& source) {
+  return std::filesystem::path(source).parent_path().filename() == "course";
+}
+
+std::string scene_description(const std::string& source) {
+  const std::vector<std::string> builtins = builtin_scene_names();
+  if (std::find(builtins.begin(), builtins.end(), source) != builtins.end())
+    return make_builtin_scene(source).description;
+  try {
+    const nlohmann::json object = read_json_file(source);
+    if (object.is_object() && object.contains("description") && object["description"].is_string())
+      return object["description"].get<std::string>();
+    if (is_course_scene(object)) {
+      std::ostringstream text;
+      text << "the course's scene: " << object.value("obj", std::string("its OBJ"));
+      if (object.contains("k") && object["k"].is_number()) text << ", k = " << object["k"];
+      if (object["b"].is_array()) text << ", " << object["b"].size() << " pins";
+      return text.str();
+    }
+  } catch (const std::exception&) {
+    // Said when the scene is chosen.
+  }
+  return "";
 }
 
 Scene open_scene(const CommandLine& command) {

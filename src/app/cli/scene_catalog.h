@@ -20,6 +20,13 @@ std::vector<std::string> scene_catalog();
 // folder and extension.
 std::string scene_label(const std::string& source);
 
+// What the picker says of a source beside its label: a built-in scene's description, a scene
+// file's "description" key, or for a course scene (assets/course/) its mesh, k and pins. Empty
+// when the file says nothing or cannot be read (the picker opens it and says why then).
+std::string scene_description(const std::string& source);
+// Whether `source` is one of the course's scenes (a file in a folder named course).
+bool is_course_scene_source(const std::string& source);
+
 // Load the scene the command line names, with its --damping, --friction and --wind applied
 // (apply_scene_overrides; --k, --dt and the rest are applied where the simulation starts). Its
 // notes are not said yet: a refusal must be the only line on stderr, so they wait until

@@ -60,8 +60,11 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
       scene_source_(settings.scene_source),
       view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees)),
       right_(settings.student_server) {
-  for (const std::string& source : scene_sources_)
+  for (const std::string& source : scene_sources_) {
     scene_labels_.push_back(scene_label(source));
+    scene_choices_.push_back(SceneChoice{scene_labels_.back(), scene_description(source),
+                                         is_course_scene_source(source)});
+  }
   scene.params = settings.settings.applied_to(scene.params);
   // What --compare set for the left side ("solver=local-global,solver=lbfgs": the first).
   if (settings.compare) scene.params = settings.compare->left.applied_to(scene.params);

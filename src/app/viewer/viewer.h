@@ -306,7 +306,8 @@ class Viewer {
 
   Scene scene_;
   std::vector<std::string> scene_sources_, scene_labels_;  // the picker: what to load, as shown
-  std::string scene_source_;  // what the current scene was opened from (scene_source)
+  std::string scene_source_;                // what the current scene was opened from (scene_source)
+  std::vector<SceneChoice> scene_choices_;  // the picker's labels, descriptions and groups
   // The panel's settings that the viewer draws and applies itself (the components keep theirs).
   struct OwnPanelSettings : SceneRowSettings,
                             PlaySettings,

@@ -42,7 +42,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   if (show_panel_) {
     PanelParts parts;
     parts.scene_rows = [&] {
-      static_cast<SceneRowRequests&>(requests) = draw_scene_rows(panel_, scene_labels_);
+      static_cast<SceneRowRequests&>(requests) = draw_scene_rows(panel_, scene_choices_);
     };
     parts.save_rows = [&] {
       static_cast<SaveRowRequests&>(requests) = save_and_record_.draw_panel_rows();
