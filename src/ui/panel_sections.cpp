@@ -297,10 +297,19 @@ void draw_view_section(ViewSettings& settings) {
                      ViewSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
 }
 
-void draw_instruments_section(InstrumentSettings& settings) {
+bool draw_instruments_section(InstrumentSettings& settings) {
   ImGui::Checkbox("convergence", &settings.show_convergence);
   ImGui::SameLine();
   ImGui::Checkbox("energy", &settings.show_energy);
+  ImGui::SameLine();
+  const bool csv = ImGui::Button("CSV");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "What the plots show, as files: the convergence plot's step as\n"
+        "wobble-SCENE-convergence-0001.csv (as --convergence-csv writes a step)\n"
+        "and the energy plot's samples as wobble-SCENE-energy-0001.csv");
+  }
+  return csv;
 }
 
 void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,

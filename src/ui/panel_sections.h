@@ -150,7 +150,8 @@ struct InstrumentSettings {
   bool show_convergence = false;  // the last step's convergence plot
   bool show_energy = false;       // the energy-over-time plot
 };
-void draw_instruments_section(InstrumentSettings& settings);
+// Returns whether "CSV" (what the plots show, as files) was pressed.
+bool draw_instruments_section(InstrumentSettings& settings);
 
 // "compare": the split view and its right side's own settings, its solver from `solvers` (as the
 // simulation section's); with a student's step on the right (`student_side`), what it shows

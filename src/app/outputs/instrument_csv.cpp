@@ -8,14 +8,32 @@
 
 namespace wobble {
 
-namespace {
+const char* const convergence_csv_header = "frame,iteration,energy,gradient_norm,solver\n";
 
-// The shortest text that reads back as the same double.
-void append_value(std::string& out, double value) {
+void append_csv_value(std::string& out, double value) {
   char buffer[32];
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
   out.push_back(',');
   out.append(buffer, result.ptr);
+}
+
+void append_convergence_rows(std::string& out, long step, const ConvergenceTrace& trace) {
+  for (int i = 0; i <= trace.iterations(); ++i) {
+    out += std::to_string(step);
+    out += ',';
+    out += std::to_string(i);
+    append_csv_value(out, trace.energy[i]);
+    append_csv_value(out, trace.gradient_norm[i]);
+    out.push_back(',');
+    out += trace.solver;
+    out.push_back('\n');
+  }
+}
+
+namespace {
+
+void append_value(std::string& out, double value) {
+  append_csv_value(out, value);
 }
 
 void append_energy_row(std::string& out, long frame, const Simulation& simulation) {
@@ -49,7 +67,7 @@ InstrumentCsv::InstrumentCsv(std::string convergence_path, std::string energy_pa
     check_rows(
         "--convergence-csv", frames * (iterations + 1L),
         std::to_string(frames) + " frames of " + std::to_string(iterations + 1) + " iterates");
-    convergence_ = "frame,iteration,energy,gradient_norm,solver\n";
+    convergence_ = convergence_csv_header;
   }
   if (!energy_path_.empty()) {
     check_output_path("--energy-csv", energy_path_);
@@ -65,16 +83,9 @@ void InstrumentCsv::start(const Simulation& simulation) {
 void InstrumentCsv::record(long frame, const Simulation& simulation) {
   if (!convergence_path_.empty()) {
     const ConvergenceTrace& trace = simulation.last_convergence();
-    for (int i = 0; i <= trace.iterations() && convergence_rows_ < max_rows; ++i) {
-      ++convergence_rows_;
-      convergence_ += std::to_string(frame);
-      convergence_ += ',';
-      convergence_ += std::to_string(i);
-      append_value(convergence_, trace.energy[i]);
-      append_value(convergence_, trace.gradient_norm[i]);
-      convergence_.push_back(',');
-      convergence_ += trace.solver;
-      convergence_.push_back('\n');
+    if (convergence_rows_ + trace.iterations() + 1 <= max_rows) {
+      convergence_rows_ += trace.iterations() + 1;
+      append_convergence_rows(convergence_, frame, trace);
     }
   }
   if (!energy_path_.empty() && energy_rows_ < max_rows) {

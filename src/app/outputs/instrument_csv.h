@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "sim/instruments/convergence_trace.h"
 #include "sim/simulation.h"
 
 namespace wobble {
@@ -21,6 +22,13 @@ namespace wobble {
 //
 // The rows are kept in memory and each file is written atomically at the end of the run (or
 // when it stops early), so a reader never sees half a file.
+// The convergence file's header and one step's rows (frame `step`), as --convergence-csv writes
+// them: what the window's and the page's "CSV" button write of the step the plot shows.
+extern const char* const convergence_csv_header;
+void append_convergence_rows(std::string& out, long step, const ConvergenceTrace& trace);
+// The shortest text that reads back as `value`, after a comma.
+void append_csv_value(std::string& out, double value);
+
 class InstrumentCsv {
  public:
   // Empty paths write nothing. Throws InputError naming the option when a path cannot be

@@ -5,8 +5,10 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <charconv>
 
 #include "app/cli/solver_choice.h"
+#include "app/outputs/instrument_csv.h"
 #include "ui/instrument_windows.h"
 
 namespace wobble {
@@ -81,6 +83,29 @@ void Instruments::Shown::clear() {
   trace = ConvergenceTrace();
   trace_step = 0;
   energy.clear();
+}
+
+std::string Instruments::convergence_csv() const {
+  if (left_.trace_step == 0 || left_.trace.energy.empty()) return "";
+  std::string text = convergence_csv_header;
+  append_convergence_rows(text, left_.trace_step, left_.trace);
+  return text;
+}
+
+std::string Instruments::energy_csv() const {
+  std::string text = "time,kinetic,spring,gravity,total\n";
+  const EnergyHistory& shown = left_.energy;
+  for (std::size_t i = 0; i < shown.time.size(); ++i) {
+    char time[32];
+    const auto end = std::to_chars(time, time + sizeof(time), shown.time[i]).ptr;
+    text.append(time, end);
+    append_csv_value(text, shown.kinetic[i]);
+    append_csv_value(text, shown.spring[i]);
+    append_csv_value(text, shown.gravity[i]);
+    append_csv_value(text, shown.total[i]);
+    text.push_back('\n');
+  }
+  return text;
 }
 
 void Instruments::clear() {

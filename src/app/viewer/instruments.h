@@ -32,8 +32,9 @@ struct PlottedSides {
 // lets it draw once a frame.
 class Instruments {
  public:
-  // The panel's "instruments" section (panel_sections.h).
-  void draw_panel_section() { draw_instruments_section(open_); }
+  // The panel's "instruments" section (panel_sections.h); returns whether its CSV button was
+  // pressed.
+  bool draw_panel_section() { return draw_instruments_section(open_); }
   // Open or close both plots (--plots).
   void open_both(bool open) { open_.show_convergence = open_.show_energy = open; }
   // G: both plots together, since a class wants the two side by side; open unless both are.
@@ -63,6 +64,11 @@ class Instruments {
   // negative number when no plot is open.
   float draw(float ui_scale);
 
+  // What the plots show as CSV text: the convergence plot's step (the simulation's, the left
+  // side's) as --convergence-csv writes a step ("" when no step was traced yet), and the energy
+  // plot's samples, time,kinetic,spring,gravity,total (s, J) a row.
+  std::string convergence_csv() const;
+  std::string energy_csv() const;
   const ConvergenceTrace& shown_trace() const { return left_.trace; }
   const EnergyHistory& energy_history() const { return left_.energy; }
   const ConvergenceTrace& shown_right_trace() const { return right_.trace; }

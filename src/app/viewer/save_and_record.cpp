@@ -9,6 +9,7 @@
 #include "app/cli/scene_catalog.h"
 #include "app/viewer/scene_save.h"
 #include "app/viewer/window_saves.h"
+#include "io/atomic_file.h"
 #include "io/write_obj.h"
 
 namespace wobble {
@@ -62,6 +63,25 @@ std::string SaveAndRecord::export_obj(const Scene& scene, const Simulation& simu
     return "exported " + path;
   } catch (const std::exception& error) {
     return std::string("export failed: ") + error.what();
+  }
+}
+
+std::string SaveAndRecord::save_plots(const std::string& scene, const std::string& convergence,
+                                      const std::string& energy) const {
+  std::string told;
+  try {
+    for (const auto& [what, text] :
+         {std::pair<const char*, const std::string&>("convergence", convergence),
+          std::pair<const char*, const std::string&>("energy", energy)}) {
+      if (text.empty()) continue;
+      const std::string path = unused_file_name(".", "wobble-" + scene + "-" + what, ".csv");
+      write_output_file(path, text);
+      if (written_) written_(path);
+      told += (told.empty() ? "saved the plots as " : " and ") + path;
+    }
+    return told;
+  } catch (const std::exception& error) {
+    return std::string("saving the plots failed: ") + error.what();
   }
 }
 

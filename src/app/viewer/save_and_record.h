@@ -56,6 +56,11 @@ class SaveAndRecord {
                         const OrbitCamera& camera) const;
   // F11: the simulation's positions as wobble-SCENE-NNNN.obj.
   std::string export_obj(const Scene& scene, const Simulation& simulation) const;
+  // The instruments' CSV button: `convergence` (skipped when empty: no step traced yet) and
+  // `energy` as wobble-SCENE-convergence-NNNN.csv and wobble-SCENE-energy-NNNN.csv; returns what
+  // to tell.
+  std::string save_plots(const std::string& scene, const std::string& convergence,
+                         const std::string& energy) const;
 
   // The window's side (headless images never record from the panel).
   // Record into new folders in `folder` from now on, `progress` told of each (window_recorder.h).

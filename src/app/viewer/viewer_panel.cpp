@@ -38,6 +38,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   ui_scale *= panel_.ui_scale;
   // Each part of the panel is drawn by what owns its settings; what was pressed is carried out
   // below, in this order, once the panel is drawn.
+  bool plots_csv = false;  // the instruments' CSV button
   PanelRequests requests;
   if (show_panel_) {
     PanelParts parts;
@@ -56,7 +57,7 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
     };
     parts.environment = [&] { draw_environment_section(panel_, environment_offer(stats)); };
     parts.view = [&] { draw_view_section(panel_); };
-    parts.instruments = [&] { instruments_.draw_panel_section(); };
+    parts.instruments = [&] { plots_csv = instruments_.draw_panel_section(); };
     parts.compare = [&] { right_.draw_panel_section(stats.solvers); };
     panel_place_ = draw_control_panel(parts, stats, panel_.paused, ui_scale);
   } else {
@@ -102,6 +103,10 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   if (requests.frame_mesh) apply(ViewerCommand::frame_mesh);
   if (requests.save_scene) apply(ViewerCommand::save_scene);
   if (requests.export_obj) apply(ViewerCommand::export_obj);
+  if (plots_csv) {
+    saved(save_and_record_.save_plots(scene_.name, instruments_.convergence_csv(),
+                                      instruments_.energy_csv()));
+  }
   if (requests.default_view) apply(ViewerCommand::default_view);
 }
 

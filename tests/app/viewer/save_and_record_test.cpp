@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "app/viewer/instruments.h"
 #include "io/load_scene.h"
+#include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 
@@ -142,6 +144,66 @@ TEST_F(SaveAndRecordTest, EachFileWrittenIsToldByItsPath) {
                                                "./wobble-cloth-scene-0001.obj", saved.path}));
   for (const std::string& path : written)
     EXPECT_TRUE(fs::exists(path)) << path;
+}
+
+// The instruments' CSV button: what the plots show, as files a spreadsheet reads. The
+// convergence plot's step has a row per iterate with the trace's own numbers, read back exactly;
+// the energy plot's samples a row each; both told by path (the page downloads them).
+TEST_F(SaveAndRecordTest, TheCsvButtonWritesWhatThePlotsShow) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  wobble::Simulation simulation(scene.network, scene.pins, scene.params);
+  simulation.set_convergence_recording(true);
+  wobble::Instruments instruments;
+  std::vector<std::pair<double, wobble::FrameEnergy>> samples;
+  for (int i = 0; i < 3; ++i) {
+    simulation.step();
+    samples.emplace_back(simulation.time(), wobble::frame_energy(simulation));
+  }
+  wobble::ConvergenceTrace trace = simulation.last_convergence();
+  const wobble::ConvergenceTrace expected = trace;
+  ASSERT_GT(expected.iterations(), 0);
+  wobble::SaveAndRecord saves;
+  EXPECT_EQ(saves.save_plots("cloth", instruments.convergence_csv(), ""), "")
+      << "nothing plotted yet: nothing written";
+  instruments.take(trace, 3, samples);
+  std::vector<std::string> written;
+  saves.set_written([&](const std::string& path) { written.push_back(path); });
+  const std::string told =
+      saves.save_plots("cloth", instruments.convergence_csv(), instruments.energy_csv());
+  EXPECT_EQ(told,
+            "saved the plots as ./wobble-cloth-convergence-0001.csv and "
+            "./wobble-cloth-energy-0001.csv");
+  ASSERT_EQ(written.size(), 2u);
+  std::ifstream convergence(written[0]);
+  std::string line;
+  std::getline(convergence, line);
+  EXPECT_EQ(line, "frame,iteration,energy,gradient_norm,solver");
+  int rows = 0;
+  while (std::getline(convergence, line)) {
+    std::istringstream fields(line);
+    std::string step, iteration, energy, gradient, solver;
+    std::getline(fields, step, ',');
+    std::getline(fields, iteration, ',');
+    std::getline(fields, energy, ',');
+    std::getline(fields, gradient, ',');
+    std::getline(fields, solver, ',');
+    EXPECT_EQ(step, "3");
+    EXPECT_EQ(std::stoi(iteration), rows);
+    EXPECT_EQ(std::stod(energy), expected.energy[rows]) << line;
+    EXPECT_EQ(std::stod(gradient), expected.gradient_norm[rows]) << line;
+    EXPECT_EQ(solver, "local-global");
+    ++rows;
+  }
+  EXPECT_EQ(rows, expected.iterations() + 1);
+  std::ifstream energy(written[1]);
+  std::getline(energy, line);
+  EXPECT_EQ(line, "time,kinetic,spring,gravity,total");
+  int samples_read = 0;
+  while (std::getline(energy, line)) {
+    EXPECT_EQ(std::stod(line.substr(0, line.find(','))), samples[samples_read].first);
+    ++samples_read;
+  }
+  EXPECT_EQ(samples_read, 3);
 }
 
 TEST_F(SaveAndRecordTest, CtrlSAndF11WriteASceneAndAnObjThatReadBack) {
