@@ -21,14 +21,14 @@ std::vector<std::string> Notices::shown(double now) const {
   return texts;
 }
 
-void Notices::draw(double now, float left, float right, float ui_scale) const {
+void Notices::draw(double now, float left, float right, float ui_scale, float top) const {
   const std::vector<std::string> texts = shown(now);
   if (texts.empty()) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float margin = 12.0f * ui_scale;
   const float width =
       std::max(200.0f * ui_scale, std::min(right, display.x) - left - 2.0f * margin);
-  ImGui::SetNextWindowPos(ImVec2(left + margin, margin), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(left + margin, top + margin), ImGuiCond_Always);
   ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f), ImVec2(width, display.y * 0.5f));
   ImGui::SetNextWindowBgAlpha(0.85f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |

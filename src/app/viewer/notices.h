@@ -22,7 +22,7 @@ class Notices {
   // ImGui, between NewFrame and Render: the box at the top of the view, between `left` and
   // `right` (ImGui's units: the panel's right edge and the plots' left one), clear of the split
   // view's labels at the bottom; nothing when no notice is shown.
-  void draw(double now, float left, float right, float ui_scale) const;
+  void draw(double now, float left, float right, float ui_scale, float top = 0.0f) const;
 
  private:
   struct Notice {

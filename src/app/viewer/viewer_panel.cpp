@@ -71,8 +71,14 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
   draw_overlays(ui_scale);
   if (show_notices_) {
     const float display = ImGui::GetIO().DisplaySize.x;
-    notices_.draw(notice_clock(), panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f,
-                  instruments_left_ >= 0.0f ? instruments_left_ : display, ui_scale);
+    const float right = instruments_left_ >= 0.0f ? instruments_left_ : display;
+    // Beside the open panel where a notice fits there; else below the panel (folded to its
+    // title bar, or as wide as a phone's screen), so that neither hides the other.
+    const float panel_right = panel_place_.x + panel_place_.width;
+    const bool beside = panel_place_.shown && right - panel_right >= 220.0f * ui_scale;
+    const bool below = show_panel_ && !beside && panel_place_.height > 0.0f;
+    notices_.draw(notice_clock(), beside ? panel_right : 0.0f, right, ui_scale,
+                  below ? panel_place_.y + panel_place_.height : 0.0f);
   }
 
   // A new scene (or the same one afresh) waits for a running batch (see load).
