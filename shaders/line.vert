@@ -3,7 +3,13 @@
 layout(location = 0) in vec3 position;
 
 uniform mat4 view_projection;
+uniform vec3 eye;         // world position of the camera (m)
+uniform float push_back;  // drawn this far further along the eye's ray (m), for the depth test only
 
 void main() {
-  gl_Position = view_projection * vec4(position, 1.0);
+  // Along its own ray a point stays where it is on screen: only its depth moves.
+  vec3 from_eye = position - eye;
+  float distance = length(from_eye);
+  vec3 shown = distance > 0.0 ? position + from_eye * (push_back / distance) : position;
+  gl_Position = view_projection * vec4(shown, 1.0);
 }

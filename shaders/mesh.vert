@@ -6,6 +6,8 @@ layout(location = 3) in vec2 uv;
 layout(location = 4) in vec3 color;  // by a quantity (strain, speed), when use_vertex_colors
 
 uniform mat4 view_projection;
+uniform vec3 eye;         // world position of the camera (m)
+uniform float push_back;  // drawn this far further along the eye's ray (m), for the depth test only
 
 out vec3 world_position;
 out vec3 world_normal;
@@ -18,5 +20,9 @@ void main() {
   vertex_color = color;
   // OBJ's v grows upwards; image rows (as uploaded) grow downwards.
   texture_uv = vec2(uv.x, 1.0 - uv.y);
-  gl_Position = view_projection * vec4(position, 1.0);
+  // Along its own ray a point stays where it is on screen: only its depth moves.
+  vec3 from_eye = position - eye;
+  float distance = length(from_eye);
+  vec3 shown = distance > 0.0 ? position + from_eye * (push_back / distance) : position;
+  gl_Position = view_projection * vec4(shown, 1.0);
 }

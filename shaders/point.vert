@@ -2,6 +2,7 @@
 // Vertex markers. mark: 0 free, 1 pinned, 2 highlighted (under the mouse or held).
 layout(location = 0) in vec3 position;
 layout(location = 2) in float mark;
+layout(location = 5) in float pin_diameter;  // pixels: a pin's, from its spacing on screen
 
 uniform mat4 view_projection;
 uniform bool show_free_vertices;
@@ -10,10 +11,14 @@ uniform vec3 eye;               // world position of the camera (m)
 uniform float metres_per_pixel;  // a framebuffer pixel's size 1 m from the eye (m)
 
 out float point_mark;
+out float rimmed;  // 1: a dark rim around the fill (a marker large enough to hold one)
 
 void main() {
   point_mark = mark;
-  gl_PointSize = pixel_ratio * (mark > 1.5 ? 15.0 : (mark > 0.5 ? 10.0 : 3.0));
+  gl_PointSize =
+      mark > 1.5 ? 15.0 * pixel_ratio : (mark > 0.5 ? pin_diameter : 3.0 * pixel_ratio);
+  // On a small marker the rim would leave no fill: dense pins' rims merged into a black bar.
+  rimmed = mark > 0.5 && gl_PointSize >= 6.0 * pixel_ratio ? 1.0 : 0.0;
   // A marker is a flat disc facing the eye, on a surface that slopes away under it. Pulled
   // towards the eye along its own ray (so it stays where it was on screen) by its diameter as a
   // world length, it stays whole on a surface turned up to 63 degrees from facing the eye, yet a

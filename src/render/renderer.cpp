@@ -3,19 +3,39 @@
 #include <glad/gl.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
+#include "pin_mark_sizes.h"
 #include "shader_program.h"
 #include "spring_color_table.h"
+#include "thick_springs.h"
 
 namespace wobble {
 
 namespace {
 
 constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3,
-                 color_location = 4;
+                 color_location = 4, pin_diameter_location = 5;
 constexpr int spring_color_unit = 1;  // the surface's texture has unit 0
+// A mesh without faces is its springs: bands this many pixels wide (times the pixel ratio) read
+// from the back of a classroom.
+constexpr float thick_spring_width = 6.0f;
+
+// The longest edge of the triangles (m); positions #V by 3, triangles #F by 3.
+float longest_edge(const float* positions, const std::vector<unsigned>& triangles) {
+  float longest_squared = 0.0f;
+  for (std::size_t t = 0; t < triangles.size(); t += 3) {
+    for (int k = 0; k < 3; ++k) {
+      const float* a = positions + 3 * triangles[t + k];
+      const float* b = positions + 3 * triangles[t + (k + 1) % 3];
+      const float dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+      longest_squared = std::max(longest_squared, dx * dx + dy * dy + dz * dz);
+    }
+  }
+  return std::sqrt(longest_squared);
+}
 
 }  // namespace
 
@@ -37,18 +57,29 @@ struct Renderer::Resources {
   GLuint solid_array = 0, solid_positions = 0, solid_normals = 0, solid_indices = 0;
   // Colours by a quantity, used while the last update() had them.
   GLuint vertex_colors = 0;
+  // Each pin marker's diameter (pixels), from its spacing on screen; #V, read for pins only.
+  GLuint pin_diameters = 0;
+  std::vector<float> pin_diameter_values, pin_positions, pin_screen;
+  std::vector<int> pin_vertices, pins_in_front;
+  PinMarkSizes pin_mark_sizes;
   SpringColorTable spring_colors;
+  // The springs of a mesh without faces, drawn thick in the surface's colour.
+  ThickSprings thick_springs;
   bool vertex_colored = false, springs_colored = false;
   // Desktop GL sizes points from the shader only with GL_PROGRAM_POINT_SIZE on; GL ES (WebGL 2)
   // always does, and refuses the enum (a console warning twice a frame in the page).
   bool program_point_size = false;
   int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
   int solid_triangle_count = 0;
+  // The surface's longest triangle edge this frame (m): how deep its triangles can cut into a
+  // collider whose contact holds only the vertices out.
+  float longest_triangle_edge = 0.0f;
+  std::vector<unsigned> triangles;  // #F by 3, a copy for measuring the edges
   SurfaceColors colors;
 
   Resources() {
-    GLuint buffers[11];
-    glGenBuffers(11, buffers);
+    GLuint buffers[12];
+    glGenBuffers(12, buffers);
     positions = buffers[0];
     normals = buffers[1];
     marks = buffers[2];
@@ -60,6 +91,7 @@ struct Renderer::Resources {
     solid_normals = buffers[8];
     solid_indices = buffers[9];
     vertex_colors = buffers[10];
+    pin_diameters = buffers[11];
     glGenTextures(1, &texture);
     GLuint arrays[6];
     glGenVertexArrays(6, arrays);
@@ -84,6 +116,7 @@ struct Renderer::Resources {
     glBindVertexArray(point_array);
     attribute(positions, position_location, 3, GL_FLOAT);
     attribute(marks, mark_location, 1, GL_UNSIGNED_BYTE);
+    attribute(pin_diameters, pin_diameter_location, 1, GL_FLOAT);
 
     glBindVertexArray(grid_array);
     attribute(grid_vertices, position_location, 3, GL_FLOAT);
@@ -98,10 +131,10 @@ struct Renderer::Resources {
   }
 
   ~Resources() {
-    const GLuint buffers[11] = {positions,      normals,       marks,        triangle_indices,
-                                spring_indices, grid_vertices, uvs,          solid_positions,
-                                solid_normals,  solid_indices, vertex_colors};
-    glDeleteBuffers(11, buffers);
+    const GLuint buffers[12] = {positions,      normals,       marks,         triangle_indices,
+                                spring_indices, grid_vertices, uvs,           solid_positions,
+                                solid_normals,  solid_indices, vertex_colors, pin_diameters};
+    glDeleteBuffers(12, buffers);
     glDeleteTextures(1, &texture);
     const GLuint arrays[6] = {surface_array, spring_array, point_array,
                               grid_array,    empty_array,  solid_array};
@@ -138,6 +171,10 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, r.vertex_colors);
   glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
+  r.pin_diameter_values.assign(r.vertex_count, 0.0f);
+  glBindBuffer(GL_ARRAY_BUFFER, r.pin_diameters);
+  glBufferData(GL_ARRAY_BUFFER, sizeof(float) * r.vertex_count, r.pin_diameter_values.data(),
+               GL_STREAM_DRAW);
   r.vertex_colored = r.springs_colored = false;
   // Without uv the buffer still holds zeros, so the attribute never reads past its end.
   r.has_uv = topology.uv != nullptr;
@@ -148,10 +185,12 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBindVertexArray(r.surface_array);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, 3 * sizeof(unsigned) * r.triangle_count, topology.triangles,
                GL_STATIC_DRAW);
+  r.triangles.assign(topology.triangles, topology.triangles + 3 * r.triangle_count);
   glBindVertexArray(r.spring_array);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, 2 * sizeof(unsigned) * r.spring_count, topology.springs,
                GL_STATIC_DRAW);
   glBindVertexArray(0);
+  r.thick_springs.set_springs(topology.springs, r.triangle_count == 0 ? r.spring_count : 0);
 }
 
 void Renderer::set_ground(const GroundGrid& ground) {
@@ -219,6 +258,16 @@ void Renderer::update(const MeshFrame& frame) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.normals);
   glBindBuffer(GL_ARRAY_BUFFER, r.marks);
   glBufferSubData(GL_ARRAY_BUFFER, 0, r.vertex_count, frame.marks);
+  r.longest_triangle_edge = longest_edge(frame.positions, r.triangles);
+  // The pins' places, for sizing their markers by their spacing on screen in draw().
+  r.pin_vertices.clear();
+  r.pin_positions.clear();
+  for (int i = 0; i < r.vertex_count; ++i) {
+    if (frame.marks[i] == 0) continue;
+    r.pin_vertices.push_back(i);
+    r.pin_positions.insert(r.pin_positions.end(), frame.positions + 3 * i,
+                           frame.positions + 3 * i + 3);
+  }
   // Colours cost an upload only while they are shown.
   r.vertex_colored = frame.vertex_colors != nullptr;
   if (r.vertex_colored) {
@@ -226,7 +275,41 @@ void Renderer::update(const MeshFrame& frame) {
     glBufferSubData(GL_ARRAY_BUFFER, 0, 3 * sizeof(float) * r.vertex_count, frame.vertex_colors);
   }
   r.springs_colored = frame.spring_colors != nullptr && r.spring_count > 0;
-  if (r.springs_colored) r.spring_colors.upload(frame.spring_colors, r.spring_count);
+  if (r.triangle_count == 0) {
+    r.thick_springs.update(frame.positions, frame.spring_colors, r.colors.front);
+  } else if (r.springs_colored) {
+    r.spring_colors.upload(frame.spring_colors, r.spring_count);
+  }
+}
+
+void Renderer::size_pin_marks(const Eigen::Matrix4f& view_projection, int width, int height,
+                              float pixel_ratio) {
+  Resources& r = *resources_;
+  const int pin_count = static_cast<int>(r.pin_vertices.size());
+  if (pin_count == 0) return;
+  // Only pins in front of the eye are drawn, so only they can crowd one another.
+  r.pin_screen.clear();
+  r.pins_in_front.clear();
+  for (int p = 0; p < pin_count; ++p) {
+    const Eigen::Vector4f clip =
+        view_projection * Eigen::Vector4f(r.pin_positions[3 * p], r.pin_positions[3 * p + 1],
+                                          r.pin_positions[3 * p + 2], 1.0f);
+    if (!(clip.w() > 1e-6f)) continue;
+    const float x = clip.x() / clip.w(), y = clip.y() / clip.w();
+    if (!(std::abs(x) < 2.0f && std::abs(y) < 2.0f)) continue;  // well off screen
+    r.pin_screen.push_back(0.5f * width * x);
+    r.pin_screen.push_back(0.5f * height * y);
+    r.pins_in_front.push_back(r.pin_vertices[p]);
+  }
+  PinMarkRule rule;
+  rule.largest *= pixel_ratio;
+  rule.smallest *= pixel_ratio;
+  const int shown = static_cast<int>(r.pins_in_front.size());
+  const std::vector<float>& diameters = r.pin_mark_sizes.compute(r.pin_screen.data(), shown, rule);
+  for (int p = 0; p < shown; ++p)
+    r.pin_diameter_values[r.pins_in_front[p]] = diameters[p];
+  glBindBuffer(GL_ARRAY_BUFFER, r.pin_diameters);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(float) * r.vertex_count, r.pin_diameter_values.data());
 }
 
 void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
@@ -253,23 +336,37 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
 
-  const auto lines = [&](const float rgba[4]) {
+  // The contact keeps the surface's vertices a contact offset (a few mm) outside a collider, but
+  // its flat triangles cut straight across the collider's edges between them, deeper than the
+  // offset (docs/viewer.md), and a table's edge showed through a tablecloth as a dashed line.
+  // Half the longest triangle edge bounds that cut, so what the surface rests on, the solids and
+  // the ground grid together, is drawn that far further along each eye ray: nothing moves on
+  // screen, the surface in front of a solid wins the depth test whether it cuts the edge or not,
+  // and the grid and the solids keep their order where they meet.
+  const bool solids_shown = layers.solids && r.solid_triangle_count > 0;
+  const float stage_push = solids_shown && layers.surface ? 0.5f * r.longest_triangle_edge : 0.0f;
+
+  const auto lines = [&](const float rgba[4], float push_back) {
     r.line.use();
     glUniformMatrix4fv(r.line.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform4fv(r.line.uniform("line_color"), 1, rgba);
+    glUniform3fv(r.line.uniform("eye"), 1, eye.data());
+    glUniform1f(r.line.uniform("push_back"), push_back);
   };
   if (layers.ground) {
     const float grid_color[4] = {0.42f, 0.45f, 0.50f, 1.0f};
-    lines(grid_color);
+    lines(grid_color, stage_push);
     glBindVertexArray(r.grid_array);
     glDrawArrays(GL_LINES, 0, r.grid_vertex_count);
   }
 
   // Shaded triangles through the surface's program (two-sided lighting), pushed back in depth by
-  // glPolygonOffset(factor, units).
+  // glPolygonOffset(factor, units) and by `push_back` metres along the eye's rays.
   const auto shaded = [&](const Eigen::Vector3f& front, const Eigen::Vector3f& back, bool textured,
-                          bool vertex_colored, float factor, float units, GLuint array, int count) {
+                          bool vertex_colored, float factor, float units, float push_back,
+                          GLuint array, int count) {
     r.mesh.use();
+    glUniform1f(r.mesh.uniform("push_back"), push_back);
     glUniformMatrix4fv(r.mesh.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform3fv(r.mesh.uniform("eye"), 1, eye.data());
     glUniform3fv(r.mesh.uniform("front_color"), 1, front.data());
@@ -289,12 +386,11 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   if (layers.surface && r.triangle_count > 0) {
     // Pushed back a little so edges drawn on it win the depth test.
     shaded(r.colors.front, r.colors.back, r.textured && r.has_uv && !r.vertex_colored,
-           r.vertex_colored, 1.0f, 1.0f, r.surface_array, r.triangle_count);
+           r.vertex_colored, 1.0f, 1.0f, 0.0f, r.surface_array, r.triangle_count);
   }
-  if (layers.solids && r.solid_triangle_count > 0) {
-    // Pushed back further than the surface, so that a cloth resting on a collider a contact
-    // offset (a few mm) above it is never hidden by it.
-    shaded(r.colors.solid, r.colors.solid, false, false, 4.0f, 64.0f, r.solid_array,
+  if (solids_shown) {
+    // Pushed back further than the surface, and by stage_push (above).
+    shaded(r.colors.solid, r.colors.solid, false, false, 4.0f, 64.0f, stage_push, r.solid_array,
            r.solid_triangle_count);
   }
   // Edges and springs are blended, so the shading still shows through a dense mesh.
@@ -302,13 +398,16 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   if (layers.wireframe && r.triangle_count > 0) {
     const float wire_color[4] = {0.05f, 0.05f, 0.07f, 0.6f};
-    lines(wire_color);
+    lines(wire_color, 0.0f);
     glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     glBindVertexArray(r.surface_array);
     glDrawElements(GL_TRIANGLES, 3 * r.triangle_count, GL_UNSIGNED_INT, nullptr);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
-  if (layers.springs && r.spring_count > 0 && r.springs_colored) {
+  if (layers.springs && r.spring_count > 0 && r.triangle_count == 0) {
+    glDisable(GL_BLEND);  // opaque: the body of the shape, not lines over it
+    r.thick_springs.draw(view_projection, width, height, thick_spring_width * pixel_ratio);
+  } else if (layers.springs && r.spring_count > 0 && r.springs_colored) {
     // More opaque than plain springs, so that each line's colour reads.
     r.colored_springs.use();
     glUniformMatrix4fv(r.colored_springs.uniform("view_projection"), 1, GL_FALSE,
@@ -321,13 +420,14 @@ void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projecti
     r.spring_colors.unbind(spring_color_unit);
   } else if (layers.springs && r.spring_count > 0) {
     const float spring_color[4] = {0.55f, 0.95f, 0.85f, 0.45f};
-    lines(spring_color);
+    lines(spring_color, 0.0f);
     glBindVertexArray(r.spring_array);
     glDrawElements(GL_LINES, 2 * r.spring_count, GL_UNSIGNED_INT, nullptr);
   }
   glDisable(GL_BLEND);
 
   if (r.vertex_count > 0) {
+    size_pin_marks(view_projection, width, height, pixel_ratio);
     r.point.use();
     glUniformMatrix4fv(r.point.uniform("view_projection"), 1, GL_FALSE, view_projection.data());
     glUniform1i(r.point.uniform("show_free_vertices"), layers.points ? 1 : 0);

@@ -37,10 +37,12 @@ struct MeshFrame {
 struct ViewLayers {
   bool surface = true;     // shaded triangles, two-sided
   bool wireframe = false;  // triangle edges
-  bool springs = false;    // every spring as a line, interior ones included
-  bool points = false;     // every vertex as a dot (pins are always marked)
-  bool ground = true;      // grid on the ground plane
-  bool solids = true;      // the solid meshes of set_solids (colliders)
+  // Every spring as a line, interior ones included; for a topology without triangles (a rope, a
+  // net) the springs are the body, drawn as bands several pixels wide in the front colour.
+  bool springs = false;
+  bool points = false;  // every vertex as a dot (pins are always marked, smaller when dense)
+  bool ground = true;   // grid on the ground plane
+  bool solids = true;   // the solid meshes of set_solids (colliders)
 };
 
 // The square grid on the ground plane y = height, centred under (center_x, center_z).
@@ -96,6 +98,10 @@ class Renderer {
             float pixel_ratio = 1.0f, int x = 0, int y = 0);
 
  private:
+  // Each pin marker's diameter from the pins' spacing on screen under this view.
+  void size_pin_marks(const Eigen::Matrix4f& view_projection, int width, int height,
+                      float pixel_ratio);
+
   struct Resources;
   std::unique_ptr<Resources> resources_;
 };
