@@ -9,7 +9,7 @@ uniform float push_back;  // drawn this far further along the eye's ray (m), for
 void main() {
   // Along its own ray a point stays where it is on screen: only its depth moves.
   vec3 from_eye = position - eye;
-  float distance = length(from_eye);
-  vec3 shown = distance > 0.0 ? position + from_eye * (push_back / distance) : position;
+  float eye_distance = length(from_eye);
+  vec3 shown = eye_distance > 0.0 ? position + from_eye * (push_back / eye_distance) : position;
   gl_Position = view_projection * vec4(shown, 1.0);
 }

@@ -1,7 +1,7 @@
 #version 330 core
-// A spring as a band `width` pixels wide (render/thick_springs.h): one instance per spring, four
-// vertices in a triangle strip, 0 and 1 at its first end, 2 and 3 at its second, even on the
-// right of its direction on screen and odd on the left.
+// A spring as a band `width` pixels wide (render/thick_springs.h): four corners a spring, each
+// with both its ends, numbered in gl_VertexID % 4: 0 and 1 at its first end, 2 and 3 at its
+// second, even on the right of its direction on screen and odd on the left.
 layout(location = 0) in vec3 from_position;
 layout(location = 1) in vec3 to_position;
 layout(location = 2) in vec3 spring_color;
@@ -25,8 +25,9 @@ void main() {
   float length_on_screen = length(along);
   along = length_on_screen > 1e-4 ? along / length_on_screen : vec2(1.0, 0.0);
   vec2 normal = vec2(-along.y, along.x);
-  bool second_end = gl_VertexID >= 2;
-  across = (gl_VertexID % 2 == 0) ? -1.0 : 1.0;
+  int corner = gl_VertexID % 4;
+  bool second_end = corner >= 2;
+  across = (corner % 2 == 0) ? -1.0 : 1.0;
   vec4 end = second_end ? b : a;
   vec2 offset = 0.5 * width * (across * normal + (second_end ? along : -along));
   gl_Position = vec4(end.xy + offset / half_viewport * end.w, end.zw);

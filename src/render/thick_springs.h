@@ -12,12 +12,12 @@ namespace wobble {
 
 // Springs drawn as bands several pixels wide: the body of a mesh without faces (a rope, a net),
 // which one-pixel lines in a colour near the ground grid's leave invisible on a projector. GL 3.3
-// core and WebGL 2 draw no line wider than a pixel, so each spring is one instance of a
-// four-vertex strip that thick_spring.vert turns into a quad facing the camera, `width` pixels
-// across, its ends squared off half a width past the vertices so that bends show no notch. Its
-// two end positions and its colour are per-instance attributes, gathered on the CPU, so each
-// spring has its own colour in the browser too (which has no gl_PrimitiveID). Needs a current
-// GL context for its whole life.
+// core and WebGL 2 draw no line wider than a pixel, so each spring is four corners, two
+// triangles, that thick_spring.vert turns into a quad facing the camera, `width` pixels across,
+// its ends squared off half a width past the vertices so that bends show no notch. Every corner
+// carries the spring's two ends and its colour, gathered on the CPU, so each spring has its own
+// colour in the browser too (which has no gl_PrimitiveID). Plain draws: the browser's GL loader
+// offers no instanced ones. Needs a current GL context for its whole life.
 class ThickSprings {
  public:
   ThickSprings();
@@ -36,9 +36,9 @@ class ThickSprings {
 
  private:
   ShaderProgram program_{"thick_spring.vert", "thick_spring.frag"};
-  GLuint array_ = 0, buffer_ = 0;
+  GLuint array_ = 0, buffer_ = 0, indices_ = 0;
   std::vector<unsigned> springs_;
-  std::vector<float> instances_;  // #E by 9: from, to, colour
+  std::vector<float> corners_;  // #E × 4 by 9: from, to, colour
 };
 
 }  // namespace wobble
