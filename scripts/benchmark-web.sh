@@ -3,7 +3,7 @@
 # curtain, assets/curtain.json) over 120 steps, on one thread, natively (build/, as
 # scripts/test.sh builds it) and in WebAssembly under node (build-web/, scripts/build-web.sh),
 # which runs wasm with the same engine (V8) as Chrome, and in the page itself in headless Chromium
-# (index.html?bench: the steps run before the page draws). Prints a table and the ratios; a
+# (index.html?bench: the steps run once the page shows the scene). Prints a table and the ratios; a
 # benchmark, never a pass or fail.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,7 +16,7 @@ done
 median() { python3 -c 'import json, sys; print(json.load(sys.stdin)["step_ms_median"])'; }
 native_ms=$("$native" "$scene" --frames 120 --threads 1 | median)
 web_ms=$(PATH="/usr/bin:/bin:$PATH" node "$web" "$scene" --frames 120 --threads 1 | median)
-# The same steps inside the page, in headless Chromium, before it draws anything.
+# The same steps inside the page, in headless Chromium.
 browser_ms=$(python3 tests/web/bench_page.py build-web/site \
                --query "scene=$(basename "$scene" .json)&frames=120")
 printf '%-10s %-28s %10s\n' build runs "step (ms)"
