@@ -33,6 +33,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_check import Chromium, serve_site  # noqa: E402
+from page_files_check import click  # noqa: E402
 from png_files import read_png  # noqa: E402
 
 TOLERANCE = 1e-9  # of the bounding-box diagonal, as compare_positions.py
@@ -66,16 +67,6 @@ def screenshot(browser):
         return read_png(file.name)
     finally:
         os.unlink(file.name)
-
-
-def click(browser, x, y):
-    for kind in ('mouseMoved', 'mousePressed', 'mouseReleased'):
-        event = {'type': kind, 'x': x, 'y': y}
-        if kind != 'mouseMoved':
-            event.update({'button': 'left', 'buttons': 1 if kind == 'mousePressed' else 0,
-                          'clickCount': 1})
-        browser.call('Input.dispatchMouseEvent', event)
-        time.sleep(0.15)
 
 
 def page_positions(browser):
