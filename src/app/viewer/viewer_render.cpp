@@ -103,8 +103,9 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // again as the panel opens, folds or changes its height (it settles over a few frames).
   const bool below_panel =
       !right_.simulation() && panel_place_.shown && region.left == 0.0f && region.right == 1.0f;
-  const float panel_bottom = below_panel ? panel_place_.y + panel_place_.height : 0.0f;
-  if (below_panel) region = region_below(window_size.y(), panel_bottom);
+  if (below_panel) region = region_below(window_size.y(), panel_place_.y + panel_place_.height);
+  // Only a framing below the panel follows its height (a tall panel leaves the whole view).
+  const float panel_bottom = region.top > 0.0f ? panel_place_.y + panel_place_.height : 0.0f;
   const bool plots_open = instruments_left_ >= 0.0f;
   if (plots_open != framed_with_plots_ || std::abs(panel_bottom - framed_panel_bottom_) > 1.0f) {
     framed_with_plots_ = plots_open;
