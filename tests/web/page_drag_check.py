@@ -40,10 +40,10 @@ def pixel(image, x, y):
 
 
 class Page:
-    def __init__(self, browser, size, mobile):
+    def __init__(self, browser, size, mobile, ratio=1):
         self.browser = browser
         self.browser.call('Emulation.setDeviceMetricsOverride',
-                          {'width': size[0], 'height': size[1], 'deviceScaleFactor': 1,
+                          {'width': size[0], 'height': size[1], 'deviceScaleFactor': ratio,
                            'mobile': mobile})
 
     def open(self, url, timeout=60.0):

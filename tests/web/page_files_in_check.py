@@ -28,26 +28,26 @@ import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from page_check import Chromium, serve_site  # noqa: E402
+from page_drag_check import Page  # noqa: E402
 from page_files_check import click  # noqa: E402
-from png_files import read_png  # noqa: E402
 
 TOLERANCE = 1e-9  # of the bounding-box diagonal, as compare_positions.py
 
 
-def open_page(browser, url, size, ratio=1, mobile=False, timeout=90.0):
-    browser.call('Emulation.setDeviceMetricsOverride',
-                 {'width': size[0], 'height': size[1], 'deviceScaleFactor': ratio,
-                  'mobile': mobile})
+OPEN_TIMEOUT = 90.0  # s until the page has drawn its first frames
+
+
+def new_page(browser, size, ratio=1, mobile=False):
+    """page_drag_check's Page at `size` CSS pixels and device pixel ratio `ratio`; a mobile one
+    takes touch."""
+    page = Page(browser, size, mobile, ratio)
     if mobile:
         browser.call('Emulation.setTouchEmulationEnabled', {'enabled': True, 'maxTouchPoints': 5})
-    browser.call('Page.navigate', {'url': url})
-    return wait(browser, '(typeof Module == "object" ? (Module.wobbleFrames || 0) : 0) > 10',
-                timeout)
+    return page
 
 
 def wait(browser, condition, timeout=60.0):
@@ -57,16 +57,6 @@ def wait(browser, condition, timeout=60.0):
             return True
         time.sleep(0.2)
     return False
-
-
-def screenshot(browser):
-    data = base64.b64decode(browser.call('Page.captureScreenshot', {'format': 'png'})['data'])
-    with tempfile.NamedTemporaryFile(suffix='.png', delete=False) as file:
-        file.write(data)
-    try:
-        return read_png(file.name)
-    finally:
-        os.unlink(file.name)
 
 
 def page_positions(browser):
@@ -105,7 +95,7 @@ def files_in(site_url, native_program, assets, failures):
     browser = Chromium(shutil.which('chromium') or 'chromium')
     try:
         browser.call('Runtime.enable')
-        if not open_page(browser, site_url + '?frames=60', (1280, 720)):
+        if not new_page(browser, (1280, 720)).open(site_url + '?frames=60', OPEN_TIMEOUT):
             failures.append('files in: the page drew no frames')
             return
         wait(browser, 'Module.wobbleSteps >= 60')
@@ -158,7 +148,8 @@ def copy_link(site_url, failures):
     browser = Chromium(shutil.which('chromium') or 'chromium')
     try:
         browser.call('Runtime.enable')
-        if not open_page(browser, site_url + '?scene=flag&k=2345.5&iterations=12', (1280, 720)):
+        page = new_page(browser, (1280, 720))
+        if not page.open(site_url + '?scene=flag&k=2345.5&iterations=12', OPEN_TIMEOUT):
             failures.append('copy link: the page drew no frames')
             return
         click(browser, 175, 69)  # "Copy link"
@@ -167,7 +158,7 @@ def copy_link(site_url, failures):
             return
         link = browser.evaluate('Module.wobbleLink')
         print(f'page_files_in_check: Copy link gave {link}')
-        if not open_page(browser, link, (1280, 720)):
+        if not page.open(link, OPEN_TIMEOUT):
             failures.append(f'copy link: {link} drew no frames')
             return
         browser.evaluate('Module._wobble_report_positions()')
@@ -205,12 +196,13 @@ def sharp(site_url, failures):
     browser = Chromium(shutil.which('chromium') or 'chromium')
     try:
         browser.call('Runtime.enable')
-        if not open_page(browser, site_url + '?frames=30', (1280, 720), ratio=2):
+        page = new_page(browser, (1280, 720), ratio=2)
+        if not page.open(site_url + '?frames=30', OPEN_TIMEOUT):
             failures.append('ratio 2: the page drew no frames')
             return
         time.sleep(1.0)
         size = browser.evaluate('[canvas.width, canvas.height, Module.wobbleUiScale]')
-        steep = steep_edges(screenshot(browser), (20, 40, 660, 1400))
+        steep = steep_edges(page.screenshot(), (20, 40, 660, 1400))
         print(f'page_files_in_check: ratio 2: canvas {size[0]}x{size[1]}, UI scale {size[2]}, '
               f'{steep:.0%} of the panel\'s edges in one pixel')
         if size[:2] != [2560, 1440] or size[2] != 2:
@@ -237,7 +229,8 @@ def phone(site_url, failures):
     browser = Chromium(shutil.which('chromium') or 'chromium')
     try:
         browser.call('Runtime.enable')
-        if not open_page(browser, site_url + '?frames=40', (390, 844), ratio=3, mobile=True):
+        page = new_page(browser, (390, 844), ratio=3, mobile=True)
+        if not page.open(site_url + '?frames=40', OPEN_TIMEOUT):
             failures.append('phone: the page drew no frames')
             return
         wait(browser, 'Module.wobbleSteps >= 40')
@@ -253,7 +246,7 @@ def phone(site_url, failures):
 
         tap(60, 18)  # the folded panel's title, away from its small arrow
         opened = browser.evaluate('Module.wobblePanelOpen')
-        shown = orange_below(screenshot(browser), 0.56)
+        shown = orange_below(page.screenshot(), 0.56)
         print(f'page_files_in_check: phone: a tap on the title: panel open {opened}; '
               f'{shown} pixels of cloth below it')
         if not opened:
@@ -293,10 +286,10 @@ def main():
     server, url = serve_site(site)
     failures = []
     try:
-        for check in (lambda: files_in(url, native_program, assets, failures),
-                      lambda: copy_link(url, failures), lambda: sharp(url, failures),
-                      lambda: phone(url, failures)):
-            check()
+        files_in(url, native_program, assets, failures)
+        copy_link(url, failures)
+        sharp(url, failures)
+        phone(url, failures)
     finally:
         server.shutdown()
     for failure in failures:
