@@ -44,4 +44,42 @@ const std::vector<float>& PinMarkSizes::compute(const float* screen, int pin_cou
   return diameters_;
 }
 
+void PinMarks::take(const unsigned char* marks, const float* positions) {
+  pin_vertices_.clear();
+  pin_positions_.clear();
+  const int vertex_count = static_cast<int>(vertex_diameters_.size());
+  for (int i = 0; i < vertex_count; ++i) {
+    if (marks[i] == 0) continue;
+    pin_vertices_.push_back(i);
+    pin_positions_.insert(pin_positions_.end(), positions + 3 * i, positions + 3 * i + 3);
+  }
+}
+
+const std::vector<float>& PinMarks::size(const Eigen::Matrix4f& view_projection, int width,
+                                         int height, float pixel_ratio) {
+  const int pin_count = static_cast<int>(pin_vertices_.size());
+  if (pin_count == 0) return vertex_diameters_;
+  pin_screen_.clear();
+  pins_in_front_.clear();
+  for (int p = 0; p < pin_count; ++p) {
+    const Eigen::Vector4f clip =
+        view_projection * Eigen::Vector4f(pin_positions_[3 * p], pin_positions_[3 * p + 1],
+                                          pin_positions_[3 * p + 2], 1.0f);
+    if (!(clip.w() > 1e-6f)) continue;
+    const float x = clip.x() / clip.w(), y = clip.y() / clip.w();
+    if (!(std::abs(x) < 2.0f && std::abs(y) < 2.0f)) continue;  // well off screen
+    pin_screen_.push_back(0.5f * width * x);
+    pin_screen_.push_back(0.5f * height * y);
+    pins_in_front_.push_back(pin_vertices_[p]);
+  }
+  PinMarkRule rule;
+  rule.largest *= pixel_ratio;
+  rule.smallest *= pixel_ratio;
+  const int shown = static_cast<int>(pins_in_front_.size());
+  const std::vector<float>& diameters = sizes_.compute(pin_screen_.data(), shown, rule);
+  for (int p = 0; p < shown; ++p)
+    vertex_diameters_[pins_in_front_[p]] = diameters[p];
+  return vertex_diameters_;
+}
+
 }  // namespace wobble

@@ -59,9 +59,7 @@ struct Renderer::Resources {
   GLuint vertex_colors = 0;
   // Each pin marker's diameter (pixels), from its spacing on screen; #V, read for pins only.
   GLuint pin_diameters = 0;
-  std::vector<float> pin_diameter_values, pin_positions, pin_screen;
-  std::vector<int> pin_vertices, pins_in_front;
-  PinMarkSizes pin_mark_sizes;
+  PinMarks pin_marks;
   SpringColorTable spring_colors;
   // The springs of a mesh without faces, drawn thick in the surface's colour.
   ThickSprings thick_springs;
@@ -171,9 +169,9 @@ void Renderer::set_topology(const MeshTopology& topology) {
   glBufferData(GL_ARRAY_BUFFER, r.vertex_count, nullptr, GL_STREAM_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, r.vertex_colors);
   glBufferData(GL_ARRAY_BUFFER, 3 * sizeof(float) * r.vertex_count, nullptr, GL_STREAM_DRAW);
-  r.pin_diameter_values.assign(r.vertex_count, 0.0f);
+  r.pin_marks.reset(r.vertex_count);
   glBindBuffer(GL_ARRAY_BUFFER, r.pin_diameters);
-  glBufferData(GL_ARRAY_BUFFER, sizeof(float) * r.vertex_count, r.pin_diameter_values.data(),
+  glBufferData(GL_ARRAY_BUFFER, sizeof(float) * r.vertex_count, r.pin_marks.diameters().data(),
                GL_STREAM_DRAW);
   r.vertex_colored = r.springs_colored = false;
   // Without uv the buffer still holds zeros, so the attribute never reads past its end.
@@ -260,14 +258,7 @@ void Renderer::update(const MeshFrame& frame) {
   glBufferSubData(GL_ARRAY_BUFFER, 0, r.vertex_count, frame.marks);
   r.longest_triangle_edge = longest_edge(frame.positions, r.triangles);
   // The pins' places, for sizing their markers by their spacing on screen in draw().
-  r.pin_vertices.clear();
-  r.pin_positions.clear();
-  for (int i = 0; i < r.vertex_count; ++i) {
-    if (frame.marks[i] == 0) continue;
-    r.pin_vertices.push_back(i);
-    r.pin_positions.insert(r.pin_positions.end(), frame.positions + 3 * i,
-                           frame.positions + 3 * i + 3);
-  }
+  r.pin_marks.take(frame.marks, frame.positions);
   // Colours cost an upload only while they are shown.
   r.vertex_colored = frame.vertex_colors != nullptr;
   if (r.vertex_colored) {
@@ -285,31 +276,11 @@ void Renderer::update(const MeshFrame& frame) {
 void Renderer::size_pin_marks(const Eigen::Matrix4f& view_projection, int width, int height,
                               float pixel_ratio) {
   Resources& r = *resources_;
-  const int pin_count = static_cast<int>(r.pin_vertices.size());
-  if (pin_count == 0) return;
-  // Only pins in front of the eye are drawn, so only they can crowd one another.
-  r.pin_screen.clear();
-  r.pins_in_front.clear();
-  for (int p = 0; p < pin_count; ++p) {
-    const Eigen::Vector4f clip =
-        view_projection * Eigen::Vector4f(r.pin_positions[3 * p], r.pin_positions[3 * p + 1],
-                                          r.pin_positions[3 * p + 2], 1.0f);
-    if (!(clip.w() > 1e-6f)) continue;
-    const float x = clip.x() / clip.w(), y = clip.y() / clip.w();
-    if (!(std::abs(x) < 2.0f && std::abs(y) < 2.0f)) continue;  // well off screen
-    r.pin_screen.push_back(0.5f * width * x);
-    r.pin_screen.push_back(0.5f * height * y);
-    r.pins_in_front.push_back(r.pin_vertices[p]);
-  }
-  PinMarkRule rule;
-  rule.largest *= pixel_ratio;
-  rule.smallest *= pixel_ratio;
-  const int shown = static_cast<int>(r.pins_in_front.size());
-  const std::vector<float>& diameters = r.pin_mark_sizes.compute(r.pin_screen.data(), shown, rule);
-  for (int p = 0; p < shown; ++p)
-    r.pin_diameter_values[r.pins_in_front[p]] = diameters[p];
+  if (r.pin_marks.empty()) return;
+  const std::vector<float>& diameters =
+      r.pin_marks.size(view_projection, width, height, pixel_ratio);
   glBindBuffer(GL_ARRAY_BUFFER, r.pin_diameters);
-  glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(float) * r.vertex_count, r.pin_diameter_values.data());
+  glBufferSubData(GL_ARRAY_BUFFER, 0, sizeof(float) * r.vertex_count, diameters.data());
 }
 
 void Renderer::draw(const Eigen::Matrix4f& view, const Eigen::Matrix4f& projection,
