@@ -7,17 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "pin_mark_sizes.h"
-#include "shader_program.h"
-#include "spring_color_table.h"
-#include "thick_springs.h"
+#include "renderer_resources.h"
 
 namespace wobble {
 
 namespace {
 
-constexpr GLuint position_location = 0, normal_location = 1, mark_location = 2, uv_location = 3,
-                 color_location = 4, pin_diameter_location = 5;
 constexpr int spring_color_unit = 1;  // the surface's texture has unit 0
 // A mesh without faces is its springs: bands this many pixels wide (times the pixel ratio) read
 // from the back of a classroom.
@@ -38,113 +33,6 @@ float longest_edge(const float* positions, const std::vector<unsigned>& triangle
 }
 
 }  // namespace
-
-struct Renderer::Resources {
-  ShaderProgram mesh{"mesh.vert", "mesh.frag"};
-  ShaderProgram line{"line.vert", "line.frag"};
-  ShaderProgram point{"point.vert", "point.frag"};
-  ShaderProgram background{"background.vert", "background.frag"};
-  ShaderProgram colored_springs{"line.vert", "spring_colors.frag"};
-
-  // One position buffer feeds three vertex arrays, each with its own element buffer: the surface
-  // (with normals), the springs, and the markers (with marks).
-  GLuint positions = 0, normals = 0, marks = 0, triangle_indices = 0, spring_indices = 0, uvs = 0;
-  GLuint texture = 0;
-  bool textured = false, has_uv = false;
-  GLuint surface_array = 0, spring_array = 0, point_array = 0;
-  GLuint grid_array = 0, grid_vertices = 0, empty_array = 0;
-  // The solids have buffers of their own, drawn through the surface's program.
-  GLuint solid_array = 0, solid_positions = 0, solid_normals = 0, solid_indices = 0;
-  // Colours by a quantity, used while the last update() had them.
-  GLuint vertex_colors = 0;
-  // Each pin marker's diameter (pixels), from its spacing on screen; #V, read for pins only.
-  GLuint pin_diameters = 0;
-  PinMarks pin_marks;
-  SpringColorTable spring_colors;
-  // The springs of a mesh without faces, drawn thick in the surface's colour.
-  ThickSprings thick_springs;
-  bool vertex_colored = false, springs_colored = false;
-  // Desktop GL sizes points from the shader only with GL_PROGRAM_POINT_SIZE on; GL ES (WebGL 2)
-  // always does, and refuses the enum (a console warning twice a frame in the page).
-  bool program_point_size = false;
-  int vertex_count = 0, triangle_count = 0, spring_count = 0, grid_vertex_count = 0;
-  int solid_triangle_count = 0;
-  // The surface's longest triangle edge this frame (m): how deep its triangles can cut into a
-  // collider whose contact holds only the vertices out.
-  float longest_triangle_edge = 0.0f;
-  std::vector<unsigned> triangles;  // #F by 3, a copy for measuring the edges
-  SurfaceColors colors;
-
-  Resources() {
-    GLuint buffers[12];
-    glGenBuffers(12, buffers);
-    positions = buffers[0];
-    normals = buffers[1];
-    marks = buffers[2];
-    triangle_indices = buffers[3];
-    spring_indices = buffers[4];
-    grid_vertices = buffers[5];
-    uvs = buffers[6];
-    solid_positions = buffers[7];
-    solid_normals = buffers[8];
-    solid_indices = buffers[9];
-    vertex_colors = buffers[10];
-    pin_diameters = buffers[11];
-    glGenTextures(1, &texture);
-    GLuint arrays[6];
-    glGenVertexArrays(6, arrays);
-    surface_array = arrays[0];
-    spring_array = arrays[1];
-    point_array = arrays[2];
-    grid_array = arrays[3];
-    empty_array = arrays[4];
-    solid_array = arrays[5];
-
-    glBindVertexArray(surface_array);
-    attribute(positions, position_location, 3, GL_FLOAT);
-    attribute(normals, normal_location, 3, GL_FLOAT);
-    attribute(uvs, uv_location, 2, GL_FLOAT);
-    attribute(vertex_colors, color_location, 3, GL_FLOAT);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_indices);
-
-    glBindVertexArray(spring_array);
-    attribute(positions, position_location, 3, GL_FLOAT);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, spring_indices);
-
-    glBindVertexArray(point_array);
-    attribute(positions, position_location, 3, GL_FLOAT);
-    attribute(marks, mark_location, 1, GL_UNSIGNED_BYTE);
-    attribute(pin_diameters, pin_diameter_location, 1, GL_FLOAT);
-
-    glBindVertexArray(grid_array);
-    attribute(grid_vertices, position_location, 3, GL_FLOAT);
-
-    glBindVertexArray(solid_array);
-    attribute(solid_positions, position_location, 3, GL_FLOAT);
-    attribute(solid_normals, normal_location, 3, GL_FLOAT);
-    // The surface's program reads uv; the solids have none, so the attribute is a constant.
-    glDisableVertexAttribArray(uv_location);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, solid_indices);
-    glBindVertexArray(0);
-  }
-
-  ~Resources() {
-    const GLuint buffers[12] = {positions,      normals,       marks,         triangle_indices,
-                                spring_indices, grid_vertices, uvs,           solid_positions,
-                                solid_normals,  solid_indices, vertex_colors, pin_diameters};
-    glDeleteBuffers(12, buffers);
-    glDeleteTextures(1, &texture);
-    const GLuint arrays[6] = {surface_array, spring_array, point_array,
-                              grid_array,    empty_array,  solid_array};
-    glDeleteVertexArrays(6, arrays);
-  }
-
-  static void attribute(GLuint buffer, GLuint location, int size, GLenum type) {
-    glBindBuffer(GL_ARRAY_BUFFER, buffer);
-    glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, size, type, GL_FALSE, 0, nullptr);
-  }
-};
 
 Renderer::Renderer() : resources_(std::make_unique<Resources>()) {
   const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
