@@ -276,9 +276,7 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
   if (!on_) return;
   const Stopwatch stopwatch;
   // What the colliders' projection moved stays within the bounds too.
-  // (Any common motion keeps the bounds' promise; the guard below checks with the same one.)
-  const Eigen::Vector3d common = mean_motion(next);
-  clamped_ += clamp_to_bounds(x_, common, bounds_, next);
+  clamped_ += clamp_to_bounds(x_, mean_motion(next), bounds_, next);
   // The forces at the solved positions, for the next step's start (and L-BFGS's λ̄).
   const double mu = colliders_->friction();
   const Eigen::Index n = next.rows();
@@ -296,31 +294,25 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
     }
   }
   solve_ms_ += stopwatch.milliseconds();
-  // The last resort. Every pair that did not cross where the epoch started cannot cross while
-  // each vertex stays within its bound (the bounds' promise, self_contact_proximity.h), and the
-  // clamp above has just put every vertex within its bound, pins too. So the guard looks for
-  // crossings only around a vertex that is still not within its bound (a position or a bound
-  // that is not a number), and does nothing, at O(#V), when there is none.
+  // The last resort: a crossing the bounds did not prevent (a pinned vertex dragged through).
   const Stopwatch guard;
-  watched_.assign(n, 0);
-  bool any_outside = false;
-  for (const int v : surface_.vertices) {
-    const double bound = bounds_(v);
-    if (bound == std::numeric_limits<double>::infinity()) continue;
-    // As clamp_to_bounds measures it, so that a vertex it scaled to its bound reads within.
-    const Eigen::Vector3d start = vertex_row(x_, v) + common;
-    const double moved = (vertex_row(next, v) - start).norm();
-    if (!(moved <= bound)) watched_[v] = any_outside = true;
+  inverse_mass_.resize(n);
+  for (Eigen::Index v = 0; v < n; ++v)
+    inverse_mass_(v) = step.pinned[v] ? 0.0 : 1.0 / step.rest.m(v);
+  put_back_.assign(n, 0);
+  // While the bounds held every vertex without having to move one and the search left nothing
+  // out, a crossing could only start at a listed pair: the guard looks around those alone.
+  const std::vector<char>* watched = nullptr;
+  if (clamped_ == 0 && !proximity_.saturated()) {
+    watched_.assign(n, 0);
+    for (const Pair& pair : pairs_) {
+      for (const int v : pair.features.vertex)
+        watched_[v] = 1;
+    }
+    watched = &watched_;
   }
-  repaired_ = 0;
-  if (any_outside) {
-    inverse_mass_.resize(n);
-    for (Eigen::Index v = 0; v < n; ++v)
-      inverse_mass_(v) = step.pinned[v] ? 0.0 : 1.0 / step.rest.m(v);
-    put_back_.assign(n, 0);
-    repaired_ =
-        guard_.undo_crossings(surface_, step.current, inverse_mass_, next, put_back_, &watched_);
-  }
+  repaired_ =
+      guard_.undo_crossings(surface_, step.current, inverse_mass_, next, put_back_, watched);
   guard_ms_ = guard.milliseconds();
 }
 
