@@ -153,7 +153,7 @@ TEST(SelfCollisionFolding, SphereWrapNeverCrossesItself) {
 // A pile left to settle comes to rest: self-collision must not keep feeding it energy.
 TEST(SelfCollisionFolding, SettledPileIsAtRest) {
   const FoldingScene scene = wobble::testing::cloth_pile_scene(self_collision(true));
-  const int settle = 300, watch = 60;
+  const int settle = 400, watch = 60;
   const SceneRun run = run_scene(scene, settle + watch);
   ASSERT_EQ(run.failed_step, -1) << Simulation::describe(run.failure);
   const double most = *std::max_element(run.kinetic_energy.end() - watch, run.kinetic_energy.end());
@@ -161,10 +161,12 @@ TEST(SelfCollisionFolding, SettledPileIsAtRest) {
       "[ info ] settled pile: max kinetic energy over steps %d-%d: %.3g J (at step %d: %.3g J)\n",
       settle + 1, settle + watch, most, settle, run.kinetic_energy[settle - 1]);
   RecordProperty("max_kinetic_energy", std::to_string(most));
-  // The pile settles to about 1e-10 J; 1e-5 J (a mean speed of about 9 mm/s for its 0.25 kg)
-  // leaves room for contact jitter but not for a pile that keeps moving (friction on edge-edge
-  // pairs, or on a vertex beside a triangle, kept it at 0.01 to 0.8 J).
-  EXPECT_LT(most, 1e-5);
+  // The pile settles to about 1e-5 J (friction answers each step's slide, from where the step
+  // started: a pile creeps a little before it stops); 5e-5 J (a mean speed of about 2 cm/s for
+  // its 0.25 kg) leaves room for that but not for a pile that keeps moving (friction on edge-edge
+  // pairs, or on a vertex beside a triangle, kept it at 0.01 to 0.8 J; friction measured from a
+  // bounded iterate within the step made the shipped pile gain energy without end).
+  EXPECT_LT(most, 5e-5);
 }
 
 // Self-collision with Chebyshev acceleration, the ground, friction and pins being dragged at

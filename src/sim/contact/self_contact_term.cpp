@@ -105,6 +105,7 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
                     within(step.current, keep_fraction) && within(first, keep_fraction);
   if (!keep) {
     x_ = step.current;
+    anchor_ = x_;
     start_epoch(step, first);
   }
   return false;
@@ -153,12 +154,13 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
 
 double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
                                   Eigen::Vector3d* slide) const {
+  const Eigen::MatrixXd& anchor = anchor_.rows() == p.rows() ? anchor_ : x_;
   const SelfContactPair& f = pair.features;
   Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
     q += f.beta[k] * vertex_row(p, f.vertex[k]);
     if (slide) {
-      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(x_, f.vertex[k]));
+      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(anchor, f.vertex[k]));
     }
   }
   if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
@@ -348,7 +350,8 @@ std::size_t SelfContactTerm::memory_bytes() const {
   return matrix(surface_.rest) + (surface_.triangles.size() + surface_.edges.size()) * sizeof(int) +
          surface_.vertex_edges.memory_bytes() + surface_.vertex_triangles.memory_bytes() +
          rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
-         matrix(x_) + (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
+         matrix(x_) + matrix(anchor_) +
+         (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
          found_.capacity() * sizeof(SelfContactPair) + pairs_.capacity() * sizeof(Pair) +
          remembered_.capacity() * sizeof(std::pair<std::uint64_t, double>) +
          in_contact_.capacity() + put_back_.capacity();

@@ -95,8 +95,8 @@ class SelfContactTerm : public StepTerm {
   void build_surface();
   // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
   void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
-  // g(p) (m) and the closest points' slide in the tangent plane since the epoch started (m): over
-  // the step, or over the steps a kept epoch spans, so that a resting pile does not creep.
+  // g(p) (m) and the closest points' slide in the tangent plane from anchor_ (m): over the step,
+  // or over the steps a kept epoch spans, so that a resting pile does not creep.
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
   // The surface's mean motion from x_ to p (m).
   Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
@@ -117,6 +117,12 @@ class SelfContactTerm : public StepTerm {
   SelfCrossingGuard guard_;
   Eigen::VectorXd inertia_;  // #V: W (N/m)
   Eigen::MatrixXd x_;        // #V by 3: where the epoch started
+  // #V by 3: where friction measures slides from: where the step's first epoch started (the
+  // step's start, or steps back while that epoch is kept), not where an epoch within the step
+  // started (a bounded iterate): from there friction held the iterate to where the bounds had
+  // put it, and the shipped pile gained energy without end once it lay (2.8 J at the start,
+  // 38 J by step 700).
+  Eigen::MatrixXd anchor_;
   Eigen::MatrixXd heading_;  // #V by 3: an iterate before its bounds
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
