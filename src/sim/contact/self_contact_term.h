@@ -98,7 +98,7 @@ class SelfContactTerm : public StepTerm {
   // g(p) (m) and the closest points' slide in the tangent plane from anchor_ (m): over the step,
   // or over the steps a kept epoch spans, so that a resting pile does not creep.
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
-  // The surface's mean motion from x_ to p (m).
+  // The surface's common motion from x_ to p (m): the median along each axis (see the .cpp).
   Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
   // Whether every surface vertex of p is within `fraction` of its bound, the mean motion out.
   bool within(const Eigen::MatrixXd& p, double fraction) const;
@@ -129,6 +129,8 @@ class SelfContactTerm : public StepTerm {
   std::vector<Pair> pairs_;
   std::vector<std::pair<std::uint64_t, double>> remembered_;  // (key, λ), sorted, last step's
   std::vector<char> in_contact_, watched_, put_back_;
+  static constexpr std::size_t max_motion_samples = 1024;
+  mutable std::vector<double> motion_samples_;  // mean_motion's buffer
   Eigen::VectorXd inverse_mass_;
   int epochs_ = 0, clamped_ = 0, contact_count_ = 0, repaired_ = 0;
   double detection_ms_ = 0.0, solve_ms_ = 0.0, guard_ms_ = 0.0;
