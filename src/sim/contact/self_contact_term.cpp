@@ -32,7 +32,7 @@ std::uint64_t pair_key(const SelfContactPair& pair) {
 
 }  // namespace
 
-Eigen::Vector3d SelfContactTerm::mean_motion(const Eigen::MatrixXd& p) const {
+Eigen::Vector3d SelfContactTerm::common_motion(const Eigen::MatrixXd& p) const {
   // The median of the surface's motion along each axis, of at most max_motion_samples vertices
   // at an even stride (the same every run). Not the mean: where a corner of a lying pile slides,
   // the mean moves, and the clamp dragged every still vertex whose bound is small along with it
@@ -59,7 +59,7 @@ Eigen::Vector3d SelfContactTerm::mean_motion(const Eigen::MatrixXd& p) const {
 bool SelfContactTerm::within(const Eigen::MatrixXd& p, double fraction) const {
   // Any common motion keeps the bounds' promise (distances do not change when everything moves
   // alike): the common motion since the epoch started is taken out.
-  const Eigen::Vector3d common = mean_motion(p);
+  const Eigen::Vector3d common = common_motion(p);
   for (const int v : surface_.vertices) {
     const double limit = fraction * bounds_(v);
     if (!((vertex_row(p, v) - vertex_row(x_, v) - common).squaredNorm() <= limit * limit))
@@ -132,7 +132,7 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   const Eigen::Index n = x_.rows();
   // A new epoch within the step carries the forces its pairs have reached so far.
   if (epochs_ > 0) end_step();
-  const Eigen::Vector3d common = mean_motion(heading);
+  const Eigen::Vector3d common = common_motion(heading);
   reach_.setZero(n);
   for (const int v : surface_.vertices) {
     const double wander = (vertex_row(heading, v) - vertex_row(x_, v) - common).norm();
@@ -277,7 +277,7 @@ bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p)
   const Stopwatch stopwatch;
   const int pushed = separate(step, p);
   heading_ = p;
-  const int moved = clamp_to_bounds(x_, mean_motion(p), bounds_, p);
+  const int moved = clamp_to_bounds(x_, common_motion(p), bounds_, p);
   clamped_ += moved;
   solve_ms_ += stopwatch.milliseconds();
   // The bounded iterate is free of crossings: the next epoch starts there, its reaches from where
@@ -294,7 +294,7 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
   if (!on_) return;
   const Stopwatch stopwatch;
   // What the colliders' projection moved stays within the bounds too.
-  clamped_ += clamp_to_bounds(x_, mean_motion(next), bounds_, next);
+  clamped_ += clamp_to_bounds(x_, common_motion(next), bounds_, next);
   // The forces at the solved positions, for the next step's start (and L-BFGS's λ̄).
   const double mu = colliders_->friction();
   const Eigen::Index n = next.rows();

@@ -38,7 +38,7 @@ namespace wobble {
 //      vertex's inertia (1 + cΔt)mₖ/Δt² (what would have moved free masses as far); the local
 //      step adds λβₖn to vertex k (add_targets), so that the global step learns the contact
 //      instead of meeting it anew each iteration; λ carries over to the same pair next step;
-//   3. every vertex beyond its bound is moved back within it, the mean motion taken out; if any
+//   3. every vertex beyond its bound is moved back within it, the common motion taken out; if any
 //      was, a new epoch starts from the bounded iterate (at most max_epochs a step).
 // L-BFGS sees the energy (κ/2) max(0, g + λ/κ)² per pair with Huber friction μλ·f(‖s‖), and the
 // same limit_iterate after each accepted step.
@@ -99,8 +99,8 @@ class SelfContactTerm : public StepTerm {
   // or over the steps a kept epoch spans, so that a resting pile does not creep.
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
   // The surface's common motion from x_ to p (m): the median along each axis (see the .cpp).
-  Eigen::Vector3d mean_motion(const Eigen::MatrixXd& p) const;
-  // Whether every surface vertex of p is within `fraction` of its bound, the mean motion out.
+  Eigen::Vector3d common_motion(const Eigen::MatrixXd& p) const;
+  // Whether every surface vertex of p is within `fraction` of its bound, the common motion out.
   bool within(const Eigen::MatrixXd& p, double fraction) const;
   // One sweep pushing the pairs of p apart; returns how many it pushed.
   int separate(const StepContext& step, Eigen::MatrixXd& p);
@@ -130,7 +130,7 @@ class SelfContactTerm : public StepTerm {
   std::vector<std::pair<std::uint64_t, double>> remembered_;  // (key, λ), sorted, last step's
   std::vector<char> in_contact_, watched_, put_back_;
   static constexpr std::size_t max_motion_samples = 1024;
-  mutable std::vector<double> motion_samples_;  // mean_motion's buffer
+  mutable std::vector<double> motion_samples_;  // common_motion's buffer
   Eigen::VectorXd inverse_mass_;
   int epochs_ = 0, clamped_ = 0, contact_count_ = 0, repaired_ = 0;
   double detection_ms_ = 0.0, solve_ms_ = 0.0, guard_ms_ = 0.0;
