@@ -19,8 +19,7 @@ TEST(ShippedClothPile, LosesEnergyOnceItLies) {
   ASSERT_TRUE(scene.params.self_collision.on);
   wobble::Simulation simulation(scene.network, scene.pins, scene.params, scene.initial_velocity);
   const double start = wobble::frame_energy(simulation).total;
-  // It stands for about 300 steps, folds and falls until about 500, and lies from then on (with
-  // a pop or two before step 650: a moment at up to 3.6 J, see issue 39's note).
+  // It stands for about 300 steps, folds and falls until about 500, and lies from then on.
   const int lies = 680, watched = 50;
   double most = 0.0;
   for (int step = 0; step < lies + watched; ++step) {

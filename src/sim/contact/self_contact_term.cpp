@@ -170,13 +170,12 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
 
 double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
                                   Eigen::Vector3d* slide) const {
-  const Eigen::MatrixXd& anchor = anchor_.rows() == p.rows() ? anchor_ : x_;
   const SelfContactPair& f = pair.features;
   Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
   for (int k = 0; k < 4; ++k) {
     q += f.beta[k] * vertex_row(p, f.vertex[k]);
     if (slide) {
-      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(anchor, f.vertex[k]));
+      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(anchor_, f.vertex[k]));
     }
   }
   if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
