@@ -122,6 +122,7 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!keep) {
     x_ = step.current;
     anchor_ = x_;
+    pack(anchor_, anchor_rows_);
     start_epoch(step, first);
   }
   return false;
@@ -177,6 +178,26 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
     if (slide) {
       moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(anchor_, f.vertex[k]));
     }
+  }
+  if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
+  return f.target - q.dot(f.normal);
+}
+
+void SelfContactTerm::pack(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& rows) {
+  rows.resize(m.rows());
+  for (Eigen::Index v = 0; v < m.rows(); ++v)
+    rows[v] = vertex_row(m, static_cast<int>(v));
+}
+
+double SelfContactTerm::packed_violation(const Pair& pair, Eigen::Vector3d* slide) const {
+  // violation() on packed rows (a column-major matrix costs three cache lines a vertex): the
+  // same sums in the same order, so the same numbers.
+  const SelfContactPair& f = pair.features;
+  Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3d& at = rows_[f.vertex[k]];
+    q += f.beta[k] * at;
+    if (slide) moved += f.beta[k] * (at - anchor_rows_[f.vertex[k]]);
   }
   if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
   return f.target - q.dot(f.normal);
@@ -243,10 +264,11 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
   // learns the contact instead of meeting it anew each iteration.
   const double mu = colliders_->friction();
   int pushed = 0;
+  pack(p, rows_);
   for (Pair& pair : pairs_) {
     if (!(pair.stiffness > 0.0)) continue;
     Eigen::Vector3d slide;
-    const double g = violation(pair, p, mu > 0.0 ? &slide : nullptr);
+    const double g = packed_violation(pair, mu > 0.0 ? &slide : nullptr);
     // λ follows the pair: up by what had to be pushed, down as the gap opens beyond its target.
     pair.force = std::max(0.0, pair.force + pair.stiffness * g);
     if (!(g > 0.0)) continue;
@@ -265,9 +287,13 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
     for (int k = 0; k < 4; ++k) {
       const int v = f.vertex[k];
       if (f.beta[k] == 0.0 || step.pinned[v]) continue;
-      p.row(v) += (f.beta[k] / step.rest.m(v)) * push.transpose();
+      rows_[v] += (f.beta[k] / step.rest.m(v)) * push;
     }
     ++pushed;
+  }
+  if (pushed > 0) {
+    for (Eigen::Index v = 0; v < p.rows(); ++v)
+      p.row(v) = rows_[v].transpose();
   }
   return pushed;
 }
@@ -366,6 +392,7 @@ std::size_t SelfContactTerm::memory_bytes() const {
          surface_.vertex_edges.memory_bytes() + surface_.vertex_triangles.memory_bytes() +
          rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
          matrix(x_) + matrix(anchor_) +
+         (anchor_rows_.capacity() + rows_.capacity()) * sizeof(Eigen::Vector3d) +
          (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
          found_.capacity() * sizeof(SelfContactPair) + pairs_.capacity() * sizeof(Pair) +
          remembered_.capacity() * sizeof(std::pair<std::uint64_t, double>) +

@@ -102,6 +102,9 @@ class SelfContactTerm : public StepTerm {
   Eigen::Vector3d common_motion(const Eigen::MatrixXd& p) const;
   // Whether every surface vertex of p is within `fraction` of its bound, the common motion out.
   bool within(const Eigen::MatrixXd& p, double fraction) const;
+  // violation() of rows_ from anchor_rows_.
+  double packed_violation(const Pair& pair, Eigen::Vector3d* slide) const;
+  static void pack(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& rows);
   // One sweep pushing the pairs of p apart; returns how many it pushed.
   int separate(const StepContext& step, Eigen::MatrixXd& p);
 
@@ -123,6 +126,8 @@ class SelfContactTerm : public StepTerm {
   // put it, and the shipped pile gained energy without end once it lay (2.8 J at the start,
   // 38 J by step 700).
   Eigen::MatrixXd anchor_;
+  // anchor_ and the iterate separate() sweeps, row by row.
+  std::vector<Eigen::Vector3d> anchor_rows_, rows_;
   Eigen::MatrixXd heading_;  // #V by 3: an iterate before its bounds
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
