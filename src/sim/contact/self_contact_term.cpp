@@ -115,6 +115,7 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!on_) return false;
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
+  sweep_fresh_ = true;
   // An epoch outlives the step while the surface stays well within its bounds (a pile at rest,
   // a cloth sliding as a whole): its pairs and bounds still hold, and nothing is found again.
   const bool keep = epoch_open_ && x_.rows() == step.current.rows() &&
@@ -142,6 +143,7 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   proximity_.find(surface_, rest_neighbours_, x_, reach_, contact_reach * thickness_, found_,
                   bounds_);
   epoch_open_ = true;
+  sweep_fresh_ = true;
 
   const double mu = colliders_->friction();
   pairs_.resize(found_.size());
@@ -207,15 +209,25 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
                                   Eigen::MatrixXd& rhs, double* energy) {
   const Stopwatch stopwatch;
   double sum = 0.0;
+  // Added to packed rows of rhs (the same additions in the same order as to rhs itself).
+  bool packed = false;
   for (const Pair& pair : pairs_) {
     if (!(pair.force > 0.0)) continue;
+    if (!packed) {
+      pack(rhs, rhs_rows_);
+      packed = true;
+    }
     const Eigen::Vector3d force = pair.force * pair.features.normal;
     for (int k = 0; k < 4; ++k) {
       const double beta = pair.features.beta[k];
-      if (beta != 0.0) rhs.row(pair.features.vertex[k]) += beta * force.transpose();
+      if (beta != 0.0) rhs_rows_[pair.features.vertex[k]] += beta * force;
     }
     // The work the force does against the pair's gap, for the convergence trace.
     if (energy) sum -= pair.force * (pair.features.target - violation(pair, p, nullptr));
+  }
+  if (packed) {
+    for (Eigen::Index v = 0; v < rhs.rows(); ++v)
+      rhs.row(v) = rhs_rows_[v].transpose();
   }
   if (energy) *energy += sum;
   solve_ms_ += stopwatch.milliseconds();
@@ -262,17 +274,40 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
   // held back by Coulomb's μ times that push. The push also becomes the pair's force λ in the
   // next right-hand sides (what would have moved free masses as far), so that the global step
   // learns the contact instead of meeting it anew each iteration.
+  //
+  // A pair with no force that was open by a slack s when last looked at stays open, and so does
+  // nothing, until its vertices have travelled far enough to close it: g changes by at most
+  // Σₖ|βₖ| times how far vertex k moved, and each vertex's travel (the length of its path since
+  // the first sweep of the step or epoch) bounds that. Such pairs are passed over without a look
+  // (most of a resting pile's); everything else is as if every pair were looked at.
   const double mu = colliders_->friction();
   int pushed = 0;
   pack(p, rows_);
+  if (sweep_fresh_ || travel_.size() != rows_.size() || last_rows_.size() != rows_.size()) {
+    travel_.assign(rows_.size(), 0.0);
+    for (Pair& pair : pairs_)
+      pair.slack = -1.0;
+    sweep_fresh_ = false;
+  } else {
+    for (std::size_t v = 0; v < rows_.size(); ++v)
+      travel_[v] += (rows_[v] - last_rows_[v]).norm();
+  }
   for (Pair& pair : pairs_) {
     if (!(pair.stiffness > 0.0)) continue;
+    const SelfContactPair& f = pair.features;
+    double travel = 0.0;
+    for (int k = 0; k < 4; ++k)
+      travel += std::abs(f.beta[k]) * travel_[f.vertex[k]];
+    // A margin for rounding: a pair this close to closing is looked at.
+    if (pair.force == 0.0 && pair.slack > 0.0 && travel - pair.travel_at < 0.999 * pair.slack)
+      continue;
     Eigen::Vector3d slide;
     const double g = packed_violation(pair, mu > 0.0 ? &slide : nullptr);
     // λ follows the pair: up by what had to be pushed, down as the gap opens beyond its target.
     pair.force = std::max(0.0, pair.force + pair.stiffness * g);
+    pair.slack = -g;
+    pair.travel_at = travel;
     if (!(g > 0.0)) continue;
-    const SelfContactPair& f = pair.features;
     double weight = 0.0;
     for (int k = 0; k < 4; ++k) {
       const int v = f.vertex[k];
@@ -287,7 +322,9 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
     for (int k = 0; k < 4; ++k) {
       const int v = f.vertex[k];
       if (f.beta[k] == 0.0 || step.pinned[v]) continue;
-      rows_[v] += (f.beta[k] / step.rest.m(v)) * push;
+      const Eigen::Vector3d shift = (f.beta[k] / step.rest.m(v)) * push;
+      rows_[v] += shift;
+      travel_[v] += shift.norm();
     }
     ++pushed;
   }
@@ -304,6 +341,7 @@ bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p)
   heading_ = p;
   const int moved = clamp_to_bounds(x_, common_motion(p), bounds_, p);
   clamped_ += moved;
+  pack(p, last_rows_);  // the next sweep measures travel from here
   solve_ms_ += stopwatch.milliseconds();
   // The bounded iterate is free of crossings: the next epoch starts there, its reaches from where
   // the solve was heading.
@@ -392,7 +430,10 @@ std::size_t SelfContactTerm::memory_bytes() const {
          surface_.vertex_edges.memory_bytes() + surface_.vertex_triangles.memory_bytes() +
          rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
          matrix(x_) + matrix(anchor_) +
-         (anchor_rows_.capacity() + rows_.capacity()) * sizeof(Eigen::Vector3d) +
+         (anchor_rows_.capacity() + rows_.capacity() + last_rows_.capacity() +
+          rhs_rows_.capacity()) *
+             sizeof(Eigen::Vector3d) +
+         travel_.capacity() * sizeof(double) +
          (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +
          found_.capacity() * sizeof(SelfContactPair) + pairs_.capacity() * sizeof(Pair) +
          remembered_.capacity() * sizeof(std::pair<std::uint64_t, double>) +

@@ -91,6 +91,10 @@ class SelfContactTerm : public StepTerm {
     double force = 0.0;      // λ (N)
     double friction = 0.0;   // μλ̄ lagged for L-BFGS (N)
     std::uint64_t key = 0;
+    // separate()'s: −g when last looked at (m; not above 0 means look), and the pair's
+    // Σₖ|βₖ|·travel then (m).
+    double slack = -1.0;
+    double travel_at = 0.0;
   };
   void build_surface();
   // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
@@ -128,6 +132,12 @@ class SelfContactTerm : public StepTerm {
   Eigen::MatrixXd anchor_;
   // anchor_ and the iterate separate() sweeps, row by row.
   std::vector<Eigen::Vector3d> anchor_rows_, rows_;
+  // separate()'s: the iterate after the last limit_iterate, and each vertex's path length since
+  // the step's or epoch's first sweep (m).
+  std::vector<Eigen::Vector3d> last_rows_;
+  std::vector<Eigen::Vector3d> rhs_rows_;  // add_targets' packed right-hand side
+  std::vector<double> travel_;
+  bool sweep_fresh_ = true;
   Eigen::MatrixXd heading_;  // #V by 3: an iterate before its bounds
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
