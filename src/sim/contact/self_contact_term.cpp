@@ -161,10 +161,7 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
     }
     pair.stiffness = compliance > 0.0 ? gain / compliance : 0.0;
     pair.key = pair_key(pair.features);
-    const auto remembered =
-        std::lower_bound(remembered_.begin(), remembered_.end(), std::make_pair(pair.key, -1.0));
-    pair.force =
-        remembered != remembered_.end() && remembered->first == pair.key ? remembered->second : 0.0;
+    pair.force = remembered_force(pair.key);
     pair.friction = mu * pair.force;
   }
   ++epochs_;
@@ -399,11 +396,42 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
 
 void SelfContactTerm::end_step() {
   if (!on_) return;
-  remembered_.clear();
+  // An open-addressed table of (key, λ), about half full, probed linearly; a key met twice keeps
+  // the smaller λ.
+  std::size_t count = 0;
+  for (const Pair& pair : pairs_)
+    count += pair.force > 0.0;
+  std::size_t slots = 16;
+  while (slots < 2 * count)
+    slots *= 2;
+  remembered_.assign(slots, std::make_pair(std::uint64_t{0}, 0.0));  // λ = 0: an empty slot
   for (const Pair& pair : pairs_) {
-    if (pair.force > 0.0) remembered_.emplace_back(pair.key, pair.force);
+    if (!(pair.force > 0.0)) continue;
+    for (std::size_t slot = remembered_slot(pair.key);; slot = (slot + 1) & (slots - 1)) {
+      auto& entry = remembered_[slot];
+      if (entry.second == 0.0) {
+        entry = {pair.key, pair.force};
+        break;
+      }
+      if (entry.first == pair.key) {
+        entry.second = std::min(entry.second, pair.force);
+        break;
+      }
+    }
   }
-  std::sort(remembered_.begin(), remembered_.end());
+}
+
+std::size_t SelfContactTerm::remembered_slot(std::uint64_t key) const {
+  return static_cast<std::size_t>(key ^ (key >> 29)) & (remembered_.size() - 1);
+}
+
+double SelfContactTerm::remembered_force(std::uint64_t key) const {
+  if (remembered_.empty()) return 0.0;
+  for (std::size_t slot = remembered_slot(key);; slot = (slot + 1) & (remembered_.size() - 1)) {
+    const auto& entry = remembered_[slot];
+    if (entry.second == 0.0) return 0.0;
+    if (entry.first == key) return entry.second;
+  }
 }
 
 const std::vector<char>& SelfContactTerm::contact_vertices() const {

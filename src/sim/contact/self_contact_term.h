@@ -109,6 +109,9 @@ class SelfContactTerm : public StepTerm {
   // violation() of rows_ from anchor_rows_.
   double packed_violation(const Pair& pair, Eigen::Vector3d* slide) const;
   static void pack(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& rows);
+  // The λ last step's pair with this key ended with, or 0.
+  double remembered_force(std::uint64_t key) const;
+  std::size_t remembered_slot(std::uint64_t key) const;
   // One sweep pushing the pairs of p apart; returns how many it pushed.
   int separate(const StepContext& step, Eigen::MatrixXd& p);
 
@@ -142,7 +145,8 @@ class SelfContactTerm : public StepTerm {
   Eigen::VectorXd reach_, bounds_;
   std::vector<SelfContactPair> found_;
   std::vector<Pair> pairs_;
-  std::vector<std::pair<std::uint64_t, double>> remembered_;  // (key, λ), sorted, last step's
+  // Last step's (key, λ > 0) as a hash table; λ = 0 marks an empty slot (remembered_force).
+  std::vector<std::pair<std::uint64_t, double>> remembered_;
   std::vector<char> in_contact_, watched_, put_back_;
   static constexpr std::size_t max_motion_samples = 1024;
   mutable std::vector<double> motion_samples_;  // common_motion's buffer
