@@ -12,7 +12,6 @@ namespace {
 using wobble::SelfContactPair;
 using wobble::SelfContactProximity;
 using namespace wobble::testing;
-constexpr double gamma_ = SelfContactProximity::bound_fraction;
 
 TEST(SelfContactProximity, SameResultsOnOneAndSeveralThreads) {
   const Mesh mesh = accordion(30, 3);
@@ -75,13 +74,14 @@ TEST(SelfContactProximity, AQueryThatStopsFreezesItsNeighbourhood) {
   const Found found(mesh, constant_reach(mesh, 0.01), 0.005);
   EXPECT_EQ(found.bounds(3 * stack), 0.0);
   for (int v = 3 * stack + 3; v < 3 * stack + 6; ++v)
-    EXPECT_NEAR(found.bounds(v), gamma_ * 0.01, 1e-15);
+    EXPECT_NEAR(found.bounds(v), found.bound(0.01), 1e-15);
   // With fewer than max_met triangles below, the probe is trusted with half its distance.
   Mesh few;
   for (int k = 0; k < 100; ++k)
     few.add_triangle({0, 0, 0}, {0.01, 0, 0}, {0, 0.01, 0});
   add_probe(few, {0.002, 0.002, 0.003});
-  EXPECT_NEAR(Found(few, constant_reach(few, 0.01), 0.005).bounds(300), gamma_ * 0.0015, 1e-15);
+  const Found near(few, constant_reach(few, 0.01), 0.005);
+  EXPECT_NEAR(near.bounds(300), near.bound(0.0015), 1e-15);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // sim/contact/self_contact_proximity.h.
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -62,12 +63,18 @@ struct Found {
   Eigen::MatrixXd x;
   std::vector<SelfContactPair> pairs;
   Eigen::VectorXd bounds;
+  double floor = 0.0;  // the find's floor f (m)
   Found(const Mesh& mesh, const Eigen::VectorXd& reach, double contact_distance,
         double rest_reach = 0.0, wobble::WorkerPool* pool = nullptr)
       : surface(mesh.network()), x(mesh.x()) {
     rest.find(surface, rest_reach);
     SelfContactProximity proximity(pool);
     proximity.find(surface, rest, x, reach, contact_distance, pairs, bounds);
+    floor = proximity.floor();
+  }
+  // The bound the formula gives a vertex whose min(R, ½d) is `half` (m): γ·max(0, half − ½f).
+  double bound(double half) const {
+    return SelfContactProximity::bound_fraction * std::max(0.0, half - 0.5 * floor);
   }
 };
 

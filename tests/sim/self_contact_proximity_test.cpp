@@ -21,7 +21,6 @@ using wobble::SelfContactPair;
 using wobble::SelfContactProximity;
 using wobble::vertex_row;
 using namespace wobble::testing;
-constexpr double gamma_ = SelfContactProximity::bound_fraction;
 
 TEST(SelfContactProximity, AVertexNearATriangleIsOnePairWithItsClosestPoint) {
   for (const double height : {0.004, 0.006}) {
@@ -128,8 +127,8 @@ TEST(SelfContactProximity, RestNeighboursAreNoPairsButLowerTheBounds) {
   EXPECT_EQ(strangers.pairs.size(), 1u);
   EXPECT_TRUE(neighbours.pairs.empty());
   for (const Found* found : {&strangers, &neighbours}) {
-    EXPECT_NEAR(found->bounds(3), gamma_ * 0.002, 1e-15);  // half the 4 mm, not the 1 cm reach
-    EXPECT_NEAR(found->bounds(0), gamma_ * 0.002, 1e-15);  // a corner of the triangle below
+    EXPECT_NEAR(found->bounds(3), found->bound(0.002), 1e-15);  // half the 4 mm, not the 1 cm reach
+    EXPECT_NEAR(found->bounds(0), found->bound(0.002), 1e-15);  // a corner of the triangle below
   }
 }
 
@@ -142,7 +141,7 @@ TEST(SelfContactProximity, AFarVertexMayMoveItsReach) {
       (Eigen::VectorXd(7) << 0.01, 0.02, 0.03, 0.0, 0.05, 0.1, 1).finished();
   const Found found(mesh, reach, 0.005);
   for (int v = 0; v < 6; ++v)
-    EXPECT_NEAR(found.bounds(v), gamma_ * reach(v), 1e-15) << v;
+    EXPECT_NEAR(found.bounds(v), found.bound(reach(v)), 1e-15) << v;
   EXPECT_EQ(found.bounds(6), std::numeric_limits<double>::infinity());
 }
 
@@ -161,8 +160,8 @@ TEST(SelfContactProximity, ALongReachOnEitherSideFindsThePair) {
     const Found found(mesh, reach, 0.002);
     EXPECT_TRUE(found.pairs.empty());  // 4 mm: beyond the contact distance
     // Half the 4 mm, or the vertex's own 1 mm reach where that is less.
-    EXPECT_NEAR(found.bounds(3), gamma_ * (probe_reaches ? 0.002 : 0.001), 1e-15);
-    EXPECT_NEAR(found.bounds(0), gamma_ * (probe_reaches ? 0.001 : 0.002), 1e-15);
+    EXPECT_NEAR(found.bounds(3), found.bound(probe_reaches ? 0.002 : 0.001), 1e-15);
+    EXPECT_NEAR(found.bounds(0), found.bound(probe_reaches ? 0.001 : 0.002), 1e-15);
   }
 }
 
@@ -233,7 +232,7 @@ TEST(SelfContactProximity, BoundsKeepEveryPairApart) {
     EXPECT_GT(pairs, mixed ? 200 : 1000) << "the reaches should find many pairs";
     // The same distances by the same formulas: equal to rounding.
     for (int v = 0; v < found.x.rows(); ++v)
-      EXPECT_NEAR(b(v), 0.5 * gamma_ * nearest(v), 1e-15) << v;
+      EXPECT_NEAR(b(v), found.bound(0.5 * nearest(v)), 1e-15) << v;
   }
 }
 
@@ -282,6 +281,55 @@ TEST(SelfContactProximity, ClampedMotionNeverCrosses) {
     EXPECT_EQ(moved, beyond);
     EXPECT_GT(moved, 0);
   }
+}
+
+// Two small triangles 4 mm apart, a kilometre from the origin (where a coordinate rounds to about
+// 10⁻¹³ m), the upper one pushed 1 cm down through the lower at every epoch and held back by
+// the bounds: the gap shrinks epoch after epoch, but never below the floor (without one it keeps
+// halving, below the floor by epoch 21, on towards the rounding of the coordinates, where
+// rounding alone decides on which side of a triangle a vertex lies).
+TEST(SelfContactProximity, APairPressedTogetherEpochAfterEpochStaysAboveTheFloor) {
+  const Eigen::Vector3d far(1000.0, 1000.0, 1000.0);
+  Mesh mesh;
+  mesh.add_triangle(far, far + Eigen::Vector3d(0.01, 0, 0), far + Eigen::Vector3d(0, 0.01, 0));
+  mesh.add_triangle(far + Eigen::Vector3d(0.002, 0.002, 0.004),
+                    far + Eigen::Vector3d(0.008, 0.002, 0.004),
+                    far + Eigen::Vector3d(0.002, 0.008, 0.004));
+  Eigen::MatrixXi F(2, 3);
+  F << 0, 1, 2, 3, 4, 5;
+  const Eigen::VectorXd reach = constant_reach(mesh, 0.01);
+  Eigen::MatrixXd x = mesh.x();
+  const wobble::SelfCollisionSurface surface(mesh.network());
+  wobble::RestNeighbours rest;
+  rest.find(surface, 0.0);
+  SelfContactProximity proximity;
+  std::vector<SelfContactPair> pairs;
+  Eigen::VectorXd bounds;
+  const auto gap = [&](const Eigen::MatrixXd& at) {
+    double least = std::numeric_limits<double>::infinity();
+    for (int v = 3; v < 6; ++v)
+      least = std::min(least, vertex_triangle_distance(at, v, Eigen::Vector3i(0, 1, 2)));
+    for (int v = 0; v < 3; ++v)
+      least = std::min(least, vertex_triangle_distance(at, v, Eigen::Vector3i(3, 4, 5)));
+    for (int e = 0; e < 3; ++e) {
+      for (int f = 0; f < 3; ++f)
+        least = std::min(least, edge_edge_distance(at, e, (e + 1) % 3, 3 + f, 3 + (f + 1) % 3));
+    }
+    return least;
+  };
+  double floor = 0.0;
+  for (int epoch = 0; epoch < 200; ++epoch) {
+    proximity.find(surface, rest, x, reach, 0.01, pairs, bounds);
+    floor = proximity.floor();
+    Eigen::MatrixXd p = x;
+    p.col(2).tail(3).array() -= 0.01;
+    wobble::clamp_to_bounds(x, Eigen::Vector3d::Zero(), bounds, p);
+    x = p;
+    ASSERT_GE(gap(x), 0.9 * floor) << "epoch " << epoch;
+    ASSERT_EQ(wobble::testing::count_mesh_crossings(x, F), 0) << "epoch " << epoch;
+  }
+  EXPECT_GT(floor, 0.0);
+  EXPECT_LT(gap(x), 2.0 * floor) << "it should have been pressed down to the floor";
 }
 
 TEST(SelfContactProximity, ClampLeavesFreeVerticesAndSanitizesBounds) {

@@ -67,6 +67,14 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   contact_distance_ = contact_distance > 0.0 ? contact_distance : 0.0;
   prepare(x, reach);
   const int vertex_count = static_cast<int>(surface.vertices.size());
+  // The closest any two features may come: far above the rounding of the coordinates (else a
+  // pair pressed together, its bounds shrinking with its distance, comes within rounding of
+  // touching, and rounding alone carries an edge through a triangle), far below the thickness.
+  double magnitude = 0.0;
+  for (const int v : surface.vertices)
+    magnitude = std::max(magnitude, points_[v].cwiseAbs().maxCoeff());
+  floor_ = std::max(separation_share * contact_distance_,
+                    rounding_margin * std::numeric_limits<double>::epsilon() * magnitude);
 
   // A pair can lower no bound unless it is closer than the largest of its vertices' needs (the
   // seeds, an upper bound on each nearest), and is listed only closer than the contact distance:
@@ -138,7 +146,7 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
 
   bounds.setConstant(x.rows(), infinity);
   for (const int v : surface.vertices)
-    bounds(v) = 0.5 * bound_fraction * nearest(v);
+    bounds(v) = 0.5 * bound_fraction * std::max(nearest(v) - floor_, 0.0);
 }
 
 void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach) {

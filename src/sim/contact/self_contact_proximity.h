@@ -36,9 +36,10 @@ namespace wobble {
 // first edge's lower vertex, then by that edge.
 //
 // Bounds b (#V, m), with reaches R (#V, m) and γ = bound_fraction:
-//   b_v = γ · min(R_v, ½ d_v, ½ min_{t ∋ v} d_t, ½ min_{e ∋ v} d_e)
+//   b_v = γ · max(0, min(R_v, ½ d_v, ½ min_{t ∋ v} d_t, ½ min_{e ∋ v} d_e) − ½ f)
 // d_v: distance from v to its nearest found triangle not on it; d_t: from triangle t to its
-// nearest found vertex not on it; d_e: from edge e to its nearest found edge sharing no vertex.
+// nearest found vertex not on it; d_e: from edge e to its nearest found edge sharing no vertex;
+// f: a floor far below the thickness and far above rounding (floor()).
 // A pair is found when its boxes at x, grown by the reaches, overlap: a vertex's point by R_v,
 // a triangle's box by the largest R of its vertices, an edge's by the largest of its two. Every
 // found pair counts, the rest neighbours and pairs beyond max_pairs_per_feature included.
@@ -76,6 +77,10 @@ class SelfContactProximity {
   static constexpr int max_pairs_per_feature = 32;
   static constexpr int max_met = 1024;
   static constexpr double bound_fraction = 0.9;  // γ
+  // The floor f below which no pair is let come (m): this share of the contact distance, and
+  // at least rounding_margin roundings of the largest coordinate (see floor()).
+  static constexpr double separation_share = 1e-6;
+  static constexpr double rounding_margin = 1024.0;
 
   // pool: where the queries run; null for WorkerPool::shared().
   explicit SelfContactProximity(WorkerPool* pool = nullptr) : pool_(pool) {}
@@ -90,6 +95,12 @@ class SelfContactProximity {
             const Eigen::MatrixXd& x, const Eigen::VectorXd& reach, double contact_distance,
             std::vector<SelfContactPair>& pairs, Eigen::VectorXd& bounds);
 
+  // The last find()'s floor f (m): every bound is γ/2 × max(0, its nearest distance − f), so a
+  // found pair at distance d ≥ f stays at least γf apart. Without it a pair pressed together
+  // comes, epoch after epoch, within the rounding of the coordinates of touching, where rounding
+  // alone carries an edge through a triangle (the sphere wrap crossed itself so, every vertex
+  // within its bound, pairs 10⁻¹⁶ m apart at coordinates of 3 m).
+  double floor() const { return floor_; }
   // Whether the last find() had a query meet more than max_met boxes (and so froze vertices).
   bool saturated() const { return saturated_; }
   // Memory held by the buffers (bytes).
@@ -175,6 +186,7 @@ class SelfContactProximity {
   std::vector<Chunk> chunks_;
   SharingPayoff vertex_payoff_, edge_payoff_, seed_payoff_, frozen_payoff_;
   bool saturated_ = false;
+  double floor_ = 0.0;
 };
 
 // Moves p so that every vertex v with a finite bound satisfies ‖(p_v − x_v) − common‖ ≤ b_v, by
