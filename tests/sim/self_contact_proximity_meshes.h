@@ -63,7 +63,8 @@ struct Found {
   Eigen::MatrixXd x;
   std::vector<SelfContactPair> pairs;
   Eigen::VectorXd bounds;
-  double floor = 0.0;  // the find's floor f (m)
+  double floor = 0.0;   // the find's floor f (m)
+  bool covers = false;  // covers_every_pair()
   Found(const Mesh& mesh, const Eigen::VectorXd& reach, double contact_distance,
         double rest_reach = 0.0, wobble::WorkerPool* pool = nullptr)
       : surface(mesh.network()), x(mesh.x()) {
@@ -71,6 +72,7 @@ struct Found {
     SelfContactProximity proximity(pool);
     proximity.find(surface, rest, x, reach, contact_distance, pairs, bounds);
     floor = proximity.floor();
+    covers = proximity.covers_every_pair();
   }
   // The bound the formula gives a vertex whose min(R, ½d) is `half` (m): γ·max(0, half − ½f).
   double bound(double half) const {

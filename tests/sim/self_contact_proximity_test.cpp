@@ -332,6 +332,23 @@ TEST(SelfContactProximity, APairPressedTogetherEpochAfterEpochStaysAboveTheFloor
   EXPECT_LT(gap(x), 2.0 * floor) << "it should have been pressed down to the floor";
 }
 
+// Its bounds keep every pair apart, so the caller may skip its crossing guard, except where a
+// found pair is closer than the floor (there rounding may decide), or a query stopped.
+TEST(SelfContactProximity, SaysWhetherItsBoundsKeepEveryPairApart) {
+  for (const double height : {0.004, 1e-6, 1e-12}) {
+    Mesh mesh;
+    mesh.add_triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    add_probe(mesh, {0.2, 0.3, height});
+    const Found found(mesh, constant_reach(mesh, 0.01), 0.005);
+    ASSERT_GT(found.floor, 1e-12);
+    ASSERT_LT(found.floor, 1e-6);
+    EXPECT_EQ(found.covers, height > found.floor) << height;
+    if (height < found.floor) {
+      EXPECT_EQ(found.bounds(3), 0.0);
+    }
+  }
+}
+
 TEST(SelfContactProximity, ClampLeavesFreeVerticesAndSanitizesBounds) {
   const Eigen::MatrixXd x = Eigen::MatrixXd::Zero(3, 3);
   Eigen::MatrixXd p = Eigen::MatrixXd::Ones(3, 3);

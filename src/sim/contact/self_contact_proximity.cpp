@@ -145,8 +145,11 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   if (saturated_) freeze_near_saturated_queries(cell);
 
   bounds.setConstant(x.rows(), infinity);
-  for (const int v : surface.vertices)
+  under_floor_ = false;
+  for (const int v : surface.vertices) {
     bounds(v) = 0.5 * bound_fraction * std::max(nearest(v) - floor_, 0.0);
+    under_floor_ = under_floor_ || nearest(v) < floor_;
+  }
 }
 
 void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach) {

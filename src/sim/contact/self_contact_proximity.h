@@ -103,6 +103,10 @@ class SelfContactProximity {
   double floor() const { return floor_; }
   // Whether the last find() had a query meet more than max_met boxes (and so froze vertices).
   bool saturated() const { return saturated_; }
+  // Whether the last find()'s bounds keep every pair from crossing: no query stopped (the pairs
+  // among frozen vertices went unexamined) and no found pair was closer than the floor (where
+  // rounding may decide).
+  bool covers_every_pair() const { return !saturated_ && !under_floor_; }
   // Memory held by the buffers (bytes).
   std::size_t memory_bytes() const;
 
@@ -185,7 +189,7 @@ class SelfContactProximity {
   std::vector<char> feature_frozen_;  // #F + #E
   std::vector<Chunk> chunks_;
   SharingPayoff vertex_payoff_, edge_payoff_, seed_payoff_, frozen_payoff_;
-  bool saturated_ = false;
+  bool saturated_ = false, under_floor_ = false;
   double floor_ = 0.0;
 };
 

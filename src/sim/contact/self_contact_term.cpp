@@ -116,11 +116,13 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
   sweep_fresh_ = true;
+  step_covered_ = epoch_covered_;  // a kept epoch's; a new one's is ANDed in by start_epoch
   // An epoch outlives the step while the surface stays well within its bounds (a pile at rest,
   // a cloth sliding as a whole): its pairs and bounds still hold, and nothing is found again.
   const bool keep = epoch_open_ && x_.rows() == step.current.rows() &&
                     within(step.current, keep_fraction) && within(first, keep_fraction);
   if (!keep) {
+    step_covered_ = true;
     x_ = step.current;
     anchor_ = x_;
     pack(anchor_, anchor_rows_);
@@ -144,6 +146,8 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
                   bounds_);
   epoch_open_ = true;
   sweep_fresh_ = true;
+  epoch_covered_ = proximity_.covers_every_pair();
+  step_covered_ = step_covered_ && epoch_covered_;
 
   const double mu = colliders_->friction();
   pairs_.resize(found_.size());
@@ -372,7 +376,13 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
     }
   }
   solve_ms_ += stopwatch.milliseconds();
-  // The last resort: a crossing the bounds did not prevent (a pinned vertex dragged through).
+  // The last resort, where the bounds do not keep every pair apart: a search stopped (the pairs
+  // among the vertices it froze went unexamined), or a pair was found closer than the floor
+  // (where rounding may decide). Elsewhere every vertex now lies within its bound of every epoch
+  // this step, so no edge passed through a triangle, and the guard would look for nothing.
+  repaired_ = 0;
+  guard_ms_ = 0.0;
+  if (step_covered_) return;
   const Stopwatch guard;
   inverse_mass_.resize(n);
   for (Eigen::Index v = 0; v < n; ++v)

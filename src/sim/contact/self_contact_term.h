@@ -121,6 +121,9 @@ class SelfContactTerm : public StepTerm {
   double thickness_ = 0.0;
   bool built_ = false;
   bool epoch_open_ = false;  // x_, the pairs and bounds describe an epoch still in force
+  // Whether the epoch's search, and every search this step, kept every pair apart
+  // (SelfContactProximity::covers_every_pair): the guard is then skipped.
+  bool epoch_covered_ = false, step_covered_ = false;
   SelfCollisionSurface surface_;
   RestNeighbours rest_neighbours_;
   SelfContactProximity proximity_;
