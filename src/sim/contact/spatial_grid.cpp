@@ -25,46 +25,53 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double ce
     ++counts[level];
   }
   double size = cell_;
+  std::size_t slot_total = 0;
+  int entry_total = 0;
   for (int k = 0; k < max_levels; ++k, size *= 4.0) {
     Level& level = levels_[k];
     level.cell = size;
     level.slots = 1;
-    while (level.slots < 2 * counts[k] + 1)
+    // A level with no box keeps one slot (looked at by no query).
+    while (counts[k] > 0 && level.slots < 2 * counts[k] + 1)
       level.slots *= 2;
-    level.start.assign(level.slots + 1, 0);
-    level.entries.resize(counts[k]);
+    level.first_slot = slot_total;
+    slot_total += level.slots + 1;
+    level.first_entry = entry_total;
+    level.count = static_cast<int>(counts[k]);
+    entry_total += level.count;
   }
+  start_.assign(slot_total, 0);
+  fill_.resize(slot_total);
+  entries_.resize(entry_total);
   // Two passes of a counting sort per level: how many boxes each slot gets, then the boxes.
   const auto centre_cell = [&](const Eigen::AlignedBox3d& box, const Level& level) {
     return Eigen::Array3i(((box.center().array()) / level.cell).floor().cast<int>());
   };
   for (std::size_t id = 0; id < boxes.size(); ++id) {
     if (level_of_[id] < 0) continue;
-    Level& level = levels_[level_of_[id]];
+    const Level& level = levels_[level_of_[id]];
     const Eigen::Array3i c = centre_cell(boxes[id], level);
-    ++level.start[cell_slot(c.x(), c.y(), c.z(), level.slots) + 1];
+    ++start_[level.first_slot + cell_slot(c.x(), c.y(), c.z(), level.slots) + 1];
   }
-  for (int k = 0; k < max_levels; ++k) {
-    Level& level = levels_[k];
+  for (const Level& level : levels_) {
+    int* start = start_.data() + level.first_slot;
+    start[0] = level.first_entry;
     for (std::uint32_t s = 0; s < level.slots; ++s)
-      level.start[s + 1] += level.start[s];
-    if (counts[k] > 0) level.fill.assign(level.start.begin(), level.start.end() - 1);
+      start[s + 1] += start[s];
+    std::copy(start, start + level.slots + 1, fill_.begin() + level.first_slot);
   }
   for (std::size_t id = 0; id < boxes.size(); ++id) {
     if (level_of_[id] < 0) continue;
-    Level& level = levels_[level_of_[id]];
+    const Level& level = levels_[level_of_[id]];
     const Eigen::Array3i c = centre_cell(boxes[id], level);
-    const std::uint32_t slot = cell_slot(c.x(), c.y(), c.z(), level.slots);
-    level.entries[level.fill[slot]++] = Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
+    const std::size_t slot = level.first_slot + cell_slot(c.x(), c.y(), c.z(), level.slots);
+    entries_[fill_[slot]++] = Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
   }
 }
 
 std::size_t SpatialGrid::memory_bytes() const {
-  std::size_t bytes = level_of_.capacity();
-  for (const Level& level : levels_)
-    bytes += (level.start.capacity() + level.fill.capacity()) * sizeof(int) +
-             level.entries.capacity() * sizeof(Entry);
-  return bytes;
+  return level_of_.capacity() + (start_.capacity() + fill_.capacity()) * sizeof(int) +
+         entries_.capacity() * sizeof(Entry);
 }
 
 }  // namespace wobble

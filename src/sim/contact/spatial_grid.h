@@ -36,15 +36,16 @@ class SpatialGrid {
   void for_each_overlapping(const Eigen::AlignedBox3d& box, Visit&& visit) const {
     if (box.isEmpty()) return;
     for (const Level& level : levels_) {
-      if (level.entries.empty()) continue;
+      if (level.count == 0) continue;
       const double half = 0.5 * level.cell;
       const Eigen::Array3d lo = ((box.min().array() - half) / level.cell).floor();
       const Eigen::Array3d hi = ((box.max().array() + half) / level.cell).floor();
       const double cells = (hi - lo + 1.0).prod();
-      if (!(cells <= static_cast<double>(level.entries.size())) ||
+      if (!(cells <= static_cast<double>(level.count)) ||
           !(lo.abs().maxCoeff() < 1e9 && hi.abs().maxCoeff() < 1e9)) {
         // Cheaper (or only possible) to look at every box of the level once.
-        for (const Entry& entry : level.entries) {
+        for (int s = level.first_entry; s < level.first_entry + level.count; ++s) {
+          const Entry& entry = entries_[s];
           if (box.intersects(entry.box) && !visit(entry.id)) return;
         }
         continue;
@@ -53,9 +54,9 @@ class SpatialGrid {
       for (int x = low.x(); x <= high.x(); ++x) {
         for (int y = low.y(); y <= high.y(); ++y) {
           for (int z = low.z(); z <= high.z(); ++z) {
-            const std::uint32_t slot = cell_slot(x, y, z, level.slots);
-            for (int s = level.start[slot]; s < level.start[slot + 1]; ++s) {
-              const Entry& entry = level.entries[s];
+            const std::size_t slot = level.first_slot + cell_slot(x, y, z, level.slots);
+            for (int s = start_[slot]; s < start_[slot + 1]; ++s) {
+              const Entry& entry = entries_[s];
               // The slot holds every cell that hashes to it: only this cell's boxes.
               if (entry.x != x || entry.y != y || entry.z != z) continue;
               if (box.intersects(entry.box) && !visit(entry.id)) return;
@@ -75,12 +76,13 @@ class SpatialGrid {
     int id;
     int x, y, z;  // the cell of the box's centre
   };
+  // The levels share three buffers (each level its own range in them), so that memory follows
+  // the boxes filed now rather than the most each level ever held.
   struct Level {
     double cell = 1.0;
-    std::uint32_t slots = 1;  // a power of two
-    std::vector<int> start;   // slots + 1: where each slot's entries begin
-    std::vector<Entry> entries;
-    std::vector<int> fill;  // a build's next free entry per slot, kept to allocate nothing
+    std::uint32_t slots = 1;         // a power of two
+    std::size_t first_slot = 0;      // its slots + 1 starts in start_, its slots in fill_
+    int first_entry = 0, count = 0;  // its range of entries_
   };
   static std::uint32_t cell_slot(int x, int y, int z, std::uint32_t slots) {
     // Three large primes, multiplied and mixed: neighbouring cells land in unrelated slots.
@@ -92,6 +94,9 @@ class SpatialGrid {
 
   double cell_ = 1.0;
   std::array<Level, max_levels> levels_;
+  std::vector<int> start_;      // per level, slots + 1: where each slot's entries begin in entries_
+  std::vector<int> fill_;       // per level, slots: a build's next free entry per slot
+  std::vector<Entry> entries_;  // level by level
   std::vector<std::int8_t> level_of_;  // #boxes: its level, −1 when not filed
 };
 
