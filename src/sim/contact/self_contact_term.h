@@ -44,7 +44,8 @@ namespace wobble {
 // same limit_iterate after each accepted step.
 // After the solve (project): the bounds once more (the colliders' projection may have moved a
 // vertex), and the crossing guard (SelfCrossingGuard) as the last resort, reporting how many
-// vertices it put back.
+// vertices it put back, where the bounds do not keep every pair apart (a search stopped, or found
+// a pair closer than its floor: SelfContactProximity::covers_every_pair).
 class SelfContactTerm : public StepTerm {
  public:
   static constexpr double gain = 0.5;  // η: κ as a share of the pair's inertia
