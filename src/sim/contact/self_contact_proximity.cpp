@@ -155,10 +155,7 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
 void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach) {
   const SelfCollisionSurface& surface = *surface_;
   const int n = static_cast<int>(x.rows());
-  // Packed rows: a column-major x would cost three cache lines a vertex in the queries.
-  points_.resize(n);
-  for (int v = 0; v < n; ++v)
-    points_[v] = vertex_row(x, v);
+  pack_rows(x, points_);
   Eigen::AlignedBox3d whole;
   for (const int v : surface.vertices)
     whole.extend(points_[v]);

@@ -1,8 +1,6 @@
 #include "sim/contact/self_contact_term.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 
 #include "sim/contact/vertex_row.h"
 #include "sim/instruments/stopwatch.h"
@@ -124,8 +122,7 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
   if (!keep) {
     step_covered_ = true;
     x_ = step.current;
-    anchor_ = x_;
-    pack(anchor_, anchor_rows_);
+    pack_rows(x_, anchor_);
     start_epoch(step, first);
   }
   return false;
@@ -170,188 +167,6 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   }
   ++epochs_;
   detection_ms_ += stopwatch.milliseconds();
-}
-
-double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
-                                  Eigen::Vector3d* slide) const {
-  const SelfContactPair& f = pair.features;
-  Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k) {
-    q += f.beta[k] * vertex_row(p, f.vertex[k]);
-    if (slide) {
-      moved += f.beta[k] * (vertex_row(p, f.vertex[k]) - vertex_row(anchor_, f.vertex[k]));
-    }
-  }
-  if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
-  return f.target - q.dot(f.normal);
-}
-
-void SelfContactTerm::pack(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& rows) {
-  rows.resize(m.rows());
-  for (Eigen::Index v = 0; v < m.rows(); ++v)
-    rows[v] = vertex_row(m, static_cast<int>(v));
-}
-
-double SelfContactTerm::packed_violation(const Pair& pair, Eigen::Vector3d* slide) const {
-  // violation() on packed rows (a column-major matrix costs three cache lines a vertex): the
-  // same sums in the same order, so the same numbers.
-  const SelfContactPair& f = pair.features;
-  Eigen::Vector3d q = Eigen::Vector3d::Zero(), moved = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 4; ++k) {
-    const Eigen::Vector3d& at = rows_[f.vertex[k]];
-    q += f.beta[k] * at;
-    if (slide) moved += f.beta[k] * (at - anchor_rows_[f.vertex[k]]);
-  }
-  if (slide) *slide = moved - moved.dot(f.normal) * f.normal;
-  return f.target - q.dot(f.normal);
-}
-
-void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& p,
-                                  Eigen::MatrixXd& rhs, double* energy) {
-  const Stopwatch stopwatch;
-  double sum = 0.0;
-  // Added to packed rows of rhs (the same additions in the same order as to rhs itself).
-  bool packed = false;
-  for (const Pair& pair : pairs_) {
-    if (!(pair.force > 0.0)) continue;
-    if (!packed) {
-      pack(rhs, rhs_rows_);
-      packed = true;
-    }
-    const Eigen::Vector3d force = pair.force * pair.features.normal;
-    for (int k = 0; k < 4; ++k) {
-      const double beta = pair.features.beta[k];
-      if (beta != 0.0) rhs_rows_[pair.features.vertex[k]] += beta * force;
-    }
-    // The work the force does against the pair's gap, for the convergence trace.
-    if (energy) sum -= pair.force * (pair.features.target - violation(pair, p, nullptr));
-  }
-  if (packed) {
-    for (Eigen::Index v = 0; v < rhs.rows(); ++v)
-      rhs.row(v) = rhs_rows_[v].transpose();
-  }
-  if (energy) *energy += sum;
-  solve_ms_ += stopwatch.milliseconds();
-}
-
-double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
-                                   Eigen::MatrixXd* gradient) const {
-  if (!on_) return 0.0;
-  // Huber's width: slides below it are held as by a stiff spring (static friction).
-  const double epsilon = 0.01 * thickness_;
-  double energy = 0.0;
-  for (const Pair& pair : pairs_) {
-    if (!(pair.stiffness > 0.0)) continue;
-    Eigen::Vector3d slide;
-    const double g = violation(pair, p, pair.friction > 0.0 ? &slide : nullptr);
-    const double pressed = std::max(0.0, g + pair.force / pair.stiffness);
-    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // −∂E/∂q, q the pair's Σβₖpₖ
-    if (pressed > 0.0) {
-      energy += 0.5 * pair.stiffness * pressed * pressed;
-      force = pair.stiffness * pressed * pair.features.normal;
-    }
-    if (pair.friction > 0.0) {
-      const double length = slide.norm();
-      if (length < epsilon) {
-        energy += pair.friction * length * length / (2.0 * epsilon);
-        force -= (pair.friction / epsilon) * slide;
-      } else {
-        energy += pair.friction * (length - 0.5 * epsilon);
-        force -= (pair.friction / length) * slide;
-      }
-    }
-    if (!gradient) continue;
-    for (int k = 0; k < 4; ++k) {
-      const double beta = pair.features.beta[k];
-      if (beta != 0.0) gradient->row(pair.features.vertex[k]) -= beta * force.transpose();
-    }
-  }
-  return energy;
-}
-
-int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
-  // One Gauss-Seidel sweep over the pairs: each pair short of its gap is pushed apart along its
-  // normal, its vertices weighted by inverse mass, and its closest points' slide over the step
-  // held back by Coulomb's μ times that push. The push also becomes the pair's force λ in the
-  // next right-hand sides (what would have moved free masses as far), so that the global step
-  // learns the contact instead of meeting it anew each iteration.
-  //
-  // A pair with no force that was open by a slack s when last looked at stays open, and so does
-  // nothing, until its vertices have travelled far enough to close it: g changes by at most
-  // Σₖ|βₖ| times how far vertex k moved, and each vertex's travel (the length of its path since
-  // the first sweep of the step or epoch) bounds that. Such pairs are passed over without a look
-  // (most of a resting pile's); everything else is as if every pair were looked at.
-  const double mu = colliders_->friction();
-  int pushed = 0;
-  pack(p, rows_);
-  if (sweep_fresh_ || travel_.size() != rows_.size() || last_rows_.size() != rows_.size()) {
-    travel_.assign(rows_.size(), 0.0);
-    for (Pair& pair : pairs_)
-      pair.slack = -1.0;
-    sweep_fresh_ = false;
-  } else {
-    for (std::size_t v = 0; v < rows_.size(); ++v)
-      travel_[v] += (rows_[v] - last_rows_[v]).norm();
-  }
-  for (Pair& pair : pairs_) {
-    if (!(pair.stiffness > 0.0)) continue;
-    const SelfContactPair& f = pair.features;
-    double travel = 0.0;
-    for (int k = 0; k < 4; ++k)
-      travel += std::abs(f.beta[k]) * travel_[f.vertex[k]];
-    // A margin for rounding: a pair this close to closing is looked at.
-    if (pair.force == 0.0 && pair.slack > 0.0 && travel - pair.travel_at < 0.999 * pair.slack)
-      continue;
-    Eigen::Vector3d slide;
-    const double g = packed_violation(pair, mu > 0.0 ? &slide : nullptr);
-    // λ follows the pair: up by what had to be pushed, down as the gap opens beyond its target.
-    pair.force = std::max(0.0, pair.force + pair.stiffness * g);
-    pair.slack = -g;
-    pair.travel_at = travel;
-    if (!(g > 0.0)) continue;
-    double weight = 0.0;
-    for (int k = 0; k < 4; ++k) {
-      const int v = f.vertex[k];
-      if (f.beta[k] != 0.0 && !step.pinned[v]) weight += f.beta[k] * f.beta[k] / step.rest.m(v);
-    }
-    if (!(weight > 0.0)) continue;
-    Eigen::Vector3d push = (g / weight) * f.normal;
-    if (mu > 0.0) {
-      const double length = slide.norm();
-      if (length > 0.0) push -= (std::min(mu * g, length) / length / weight) * slide;
-    }
-    for (int k = 0; k < 4; ++k) {
-      const int v = f.vertex[k];
-      if (f.beta[k] == 0.0 || step.pinned[v]) continue;
-      const Eigen::Vector3d shift = (f.beta[k] / step.rest.m(v)) * push;
-      rows_[v] += shift;
-      travel_[v] += shift.norm();
-    }
-    ++pushed;
-  }
-  if (pushed > 0) {
-    for (Eigen::Index v = 0; v < p.rows(); ++v)
-      p.row(v) = rows_[v].transpose();
-  }
-  return pushed;
-}
-
-bool SelfContactTerm::limit_iterate(const StepContext& step, Eigen::MatrixXd& p) {
-  const Stopwatch stopwatch;
-  const int pushed = separate(step, p);
-  heading_ = p;
-  const int moved = clamp_to_bounds(x_, common_motion(p), bounds_, p);
-  clamped_ += moved;
-  pack(p, last_rows_);  // the next sweep measures travel from here
-  solve_ms_ += stopwatch.milliseconds();
-  // The bounded iterate is free of crossings: the next epoch starts there, its reaches from where
-  // the solve was heading.
-  if (moved > 0 && epochs_ < max_epochs) {
-    x_ = p;
-    start_epoch(step, heading_);
-  }
-  // Whether p moved: L-BFGS then evaluates it again and starts its history anew.
-  return pushed > 0 || moved > 0;
 }
 
 void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
@@ -467,9 +282,8 @@ std::size_t SelfContactTerm::memory_bytes() const {
   return matrix(surface_.rest) + (surface_.triangles.size() + surface_.edges.size()) * sizeof(int) +
          surface_.vertex_edges.memory_bytes() + surface_.vertex_triangles.memory_bytes() +
          rest_neighbours_.memory_bytes() + proximity_.memory_bytes() + guard_.memory_bytes() +
-         matrix(x_) + matrix(anchor_) +
-         (anchor_rows_.capacity() + rows_.capacity() + last_rows_.capacity() +
-          rhs_rows_.capacity()) *
+         matrix(x_) +
+         (anchor_.capacity() + rows_.capacity() + last_rows_.capacity() + rhs_rows_.capacity()) *
              sizeof(Eigen::Vector3d) +
          travel_.capacity() * sizeof(double) +
          (reach_.size() + bounds_.size() + inverse_mass_.size()) * sizeof(double) +

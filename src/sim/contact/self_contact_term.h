@@ -103,13 +103,13 @@ class SelfContactTerm : public StepTerm {
   // g(p) (m) and the closest points' slide in the tangent plane from anchor_ (m): over the step,
   // or over the steps a kept epoch spans, so that a resting pile does not creep.
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
+  // The same with vertex v at position(v) (the sweep reads packed rows).
+  template <typename Position>
+  double violation(const Pair& pair, Position position, Eigen::Vector3d* slide) const;
   // The surface's common motion from x_ to p (m): the median along each axis (see the .cpp).
   Eigen::Vector3d common_motion(const Eigen::MatrixXd& p) const;
   // Whether every surface vertex of p is within `fraction` of its bound, the common motion out.
   bool within(const Eigen::MatrixXd& p, double fraction) const;
-  // violation() of rows_ from anchor_rows_.
-  double packed_violation(const Pair& pair, Eigen::Vector3d* slide) const;
-  static void pack(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& rows);
   // The λ last step's pair with this key ended with, or 0.
   double remembered_force(std::uint64_t key) const;
   std::size_t remembered_slot(std::uint64_t key) const;
@@ -131,14 +131,13 @@ class SelfContactTerm : public StepTerm {
   SelfCrossingGuard guard_;
   Eigen::VectorXd inertia_;  // #V: W (N/m)
   Eigen::MatrixXd x_;        // #V by 3: where the epoch started
-  // #V by 3: where friction measures slides from: where the step's first epoch started (the
+  // #V rows: where friction measures slides from: where the step's first epoch started (the
   // step's start, or steps back while that epoch is kept), not where an epoch within the step
   // started (a bounded iterate): from there friction held the iterate to where the bounds had
   // put it, and the shipped pile gained energy without end once it lay (2.8 J at the start,
   // 38 J by step 700).
-  Eigen::MatrixXd anchor_;
-  // anchor_ and the iterate separate() sweeps, row by row.
-  std::vector<Eigen::Vector3d> anchor_rows_, rows_;
+  std::vector<Eigen::Vector3d> anchor_;
+  std::vector<Eigen::Vector3d> rows_;  // the iterate separate() sweeps, row by row
   // separate()'s: the iterate after the last limit_iterate, and each vertex's path length since
   // the step's or epoch's first sweep (m).
   std::vector<Eigen::Vector3d> last_rows_;
