@@ -98,7 +98,7 @@ TEST(SpatialGrid, VisitsEveryOverlappingBoxOnceAndNoOther) {
   queries.emplace_back(Eigen::Vector3d(-3, -3, -3), Eigen::Vector3d(3, 3, 3));
   for (const Eigen::AlignedBox3d& query : queries) {
     std::map<int, int> visits;
-    grid.for_each_overlapping(query, [&](int id) {
+    grid.for_each_overlapping(query, boxes, [&](int id) {
       ++visits[id];
       return true;
     });
@@ -121,10 +121,10 @@ TEST(SpatialGrid, FilesBoxesOfAnySizeOnce) {
   }
   wobble::SpatialGrid grid;
   grid.build(boxes, 1e-3);
-  // One entry a box (about 64 bytes), and hash slots of a few ints each.
-  EXPECT_LT(grid.memory_bytes(), boxes.size() * 200);
+  // One entry a box (16 bytes), and hash slots of an int each.
+  EXPECT_LT(grid.memory_bytes(), boxes.size() * 48);
   int visited = 0;
-  grid.for_each_overlapping(boxes[0], [&](int id) {
+  grid.for_each_overlapping(boxes[0], boxes, [&](int id) {
     visited += id < 1000;
     return true;
   });

@@ -113,7 +113,7 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
     if (surface.vertex_triangles.begin(v) != surface.vertex_triangles.end(v)) {
       const Eigen::Vector3d p = vertex_row(V, v);
       int examined = 0;
-      grid.for_each_overlapping(grown({v}), [&](int t) {
+      grid.for_each_overlapping(grown({v}), boxes, [&](int t) {
         const int a = surface.triangles(t, 0), b = surface.triangles(t, 1),
                   c = surface.triangles(t, 2);
         if (++examined > max_examined) return false;  // every box met counts, kept or not
@@ -142,7 +142,7 @@ void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
     near.clear();
     const int p0 = surface.edges(e, 0), p1 = surface.edges(e, 1);
     int examined = 0;
-    grid.for_each_overlapping(boxes[e], [&](int f) {
+    grid.for_each_overlapping(boxes[e], boxes, [&](int f) {
       if (++examined > max_examined) return false;  // every box met counts, kept or not
       if (f <= e) return true;
       const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);

@@ -86,19 +86,19 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
     scratch_.push_back(seed_[v]);
   vertex_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
   const int triangle_count = static_cast<int>(triangles_.size());
-  triangle_grown_.resize(triangle_count);
   scratch_.resize(triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
-    const int* corner = triangles_[t].vertex;
-    const double need = std::max(std::max(seed_[corner[0]], seed_[corner[1]]), seed_[corner[2]]);
-    triangle_grown_[t] = grown(triangles_[t].box, std::max(need - vertex_floor_, 0.0));
-    scratch_[t] = triangle_grown_[t].sizes().maxCoeff();
+    Feature& triangle = triangles_[t];
+    const int* corner = triangle.vertex;
+    triangle.need = std::max(std::max(seed_[corner[0]], seed_[corner[1]]), seed_[corner[2]]);
+    scratch_[t] = filed_triangle(t).sizes().maxCoeff();
   }
   // Cells the size of most boxes: each box covers a few cells, each cell holds a few boxes.
   double cell = std::max(surface.mean_edge, contact_distance_);
   const double typical = upper_quartile(scratch_);
   if (std::isfinite(typical) && typical > 0.0) cell = typical;
-  triangle_grid_.build(triangle_grown_, cell);
+  triangle_grid_.build(
+      triangle_count, [&](int t) { return filed_triangle(t); }, cell);
 
   chunks_.resize(2 * chunks_per_kind);
   const auto run = [&](bool vertices) {
@@ -126,13 +126,10 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   for (const int v : surface.vertices)
     scratch_.push_back(nearest(v));
   edge_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
-  edge_need_.resize(edge_count);
-  edge_grown_.resize(edge_count);
-  for (int e = 0; e < edge_count; ++e) {
-    edge_need_[e] = std::max(nearest(edges_[e].vertex[0]), nearest(edges_[e].vertex[1]));
-    edge_grown_[e] = grown(edges_[e].box, std::max(edge_need_[e] - edge_floor_, 0.0));
-  }
-  edge_grid_.build(edge_grown_, cell);
+  for (Feature& edge : edges_)
+    edge.need = std::max(nearest(edge.vertex[0]), nearest(edge.vertex[1]));
+  edge_grid_.build(
+      edge_count, [&](int e) { return filed_edge(e); }, cell);
   run(false);
 
   pairs.clear();
@@ -166,7 +163,7 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
     reach_[v] = r > 0.0 ? std::min(r, largest) : 0.0;
   }
   const auto feature = [&](std::initializer_list<int> vertices) {
-    Feature f{Eigen::AlignedBox3d(), 0.0, {-1, -1, -1}};
+    Feature f{Eigen::AlignedBox3d(), 0.0, 0.0, {-1, -1, -1}};
     int k = 0;
     for (const int v : vertices) {
       f.box.extend(points_[v]);
@@ -238,7 +235,8 @@ void SelfContactProximity::freeze_near_saturated_queries(double cell) {
     for (int k = range.first; k < range.last; ++k) {
       bool frozen = false;
       frozen_grid_.for_each_overlapping(
-          k < triangle_count ? triangle_grown_[k] : edge_grown_[k - triangle_count], [&](int) {
+          k < triangle_count ? filed_triangle(k) : filed_edge(k - triangle_count), frozen_boxes_,
+          [&](int) {
             frozen = true;
             return false;
           });
@@ -258,14 +256,11 @@ void SelfContactProximity::freeze_near_saturated_queries(double cell) {
 std::size_t SelfContactProximity::memory_bytes() const {
   std::size_t bytes =
       points_.capacity() * sizeof(Eigen::Vector3d) +
-      (reach_.capacity() + seed_.capacity() + scratch_.capacity() + edge_need_.capacity() +
-       nearest_capacity_) *
+      (reach_.capacity() + seed_.capacity() + scratch_.capacity() + nearest_capacity_) *
           sizeof(double) +
       (triangles_.capacity() + edges_.capacity()) * sizeof(Feature) +
-      (triangle_grown_.capacity() + edge_grown_.capacity() + frozen_boxes_.capacity()) *
-          sizeof(Eigen::AlignedBox3d) +
-      feature_frozen_.capacity() + triangle_grid_.memory_bytes() + edge_grid_.memory_bytes() +
-      frozen_grid_.memory_bytes();
+      frozen_boxes_.capacity() * sizeof(Eigen::AlignedBox3d) + feature_frozen_.capacity() +
+      triangle_grid_.memory_bytes() + edge_grid_.memory_bytes() + frozen_grid_.memory_bytes();
   for (const Chunk& chunk : chunks_) {
     bytes += chunk.pairs.capacity() * sizeof(SelfContactPair) +
              chunk.frozen.capacity() * sizeof(Eigen::AlignedBox3d) +

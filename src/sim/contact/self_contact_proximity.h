@@ -123,11 +123,13 @@ class SelfContactProximity {
     std::vector<double> ends;                 // their upper vertices' nearest so far (m)
     std::vector<Eigen::AlignedBox3d> frozen;  // query boxes of the queries that stopped
   };
-  // A triangle or an edge at x: its bare box, the largest reach of its vertices (m), and its
-  // vertices (an edge's third is −1), together so that a candidate costs a cache line or two.
+  // A triangle or an edge at x: its bare box, the largest reach and need of its vertices (m),
+  // and its vertices (an edge's third is −1), together so that a candidate costs a cache line or
+  // two. need: the seeds' (triangles), the nearest after the vertex queries (edges).
   struct Feature {
     Eigen::AlignedBox3d box;
     double reach;
+    double need;
     int vertex[3];
   };
   WorkerPool& pool() const { return pool_ ? *pool_ : WorkerPool::shared(); }
@@ -136,6 +138,12 @@ class SelfContactProximity {
     box.max().array() += by;
     return box;
   }
+  // A feature's box in its grid: grown by its need's excess over the floor of its queries.
+  static Eigen::AlignedBox3d filed(const Feature& feature, double floor) {
+    return grown(feature.box, std::max(feature.need - floor, 0.0));
+  }
+  Eigen::AlignedBox3d filed_triangle(int t) const { return filed(triangles_[t], vertex_floor_); }
+  Eigen::AlignedBox3d filed_edge(int e) const { return filed(edges_[e], edge_floor_); }
   // How far apart two boxes are along each axis (0 where they overlap on it).
   static Eigen::Array3d box_gap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
     return (a.min().array() - b.max().array()).max(b.min().array() - a.max().array()).max(0.0);
@@ -177,10 +185,8 @@ class SelfContactProximity {
   // What a query box grows by at least (m): the contact distance, or most vertices' needs (the
   // seeds for the vertex queries, the nearest after them for the edge queries).
   double vertex_floor_ = 0.0, edge_floor_ = 0.0;
-  std::vector<double> edge_need_;  // #E: its vertices' larger nearest after the vertex queries
-  // The boxes in the grids, grown by the need of their vertices beyond the floor.
-  std::vector<Eigen::AlignedBox3d> triangle_grown_, edge_grown_;
   std::vector<double> scratch_;
+  // The features' filed boxes (grown by their needs beyond the floor), and the stopped queries'.
   SpatialGrid triangle_grid_, edge_grid_, frozen_grid_;
   // #V: min(seed, the nearest found distance): b_v = γ/2 × it.
   std::unique_ptr<std::atomic<double>[]> nearest_;

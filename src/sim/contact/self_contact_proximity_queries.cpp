@@ -29,7 +29,8 @@ void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
   double own = nearest(v);  // never below v's shared value, so safe to skip against
   if (chunk.kept.empty()) chunk.kept.resize(1);
   int met = 0;
-  triangle_grid_.for_each_overlapping(box, [&](int t) {
+  const auto filed = [&](int t) { return filed_triangle(t); };
+  triangle_grid_.for_each_overlapping(box, filed, [&](int t) {
     if (++met > max_met) {
       chunk.frozen.push_back(box);
       return false;
@@ -81,14 +82,15 @@ void SelfContactProximity::query_edges(int v, Chunk& chunk) {
     if (edges_[e].vertex[0] != v) continue;
     chunk.owned.push_back(e);
     chunk.ends.push_back(nearest(edges_[e].vertex[1]));
-    box.extend(grown(edges_[e].box, std::max(edge_need_[e], edge_floor_)));
+    box.extend(grown(edges_[e].box, std::max(edges_[e].need, edge_floor_)));
   }
   const int count = static_cast<int>(chunk.owned.size());
   if (count == 0) return;
   if (static_cast<int>(chunk.kept.size()) < count) chunk.kept.resize(count);
   double own = nearest(v);
   int met = 0;
-  edge_grid_.for_each_overlapping(box, [&](int f) {
+  const auto filed = [&](int f) { return filed_edge(f); };
+  edge_grid_.for_each_overlapping(box, filed, [&](int f) {
     if (++met > max_met) {
       chunk.frozen.push_back(box);
       return false;

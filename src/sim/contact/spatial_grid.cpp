@@ -5,11 +5,18 @@
 namespace wobble {
 
 void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double cell) {
+  build(
+      static_cast<int>(boxes.size()), [&](int id) { return boxes[id]; }, cell);
+}
+
+void SpatialGrid::build(int count, const std::function<Eigen::AlignedBox3d(int)>& box_of,
+                        double cell) {
   cell_ = cell > 0.0 && std::isfinite(cell) ? cell : 1.0;
-  level_of_.resize(boxes.size());
+  count = std::max(count, 0);
+  level_of_.resize(count);
   std::array<std::size_t, max_levels> counts{};
-  for (std::size_t id = 0; id < boxes.size(); ++id) {
-    const Eigen::AlignedBox3d& box = boxes[id];
+  for (int id = 0; id < count; ++id) {
+    const Eigen::AlignedBox3d box = box_of(id);
     level_of_[id] = -1;
     if (box.isEmpty() || !box.min().allFinite() || !box.max().allFinite()) continue;
     // Centres beyond int cell coordinates on level 0 go up a level until they fit.
@@ -41,36 +48,33 @@ void SpatialGrid::build(const std::vector<Eigen::AlignedBox3d>& boxes, double ce
     entry_total += level.count;
   }
   start_.assign(slot_total, 0);
-  fill_.resize(slot_total);
   entries_.resize(entry_total);
-  // Two passes of a counting sort per level: how many boxes each slot gets, then the boxes.
-  const auto centre_cell = [&](const Eigen::AlignedBox3d& box, const Level& level) {
-    return Eigen::Array3i(((box.center().array()) / level.cell).floor().cast<int>());
+  // A counting sort per level: how many boxes each slot gets, their running sums (where each
+  // slot ends), then the boxes from the last id down, each slot's end moving back to its start.
+  const auto slot_of = [&](const Eigen::AlignedBox3d& box, const Level& level, Eigen::Array3i& c) {
+    c = ((box.center().array()) / level.cell).floor().cast<int>();
+    return level.first_slot + cell_slot(c.x(), c.y(), c.z(), level.slots);
   };
-  for (std::size_t id = 0; id < boxes.size(); ++id) {
-    if (level_of_[id] < 0) continue;
-    const Level& level = levels_[level_of_[id]];
-    const Eigen::Array3i c = centre_cell(boxes[id], level);
-    ++start_[level.first_slot + cell_slot(c.x(), c.y(), c.z(), level.slots) + 1];
+  Eigen::Array3i c;
+  for (int id = 0; id < count; ++id) {
+    if (level_of_[id] >= 0) ++start_[slot_of(box_of(id), levels_[level_of_[id]], c)];
   }
   for (const Level& level : levels_) {
     int* start = start_.data() + level.first_slot;
-    start[0] = level.first_entry;
-    for (std::uint32_t s = 0; s < level.slots; ++s)
-      start[s + 1] += start[s];
-    std::copy(start, start + level.slots + 1, fill_.begin() + level.first_slot);
+    start[0] += level.first_entry;
+    for (std::uint32_t s = 1; s < level.slots; ++s)
+      start[s] += start[s - 1];
+    start[level.slots] = level.first_entry + level.count;
   }
-  for (std::size_t id = 0; id < boxes.size(); ++id) {
+  for (int id = count - 1; id >= 0; --id) {
     if (level_of_[id] < 0) continue;
-    const Level& level = levels_[level_of_[id]];
-    const Eigen::Array3i c = centre_cell(boxes[id], level);
-    const std::size_t slot = level.first_slot + cell_slot(c.x(), c.y(), c.z(), level.slots);
-    entries_[fill_[slot]++] = Entry{boxes[id], static_cast<int>(id), c.x(), c.y(), c.z()};
+    const std::size_t slot = slot_of(box_of(id), levels_[level_of_[id]], c);
+    entries_[--start_[slot]] = Entry{id, c.x(), c.y(), c.z()};
   }
 }
 
 std::size_t SpatialGrid::memory_bytes() const {
-  return level_of_.capacity() + (start_.capacity() + fill_.capacity()) * sizeof(int) +
+  return level_of_.capacity() + start_.capacity() * sizeof(int) +
          entries_.capacity() * sizeof(Entry);
 }
 

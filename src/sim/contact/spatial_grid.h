@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace wobble {
@@ -14,26 +15,29 @@ namespace wobble {
 // filed once, at the cell of its centre, on the first level whose cell is at least as large as
 // the box. So a box that overlaps a query has its centre within half a cell of the query box on
 // its level, and a query looks at the few cells around it on each level in use. Each level is a
-// counting sort of its boxes into a hash table of about twice as many slots (no bounds, no
-// allocation once the buffers have grown).
+// counting sort of its boxes' ids into a hash table of about twice as many slots (no bounds, no
+// allocation once the buffers have grown). The grid keeps no copy of the boxes: the caller
+// holds them (or computes them) and gives them to each query as box_of(id).
 //
-// Bounded by design: memory is O(boxes) whatever their sizes and places (one entry a box); a
-// build costs O(boxes); a query costs O(the boxes whose cells it looks at), and never more cells
-// than a level has boxes (a query box large for a level looks at that level's boxes one by one
-// instead). Boxes that are empty or not finite are not filed.
+// Bounded by design: memory is O(boxes) whatever their sizes and places (16 bytes a box, and
+// two ints a slot); a build costs O(boxes); a query costs O(the boxes whose cells it looks at),
+// and never more cells than a level has boxes (a query box large for a level looks at that
+// level's boxes one by one instead). Boxes that are empty or not finite are not filed.
 class SpatialGrid {
  public:
   static constexpr int max_levels = 16;
 
-  // Files each of `boxes` (ids 0..#boxes−1); level 0's cell is `cell` (m).
+  // Files boxes 0..count−1, box id being box_of(id); level 0's cell is `cell` (m).
+  void build(int count, const std::function<Eigen::AlignedBox3d(int)>& box_of, double cell);
   void build(const std::vector<Eigen::AlignedBox3d>& boxes, double cell);
   double cell() const { return cell_; }
 
   // Calls visit(id) exactly once for every filed box that overlaps `box` (closed boxes:
-  // touching counts), until visit returns false. Safe to call from several threads at once
-  // between builds.
-  template <typename Visit>
-  void for_each_overlapping(const Eigen::AlignedBox3d& box, Visit&& visit) const {
+  // touching counts), until visit returns false. box_of(id) must give the boxes of the last
+  // build. Safe to call from several threads at once between builds.
+  template <typename BoxOf, typename Visit>
+  void for_each_overlapping(const Eigen::AlignedBox3d& box, const BoxOf& box_of,
+                            Visit&& visit) const {
     if (box.isEmpty()) return;
     for (const Level& level : levels_) {
       if (level.count == 0) continue;
@@ -45,8 +49,8 @@ class SpatialGrid {
           !(lo.abs().maxCoeff() < 1e9 && hi.abs().maxCoeff() < 1e9)) {
         // Cheaper (or only possible) to look at every box of the level once.
         for (int s = level.first_entry; s < level.first_entry + level.count; ++s) {
-          const Entry& entry = entries_[s];
-          if (box.intersects(entry.box) && !visit(entry.id)) return;
+          const int id = entries_[s].id;
+          if (box.intersects(box_of(id)) && !visit(id)) return;
         }
         continue;
       }
@@ -59,12 +63,19 @@ class SpatialGrid {
               const Entry& entry = entries_[s];
               // The slot holds every cell that hashes to it: only this cell's boxes.
               if (entry.x != x || entry.y != y || entry.z != z) continue;
-              if (box.intersects(entry.box) && !visit(entry.id)) return;
+              if (box.intersects(box_of(entry.id)) && !visit(entry.id)) return;
             }
           }
         }
       }
     }
+  }
+  // The same with the boxes in a vector.
+  template <typename Visit>
+  void for_each_overlapping(const Eigen::AlignedBox3d& box,
+                            const std::vector<Eigen::AlignedBox3d>& boxes, Visit&& visit) const {
+    for_each_overlapping(
+        box, [&](int id) -> const Eigen::AlignedBox3d& { return boxes[id]; }, visit);
   }
 
   // Memory held by the grid's buffers (bytes).
@@ -72,16 +83,15 @@ class SpatialGrid {
 
  private:
   struct Entry {
-    Eigen::AlignedBox3d box;
     int id;
     int x, y, z;  // the cell of the box's centre
   };
-  // The levels share three buffers (each level its own range in them), so that memory follows
+  // The levels share two buffers (each level its own range in them), so that memory follows
   // the boxes filed now rather than the most each level ever held.
   struct Level {
     double cell = 1.0;
     std::uint32_t slots = 1;         // a power of two
-    std::size_t first_slot = 0;      // its slots + 1 starts in start_, its slots in fill_
+    std::size_t first_slot = 0;      // its slots + 1 starts in start_
     int first_entry = 0, count = 0;  // its range of entries_
   };
   static std::uint32_t cell_slot(int x, int y, int z, std::uint32_t slots) {
@@ -95,8 +105,7 @@ class SpatialGrid {
   double cell_ = 1.0;
   std::array<Level, max_levels> levels_;
   std::vector<int> start_;      // per level, slots + 1: where each slot's entries begin in entries_
-  std::vector<int> fill_;       // per level, slots: a build's next free entry per slot
-  std::vector<Entry> entries_;  // level by level
+  std::vector<Entry> entries_;  // level by level, slot by slot, ascending ids within a slot
   std::vector<std::int8_t> level_of_;  // #boxes: its level, −1 when not filed
 };
 
