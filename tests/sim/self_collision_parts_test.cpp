@@ -1,4 +1,5 @@
-// The pieces self-collision is built from: closest points and the spatial grid.
+// The pieces self-collision is built from: closest points, the spatial grid and the rest
+// neighbours.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "sim/contact/closest_points.h"
+#include "sim/contact/self_collision_surface.h"
 #include "sim/contact/self_contact_proximity.h"
 #include "sim/contact/spatial_grid.h"
 #include "sim/simulation.h"
@@ -78,9 +80,9 @@ TEST(ClosestPoints, OfTwoSegments) {
   EXPECT_NEAR(su(1), 0.5, 1e-12);
 }
 
-// Every query visits each box it overlaps exactly once, and no other: boxes in many cells, boxes
-// too large for a cell (the few every query visits), empty boxes, and a query covering the
-// whole grid.
+// Every query visits each box it overlaps exactly once, and no other beyond single precision's
+// rounding: boxes in many cells, boxes too large for a cell (the few every query visits), empty
+// boxes, boxes that just touch or just miss a query, and a query covering the whole grid.
 TEST(SpatialGrid, VisitsEveryOverlappingBoxOnceAndNoOther) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> where(-1.0, 1.0), size(0.0, 0.2);
@@ -92,19 +94,37 @@ TEST(SpatialGrid, VisitsEveryOverlappingBoxOnceAndNoOther) {
   boxes.emplace_back(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(1, 1, 1));
   boxes.emplace_back(Eigen::Vector3d(-0.5, -2, -0.5), Eigen::Vector3d(0.5, 2, 0.5));
   boxes.emplace_back();  // empty: never visited
+  // Touching the first box's low x face, and a millimetre short of it.
+  const Eigen::AlignedBox3d first = boxes[0];
+  boxes.emplace_back(first.min() - Eigen::Vector3d(0.01, 0, 0),
+                     Eigen::Vector3d(first.min().x(), first.max().y(), first.max().z()));
+  boxes.emplace_back(first.min() - Eigen::Vector3d(0.01, 0, 0),
+                     Eigen::Vector3d(first.min().x() - 1e-3, first.max().y(), first.max().z()));
   wobble::SpatialGrid grid;
   grid.build(boxes, 0.05);
   std::vector<Eigen::AlignedBox3d> queries(boxes.begin(), boxes.begin() + 40);
   queries.emplace_back(Eigen::Vector3d(-3, -3, -3), Eigen::Vector3d(3, 3, 3));
   for (const Eigen::AlignedBox3d& query : queries) {
     std::map<int, int> visits;
-    grid.for_each_overlapping(query, boxes, [&](int id) {
+    grid.for_each_overlapping(query, [&](int id, const Eigen::AlignedBox3f& filed) {
       ++visits[id];
+      // As filed: holding the box, in single precision.
+      EXPECT_TRUE(filed.cast<double>().contains(boxes[id])) << "box " << id;
       return true;
     });
+    // Within rounding: a millionth of the coordinates (about 10 float roundings).
+    Eigen::AlignedBox3d near = query;
+    near.min().array() -= 1e-6 * query.min().cwiseAbs().maxCoeff() + 1e-30;
+    near.max().array() += 1e-6 * query.max().cwiseAbs().maxCoeff() + 1e-30;
     for (int id = 0; id < int(boxes.size()); ++id) {
-      const bool overlaps = !boxes[id].isEmpty() && query.intersects(boxes[id]);
-      EXPECT_EQ(visits.count(id) ? visits[id] : 0, overlaps ? 1 : 0) << "box " << id;
+      const int count = visits.count(id) ? visits[id] : 0;
+      if (!boxes[id].isEmpty() && query.intersects(boxes[id])) {
+        EXPECT_EQ(count, 1) << "box " << id;
+      } else if (boxes[id].isEmpty() || !near.intersects(boxes[id])) {
+        EXPECT_EQ(count, 0) << "box " << id;
+      } else {
+        EXPECT_LE(count, 1) << "box " << id;
+      }
     }
   }
 }
@@ -121,21 +141,54 @@ TEST(SpatialGrid, FilesBoxesOfAnySizeOnce) {
   }
   wobble::SpatialGrid grid;
   grid.build(boxes, 1e-3);
-  // One entry a box (16 bytes), and hash slots of an int each.
-  EXPECT_LT(grid.memory_bytes(), boxes.size() * 48);
+  // One entry a box (40 bytes), and hash slots of an int each.
+  EXPECT_LT(grid.memory_bytes(), boxes.size() * 72);
   int visited = 0;
-  grid.for_each_overlapping(boxes[0], boxes, [&](int id) {
+  grid.for_each_overlapping(boxes[0], [&](int id) {
     visited += id < 1000;
     return true;
   });
   EXPECT_EQ(visited, 1000);
 }
 
-// n triangles on the same three points (each with vertices of its own), falling 1 cm in a step
-// at the largest thickness: self-contact's pairs and memory grow with the mesh, not with its
-// square (one pile of coincident triangles took 9.4 GB when skipped boxes went uncounted), and
-// the step creates no crossing (every distance is 0, so every bound is 0: the pile moves only
-// as a whole).
+// A pair is a rest neighbour when its features are closer than the reach in the rest shape:
+// near a corner (the answer from the corners alone) and in the middle of a face or of two edges
+// (from the closest points), just inside and just outside.
+TEST(RestNeighbours, ArePairsCloserThanTheReachInTheRestShape) {
+  wobble::SpringNetwork network;
+  network.V.resize(10, 3);
+  network.V << 0, 0, 0, 1, 0, 0, 0, 1, 0,  // a triangle of 1 m in the z = 0 plane
+      0.25, 0.25, 0.004,                   // 4 mm above its face, far from every corner
+      0.25, 0.25, 0.006,                   // 6 mm above it
+      -0.003, 0, 0,                        // 3 mm from its first corner
+      0.5, -0.5, 0.004, 0.5, 0.5, 0.004,   // an edge 4 mm above the first edge's middle
+      0.5, -0.5, 0.006, 0.5, 0.5, 0.006;   // and one 6 mm above it
+  network.F.resize(4, 3);
+  network.F << 0, 1, 2, 3, 4, 5, 6, 7, 3, 8, 9, 4;  // so that every vertex is on the surface
+  const wobble::SelfCollisionSurface surface(network);
+  const auto edge = [&](int a, int b) {
+    for (Eigen::Index e = 0; e < surface.edges.rows(); ++e) {
+      if (surface.edges(e, 0) == std::min(a, b) && surface.edges(e, 1) == std::max(a, b))
+        return static_cast<int>(e);
+    }
+    ADD_FAILURE() << "no edge " << a << "-" << b;
+    return 0;
+  };
+  const wobble::RestNeighbours rest(surface, 0.005), none;
+  EXPECT_TRUE(rest.vertex_triangle(surface, 3, 0));
+  EXPECT_FALSE(rest.vertex_triangle(surface, 4, 0));
+  EXPECT_TRUE(rest.vertex_triangle(surface, 5, 0));
+  EXPECT_TRUE(rest.edge_edge(surface, edge(0, 1), edge(6, 7)));
+  EXPECT_FALSE(rest.edge_edge(surface, edge(0, 1), edge(8, 9)));
+  EXPECT_FALSE(none.vertex_triangle(surface, 3, 0));
+  EXPECT_FALSE(none.edge_edge(surface, edge(0, 1), edge(6, 7)));
+}
+
+// n triangles on the same three points (each with vertices of its own, and a metre apart in the
+// rest shape, so that they are no rest neighbours), falling 1 cm in a step at the largest
+// thickness: self-contact's pairs and memory grow with the mesh, not with its square (one pile
+// of coincident triangles took 9.4 GB when skipped boxes went uncounted), and the step creates
+// no crossing (every distance is 0, so every bound is 0: the pile moves only as a whole).
 struct CoincidentRun {
   std::size_t memory = 0;
   double pairs = 0.0;
@@ -147,10 +200,13 @@ CoincidentRun run_coincident(int n) {
   network.V.resize(3 * n, 3);
   network.F.resize(n, 3);
   network.E.resize(3 * n, 2);
+  Eigen::MatrixXd coincident(3 * n, 3);
   for (int t = 0; t < n; ++t) {
-    network.V.row(3 * t) << 0.0, 0.5, 0.0;
-    network.V.row(3 * t + 1) << 0.1, 0.5, 0.0;
-    network.V.row(3 * t + 2) << 0.0, 0.5, 0.1;
+    coincident.row(3 * t) << 0.0, 0.5, 0.0;
+    coincident.row(3 * t + 1) << 0.1, 0.5, 0.0;
+    coincident.row(3 * t + 2) << 0.0, 0.5, 0.1;
+    for (int k = 0; k < 3; ++k)
+      network.V.row(3 * t + k) = coincident.row(3 * t + k) + Eigen::RowVector3d(t, 0.0, 0.0);
     network.F.row(t) << 3 * t, 3 * t + 1, 3 * t + 2;
     network.E.row(3 * t) << 3 * t, 3 * t + 1;
     network.E.row(3 * t + 1) << 3 * t + 1, 3 * t + 2;
@@ -161,9 +217,10 @@ CoincidentRun run_coincident(int n) {
   params.self_collision.on = true;
   params.self_collision.thickness = 1.0;
   params.iterations = 3;
-  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(3 * n, 3);
-  velocity.col(1).setConstant(-0.6);  // 1 cm in a step of 1/60 s
-  wobble::Simulation simulation(network, {}, params, velocity);
+  wobble::Simulation simulation(network, {}, params);
+  Eigen::MatrixXd previous = coincident;
+  previous.col(1).array() += 0.01;  // falling 1 cm in a step
+  simulation.set_state(coincident, previous);
   CoincidentRun run;
   run.start = simulation.positions();
   EXPECT_EQ(simulation.step(), wobble::StepStatus::ok);

@@ -35,8 +35,7 @@ TEST(SelfContactProximity, ACoincidentGridIsBoundedAndFrozen) {
   for (Eigen::Vector3d& v : mesh.vertices)
     v = Eigen::Vector3d(0.1, 0.2, 0.3);
   const wobble::SelfCollisionSurface surface(mesh.network());
-  wobble::RestNeighbours rest;
-  rest.find(surface, 0.0);
+  const wobble::RestNeighbours rest;
   wobble::WorkerPool one(1), several(3);
   SelfContactProximity proximity(&several), alone(&one);
   std::vector<SelfContactPair> pairs, pairs_alone;

@@ -68,7 +68,7 @@ struct Found {
   Found(const Mesh& mesh, const Eigen::VectorXd& reach, double contact_distance,
         double rest_reach = 0.0, wobble::WorkerPool* pool = nullptr)
       : surface(mesh.network()), x(mesh.x()) {
-    rest.find(surface, rest_reach);
+    rest = wobble::RestNeighbours(surface, rest_reach);
     SelfContactProximity proximity(pool);
     proximity.find(surface, rest, x, reach, contact_distance, pairs, bounds);
     floor = proximity.floor();

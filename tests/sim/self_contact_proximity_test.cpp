@@ -300,8 +300,7 @@ TEST(SelfContactProximity, APairPressedTogetherEpochAfterEpochStaysAboveTheFloor
   const Eigen::VectorXd reach = constant_reach(mesh, 0.01);
   Eigen::MatrixXd x = mesh.x();
   const wobble::SelfCollisionSurface surface(mesh.network());
-  wobble::RestNeighbours rest;
-  rest.find(surface, 0.0);
+  const wobble::RestNeighbours rest;
   SelfContactProximity proximity;
   std::vector<SelfContactPair> pairs;
   Eigen::VectorXd bounds;

@@ -30,18 +30,6 @@ bool CompressedRows::contains(int owner, int id) const {
   return std::binary_search(ids.begin() + start[owner], ids.begin() + start[owner + 1], id);
 }
 
-void keep_nearest(std::vector<std::pair<double, int>>& candidates, int count,
-                  std::vector<int>& ids) {
-  if (static_cast<int>(candidates.size()) > count) {
-    std::nth_element(candidates.begin(), candidates.begin() + count, candidates.end());
-    candidates.resize(count);
-  }
-  const std::size_t first = ids.size();
-  for (const auto& candidate : candidates)
-    ids.push_back(candidate.second);
-  std::sort(ids.begin() + static_cast<std::ptrdiff_t>(first), ids.end());
-}
-
 SelfCollisionSurface::SelfCollisionSurface(const SpringNetwork& network)
     : rest(network.V), triangles(network.F) {
   const int n = static_cast<int>(rest.rows());
@@ -85,83 +73,49 @@ SelfCollisionSurface::SelfCollisionSurface(const SpringNetwork& network)
   compress(incident, n, vertex_triangles);
 }
 
-void RestNeighbours::find(const SelfCollisionSurface& surface, double reach) {
-  const Eigen::MatrixXd& V = surface.rest;
-  const int n = static_cast<int>(V.rows());
-  // Rest boxes grown by half the reach: features within it have overlapping boxes.
-  const auto grown = [&](std::initializer_list<int> vertices) {
-    Eigen::AlignedBox3d box;
-    for (const int i : vertices)
-      box.extend(vertex_row(V, i));
-    box.min().array() -= 0.5 * reach;
-    box.max().array() += 0.5 * reach;
-    return box;
-  };
-  const double cell = std::max(surface.mean_edge, reach);
-  std::vector<std::pair<double, int>> near;
-  std::vector<Eigen::AlignedBox3d> boxes;
-  SpatialGrid grid;
-
-  boxes.resize(surface.triangles.rows());
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
-    boxes[t] = grown({surface.triangles(t, 0), surface.triangles(t, 1), surface.triangles(t, 2)});
-  grid.build(boxes, cell);
-  triangles_.start.assign(n + 1, 0);
-  triangles_.ids.clear();
-  for (int v = 0; v < n; ++v) {
-    near.clear();
-    if (surface.vertex_triangles.begin(v) != surface.vertex_triangles.end(v)) {
-      const Eigen::Vector3d p = vertex_row(V, v);
-      int examined = 0;
-      grid.for_each_overlapping(grown({v}), boxes, [&](int t) {
-        const int a = surface.triangles(t, 0), b = surface.triangles(t, 1),
-                  c = surface.triangles(t, 2);
-        if (++examined > max_examined) return false;  // every box met counts, kept or not
-        if (v == a || v == b || v == c) return true;
-        const Eigen::Vector3d alpha =
-            closest_on_triangle(p, vertex_row(V, a), vertex_row(V, b), vertex_row(V, c));
-        const double distance = (p - alpha(0) * vertex_row(V, a) - alpha(1) * vertex_row(V, b) -
-                                 alpha(2) * vertex_row(V, c))
-                                    .norm();
-        if (distance < reach) near.emplace_back(distance, t);
-        return true;
-      });
-    }
-    keep_nearest(near, max_per_owner, triangles_.ids);
-    triangles_.start[v + 1] = static_cast<int>(triangles_.ids.size());
-  }
-
-  const int edge_count = static_cast<int>(surface.edges.rows());
-  boxes.resize(edge_count);
-  for (int e = 0; e < edge_count; ++e)
-    boxes[e] = grown({surface.edges(e, 0), surface.edges(e, 1)});
-  grid.build(boxes, cell);
-  edges_.start.assign(edge_count + 1, 0);
-  edges_.ids.clear();
-  for (int e = 0; e < edge_count; ++e) {
-    near.clear();
-    const int p0 = surface.edges(e, 0), p1 = surface.edges(e, 1);
-    int examined = 0;
-    grid.for_each_overlapping(boxes[e], boxes, [&](int f) {
-      if (++examined > max_examined) return false;  // every box met counts, kept or not
-      if (f <= e) return true;
-      const int q0 = surface.edges(f, 0), q1 = surface.edges(f, 1);
-      if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return true;
-      const Eigen::Vector2d su = closest_on_segments(vertex_row(V, p0), vertex_row(V, p1),
-                                                     vertex_row(V, q0), vertex_row(V, q1));
-      const double distance = ((1.0 - su(0)) * vertex_row(V, p0) + su(0) * vertex_row(V, p1) -
-                               (1.0 - su(1)) * vertex_row(V, q0) - su(1) * vertex_row(V, q1))
-                                  .norm();
-      if (distance < reach) near.emplace_back(distance, f);
-      return true;
-    });
-    keep_nearest(near, max_per_owner, edges_.ids);
-    edges_.start[e + 1] = static_cast<int>(edges_.ids.size());
-  }
+RestNeighbours::RestNeighbours(const SelfCollisionSurface& surface, double reach)
+    : reach_(reach > 0.0 ? reach : 0.0) {
+  if (reach_ > 0.0) pack_rows(surface.rest, rest_);
 }
 
-std::size_t RestNeighbours::memory_bytes() const {
-  return triangles_.memory_bytes() + edges_.memory_bytes();
+bool RestNeighbours::vertex_triangle(const SelfCollisionSurface& surface, int vertex,
+                                     int triangle) const {
+  if (!(reach_ > 0.0)) return false;
+  const Eigen::Vector3d& p = rest_[vertex];
+  const Eigen::Vector3d &a = rest_[surface.triangles(triangle, 0)],
+                        &b = rest_[surface.triangles(triangle, 1)],
+                        &c = rest_[surface.triangles(triangle, 2)];
+  // No nearer than the gap between the point and the triangle's box.
+  const Eigen::Array3d low = a.array().min(b.array()).min(c.array()),
+                       high = a.array().max(b.array()).max(c.array());
+  const double reach2 = reach_ * reach_;
+  if ((p.array() - high).max(low - p.array()).max(0.0).matrix().squaredNorm() >= reach2)
+    return false;
+  // No farther than its nearest corner (most neighbours: the answer without the closest point).
+  if ((p - a).squaredNorm() < reach2 || (p - b).squaredNorm() < reach2 ||
+      (p - c).squaredNorm() < reach2) {
+    return true;
+  }
+  const Eigen::Vector3d alpha = closest_on_triangle(p, a, b, c);
+  return (p - alpha(0) * a - alpha(1) * b - alpha(2) * c).norm() < reach_;
+}
+
+bool RestNeighbours::edge_edge(const SelfCollisionSurface& surface, int e, int f) const {
+  if (!(reach_ > 0.0)) return false;
+  const Eigen::Vector3d &p0 = rest_[surface.edges(e, 0)], &p1 = rest_[surface.edges(e, 1)],
+                        &q0 = rest_[surface.edges(f, 0)], &q1 = rest_[surface.edges(f, 1)];
+  const Eigen::Array3d gap = (p0.array().min(p1.array()) - q0.array().max(q1.array()))
+                                 .max(q0.array().min(q1.array()) - p0.array().max(p1.array()))
+                                 .max(0.0);
+  const double reach2 = reach_ * reach_;
+  if (gap.matrix().squaredNorm() >= reach2) return false;
+  // No farther than its nearest two ends.
+  if ((p0 - q0).squaredNorm() < reach2 || (p0 - q1).squaredNorm() < reach2 ||
+      (p1 - q0).squaredNorm() < reach2 || (p1 - q1).squaredNorm() < reach2) {
+    return true;
+  }
+  const Eigen::Vector2d su = closest_on_segments(p0, p1, q0, q1);
+  return ((1.0 - su(0)) * p0 + su(0) * p1 - (1.0 - su(1)) * q0 - su(1) * q1).norm() < reach_;
 }
 
 }  // namespace wobble

@@ -5,7 +5,6 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-#include "sim/contact/spatial_grid.h"
 #include "sim/spring_network.h"
 
 namespace wobble {
@@ -37,31 +36,24 @@ struct SelfCollisionSurface {
 };
 
 // The pairs the rest shape holds closer than a reach (twice the thickness): a mesh's own
-// neighbourhood (the next vertex along a pleat, a seam), never contact. Bounded: each vertex
-// keeps its max_per_owner nearest triangles and each edge its max_per_owner nearest
-// higher-numbered edges, among the first max_examined it finds, so a crumpled or coincident
-// rest shape fills neither the memory nor the time.
+// neighbourhood (the next vertex along a pleat, a seam), never contact. Decided when asked, from
+// the rest positions, so nothing is stored and a crumpled or coincident rest shape costs no
+// memory: a pair is a rest neighbour when its features' distance in the rest shape is below the
+// reach (0: none is).
 class RestNeighbours {
  public:
-  static constexpr int max_per_owner = 64;
-  static constexpr int max_examined = 512;
-
-  void find(const SelfCollisionSurface& surface, double reach);
-  bool vertex_triangle(int vertex, int triangle) const {
-    return triangles_.contains(vertex, triangle);
-  }
-  // e < f
-  bool edge_edge(int e, int f) const { return edges_.contains(e, f); }
-  std::size_t memory_bytes() const;
+  RestNeighbours() = default;  // none
+  RestNeighbours(const SelfCollisionSurface& surface, double reach);
+  double reach() const { return reach_; }
+  // surface: the one given to the constructor.
+  bool vertex_triangle(const SelfCollisionSurface& surface, int vertex, int triangle) const;
+  bool edge_edge(const SelfCollisionSurface& surface, int e, int f) const;
+  std::size_t memory_bytes() const { return rest_.capacity() * sizeof(Eigen::Vector3d); }
 
  private:
-  CompressedRows triangles_, edges_;
+  double reach_ = 0.0;
+  std::vector<Eigen::Vector3d> rest_;  // the rest positions row by row, packed (m)
 };
-
-// Keeps at most `count` of `candidates` (distance, id), the nearest, then sorts their ids into
-// `ids` (appended). Used wherever a list per owner must stay bounded.
-void keep_nearest(std::vector<std::pair<double, int>>& candidates, int count,
-                  std::vector<int>& ids);
 
 }  // namespace wobble
 

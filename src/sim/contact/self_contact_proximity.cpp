@@ -16,6 +16,13 @@ constexpr int chunks_per_kind = 64;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
+// The nearest float at or above x >= 0 (the largest float for x beyond float's range).
+float above(double x) {
+  if (!(x < std::numeric_limits<float>::max())) return std::numeric_limits<float>::max();
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
 // The value a quarter of `values` are above (0 for none); reorders them.
 double upper_quartile(std::vector<double>& values) {
   if (values.empty()) return 0.0;
@@ -83,22 +90,18 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   // over W: most boxes in the grid stay bare, and a query meets far fewer than with both grown.
   scratch_.clear();
   for (const int v : surface.vertices)
-    scratch_.push_back(seed_[v]);
+    scratch_.push_back(need_[v]);
   vertex_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
   const int triangle_count = static_cast<int>(triangles_.size());
+  const auto filed_triangle = [&](int t) { return filed(triangles_[t], vertex_floor_); };
   scratch_.resize(triangle_count);
-  for (int t = 0; t < triangle_count; ++t) {
-    Feature& triangle = triangles_[t];
-    const int* corner = triangle.vertex;
-    triangle.need = std::max(std::max(seed_[corner[0]], seed_[corner[1]]), seed_[corner[2]]);
+  for (int t = 0; t < triangle_count; ++t)
     scratch_[t] = filed_triangle(t).sizes().maxCoeff();
-  }
   // Cells the size of most boxes: each box covers a few cells, each cell holds a few boxes.
   double cell = std::max(surface.mean_edge, contact_distance_);
   const double typical = upper_quartile(scratch_);
   if (std::isfinite(typical) && typical > 0.0) cell = typical;
-  triangle_grid_.build(
-      triangle_count, [&](int t) { return filed_triangle(t); }, cell);
+  triangle_grid_.build(triangle_count, filed_triangle, cell);
 
   chunks_.resize(2 * chunks_per_kind);
   const auto run = [&](bool vertices) {
@@ -126,10 +129,10 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   for (const int v : surface.vertices)
     scratch_.push_back(nearest(v));
   edge_floor_ = std::max(contact_distance_, upper_quartile(scratch_));
-  for (Feature& edge : edges_)
-    edge.need = std::max(nearest(edge.vertex[0]), nearest(edge.vertex[1]));
-  edge_grid_.build(
-      edge_count, [&](int e) { return filed_edge(e); }, cell);
+  for (const int v : surface.vertices)
+    need_[v] = nearest(v);
+  const auto filed_edge = [&](int e) { return filed(edges_[e], edge_floor_); };
+  edge_grid_.build(edge_count, filed_edge, cell);
   run(false);
 
   pairs.clear();
@@ -149,6 +152,19 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   }
 }
 
+Eigen::AlignedBox3d SelfContactProximity::box(const Feature& feature) const {
+  Eigen::AlignedBox3d box(points_[feature.vertex[0]]);
+  box.extend(points_[feature.vertex[1]]);
+  if (feature.vertex[2] >= 0) box.extend(points_[feature.vertex[2]]);
+  return box;
+}
+
+double SelfContactProximity::need(const Feature& feature) const {
+  double most = std::max(need_[feature.vertex[0]], need_[feature.vertex[1]]);
+  if (feature.vertex[2] >= 0) most = std::max(most, need_[feature.vertex[2]]);
+  return most;
+}
+
 void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach) {
   const SelfCollisionSurface& surface = *surface_;
   const int n = static_cast<int>(x.rows());
@@ -163,13 +179,14 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
     reach_[v] = r > 0.0 ? std::min(r, largest) : 0.0;
   }
   const auto feature = [&](std::initializer_list<int> vertices) {
-    Feature f{Eigen::AlignedBox3d(), 0.0, 0.0, {-1, -1, -1}};
+    double most = 0.0;
+    Feature f{0.0f, {-1, -1, -1}};
     int k = 0;
     for (const int v : vertices) {
-      f.box.extend(points_[v]);
-      f.reach = std::max(f.reach, reach_[v]);
+      most = std::max(most, reach_[v]);
       f.vertex[k++] = v;
     }
+    f.reach = above(most);
     return f;
   };
   triangles_.resize(surface.triangles.rows());
@@ -180,7 +197,7 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
   for (std::size_t e = 0; e < edges_.size(); ++e)
     edges_[e] = feature({surface.edges(e, 0), surface.edges(e, 1)});
 
-  seed_.resize(n);
+  need_.resize(n);
   const int vertex_count = static_cast<int>(surface.vertices.size());
   auto seed_task = [&](int piece) {
     const Range range = chunk_range(vertex_count, piece);
@@ -193,7 +210,7 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
     nearest_capacity_ = n;
   }
   for (const int v : surface.vertices)
-    nearest_[v].store(seed_[v], std::memory_order_relaxed);
+    nearest_[v].store(need_[v], std::memory_order_relaxed);
 }
 
 void SelfContactProximity::seed_vertex(int v) {
@@ -218,7 +235,7 @@ void SelfContactProximity::seed_vertex(int v) {
     const double s = length2 > 0.0 ? std::clamp((p - xa).dot(along) / length2, 0.0, 1.0) : 0.0;
     seed = std::min(seed, (p - xa - s * along).norm());
   }
-  seed_[v] = seed;
+  need_[v] = seed;
 }
 
 void SelfContactProximity::freeze_near_saturated_queries(double cell) {
@@ -229,18 +246,20 @@ void SelfContactProximity::freeze_near_saturated_queries(double cell) {
   frozen_grid_.build(frozen_boxes_, cell);
   const int triangle_count = static_cast<int>(triangles_.size());
   const int feature_count = triangle_count + static_cast<int>(edges_.size());
-  feature_frozen_.resize(feature_count);
+  feature_frozen_.assign(feature_count, 0);
+  const int triangles_filed = triangle_grid_.filed_count();
+  const int filed = triangles_filed + edge_grid_.filed_count();
   auto task = [&](int piece) {
-    const Range range = chunk_range(feature_count, piece);
+    const Range range = chunk_range(filed, piece);
     for (int k = range.first; k < range.last; ++k) {
-      bool frozen = false;
-      frozen_grid_.for_each_overlapping(
-          k < triangle_count ? filed_triangle(k) : filed_edge(k - triangle_count), frozen_boxes_,
-          [&](int) {
-            frozen = true;
-            return false;
-          });
-      feature_frozen_[k] = frozen;
+      // The box as filed (each feature's k is its own: no two tasks write the same flag).
+      const bool triangle = k < triangles_filed;
+      const auto [id, box] =
+          triangle ? triangle_grid_.filed(k) : edge_grid_.filed(k - triangles_filed);
+      frozen_grid_.for_each_overlapping(box.cast<double>(), [&](int) {
+        feature_frozen_[triangle ? id : triangle_count + id] = 1;
+        return false;
+      });
     }
   };
   pool().run(chunks_per_kind, task, &frozen_payoff_);
@@ -256,7 +275,7 @@ void SelfContactProximity::freeze_near_saturated_queries(double cell) {
 std::size_t SelfContactProximity::memory_bytes() const {
   std::size_t bytes =
       points_.capacity() * sizeof(Eigen::Vector3d) +
-      (reach_.capacity() + seed_.capacity() + scratch_.capacity() + nearest_capacity_) *
+      (reach_.capacity() + need_.capacity() + scratch_.capacity() + nearest_capacity_) *
           sizeof(double) +
       (triangles_.capacity() + edges_.capacity()) * sizeof(Feature) +
       frozen_boxes_.capacity() * sizeof(Eigen::AlignedBox3d) + feature_frozen_.capacity() +

@@ -41,8 +41,10 @@ namespace wobble {
 // nearest found vertex not on it; d_e: from edge e to its nearest found edge sharing no vertex;
 // f: a floor far below the thickness and far above rounding (floor()).
 // A pair is found when its boxes at x, grown by the reaches, overlap: a vertex's point by R_v,
-// a triangle's box by the largest R of its vertices, an edge's by the largest of its two. Every
-// found pair counts, the rest neighbours and pairs beyond max_pairs_per_feature included.
+// a triangle's box by the largest R of its vertices, an edge's by the largest of its two (or
+// nearly overlap: the triangles' and edges' boxes and reaches are kept in single precision,
+// rounded outwards, so a few more pairs are found, never fewer). Every found pair counts, the
+// rest neighbours and pairs beyond max_pairs_per_feature included.
 // Why no crossing follows when every vertex moves (relative to a common motion) by at most its
 // bound along a straight line: the points of a feature are convex mixes of its vertices, so
 // they move no farther than its farthest vertex; a found pair at distance d has each side move
@@ -59,7 +61,8 @@ namespace wobble {
 // needs, and the contact distance), the grid side only by its need's excess over the floor, and
 // most boxes in the grids stay bare. Each vertex looks up the triangles; then the edges whose
 // lower vertex it is look up, together, the higher-numbered edges. A candidate gets an exact
-// distance only when its box gap leaves it able to lower a bound or be a pair.
+// distance only when its box gap leaves it able to lower a bound or be a pair. The grids hold
+// each feature's box once, in single precision (SpatialGrid); nothing else holds it.
 //
 // Bounded by design: the grids and buffers are O(features) and kept between calls; a query
 // looks at no more than max_met boxes. A query that meets more (coincident layers, a cloth
@@ -120,16 +123,17 @@ class SelfContactProximity {
     std::vector<SelfContactPair> pairs;
     std::vector<Kept> kept;                   // one per feature of the query
     std::vector<int> owned;                   // the edges of an edge query
+    std::vector<Eigen::AlignedBox3d> boxes;   // their bare boxes
     std::vector<double> ends;                 // their upper vertices' nearest so far (m)
     std::vector<Eigen::AlignedBox3d> frozen;  // query boxes of the queries that stopped
   };
-  // A triangle or an edge at x: its bare box, the largest reach and need of its vertices (m),
-  // and its vertices (an edge's third is −1), together so that a candidate costs a cache line or
-  // two. need: the seeds' (triangles), the nearest after the vertex queries (edges).
+  // A triangle or an edge: the largest reach of its vertices (m), rounded up to single
+  // precision, and its vertices (an edge's third is −1). Its box is in its grid: a query
+  // measures a candidate's gap against its box as filed there (outwards to single precision,
+  // grown by its need beyond the floor), which is never nearer than the bare box is, so the
+  // search only looks at a few more candidates.
   struct Feature {
-    Eigen::AlignedBox3d box;
-    double reach;
-    double need;
+    float reach;
     int vertex[3];
   };
   WorkerPool& pool() const { return pool_ ? *pool_ : WorkerPool::shared(); }
@@ -138,25 +142,28 @@ class SelfContactProximity {
     box.max().array() += by;
     return box;
   }
-  // A feature's box in its grid: grown by its need's excess over the floor of its queries.
-  static Eigen::AlignedBox3d filed(const Feature& feature, double floor) {
-    return grown(feature.box, std::max(feature.need - floor, 0.0));
+  // A feature's bare box at x, and its need: the largest of its vertices' (need_).
+  Eigen::AlignedBox3d box(const Feature& feature) const;
+  double need(const Feature& feature) const;
+  // A feature's box for its grid: grown by its need's excess over the floor of its queries.
+  Eigen::AlignedBox3d filed(const Feature& feature, double floor) const {
+    return grown(box(feature), std::max(need(feature) - floor, 0.0));
   }
-  Eigen::AlignedBox3d filed_triangle(int t) const { return filed(triangles_[t], vertex_floor_); }
-  Eigen::AlignedBox3d filed_edge(int e) const { return filed(edges_[e], edge_floor_); }
   // How far apart two boxes are along each axis (0 where they overlap on it).
   static Eigen::Array3d box_gap(const Eigen::AlignedBox3d& a, const Eigen::AlignedBox3d& b) {
     return (a.min().array() - b.max().array()).max(b.min().array() - a.max().array()).max(0.0);
   }
   void prepare(const Eigen::MatrixXd& x, const Eigen::VectorXd& reach);
-  // seed_[v]: an upper bound on v's nearest found distance, from its mesh neighbourhood alone.
+  // need_[v] = v's seed: an upper bound on v's nearest found distance, from its mesh
+  // neighbourhood alone.
   void seed_vertex(int v);
   void query_vertex(int v, Chunk& chunk);
   // The edges whose lower vertex is v, against the higher-numbered edges.
   void query_edges(int v, Chunk& chunk);
-  // Edges e < f: their distance lowers the four vertices' nearest (own0, own1 for e's, held
-  // locally), and the pair is offered to e's kept pairs.
-  void examine_edges(int e, int f, double& own0, double& own1, Kept& kept);
+  // Edges e < f, with e's bare box and f's filed one: their distance lowers the four vertices'
+  // nearest (own0, own1 for e's, held locally), and the pair is offered to e's kept pairs.
+  void examine_edges(int e, const Eigen::AlignedBox3d& e_box, int f,
+                     const Eigen::AlignedBox3d& f_box, double& own0, double& own1, Kept& kept);
   // Offers a pair at `distance` to a feature's nearest max_pairs_per_feature.
   void stage(const SelfContactPair& pair, double distance, Kept& kept) const;
   // Appends the kept pairs to `pairs`, in the order of the other feature's vertices.
@@ -180,7 +187,9 @@ class SelfContactProximity {
 
   std::vector<Eigen::Vector3d> points_;  // #V: x row by row, packed (m)
   std::vector<double> reach_;            // #V: R, made safe (m)
-  std::vector<double> seed_;             // #V: min(2R_v, some found pair's distance) (m)
+  // #V: what a vertex's pairs must be closer than to matter (m): its seed, min(2R_v, some found
+  // pair's distance), for the vertex queries; its nearest after them, for the edge queries.
+  std::vector<double> need_;
   std::vector<Feature> triangles_, edges_;
   // What a query box grows by at least (m): the contact distance, or most vertices' needs (the
   // seeds for the vertex queries, the nearest after them for the edge queries).

@@ -25,27 +25,28 @@ void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
   const Eigen::Vector3d& p = points_[v];
   const Eigen::AlignedBox3d point(p);
   const double r = reach_[v], c2 = contact_distance_ * contact_distance_;
-  const Eigen::AlignedBox3d box = grown(point, std::max(seed_[v], vertex_floor_));
+  const Eigen::AlignedBox3d query = grown(point, std::max(need_[v], vertex_floor_));
   double own = nearest(v);  // never below v's shared value, so safe to skip against
   if (chunk.kept.empty()) chunk.kept.resize(1);
   int met = 0;
-  const auto filed = [&](int t) { return filed_triangle(t); };
-  triangle_grid_.for_each_overlapping(box, filed, [&](int t) {
+  triangle_grid_.for_each_overlapping(query, [&](int t, const Eigen::AlignedBox3f& filed) {
     if (++met > max_met) {
-      chunk.frozen.push_back(box);
+      chunk.frozen.push_back(query);
       return false;
     }
     const Feature& triangle = triangles_[t];
     const int a = triangle.vertex[0], b = triangle.vertex[1], c = triangle.vertex[2];
     if (v == a || v == b || v == c) return true;
-    const Eigen::Array3d gap = box_gap(point, triangle.box);
-    const bool found = (gap <= r + triangle.reach).all();
+    const Eigen::Array3d gap = box_gap(point, filed.cast<double>());
+    const bool found = (gap <= r + static_cast<double>(triangle.reach)).all();
     const double low2 = gap.matrix().squaredNorm();  // the distance is no less than its root
     // The exact distance only where it can lower a bound or make a pair (the rest shape's own
     // neighbours within the contact distance are many, and mostly too far for the bounds).
     const double limit = std::max(std::max(own, nearest(a)), std::max(nearest(b), nearest(c)));
     const bool for_bounds = found && low2 < limit * limit;
-    const bool for_pairs = low2 < c2 && !rest_->vertex_triangle(v, t);
+    // Whether a pair in the rest shape too, asked only where it decides something.
+    const auto at_rest = [&] { return rest_->vertex_triangle(*surface_, v, t); };
+    const bool for_pairs = low2 < c2 && (for_bounds || !at_rest());
     if (!for_bounds && !for_pairs) return true;
     const Eigen::Vector3d &xa = points_[a], &xb = points_[b], &xc = points_[c];
     const Eigen::Vector3d alpha = closest_on_triangle(p, xa, xb, xc);
@@ -57,7 +58,7 @@ void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
       lower(b, distance);
       lower(c, distance);
     }
-    if (for_pairs && distance * distance < c2) {
+    if (for_pairs && distance * distance < c2 && !(for_bounds && at_rest())) {
       SelfContactPair pair{{v, a, b, c}, {1.0, -alpha(0), -alpha(1), -alpha(2)}, {}, 0.0, distance,
                            true};
       pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)
@@ -75,29 +76,33 @@ void SelfContactProximity::query_edges(int v, Chunk& chunk) {
   // overlap, so that costs much less than a look for each.
   const CompressedRows& rows = surface_->vertex_edges;
   chunk.owned.clear();
+  chunk.boxes.clear();
   chunk.ends.clear();
-  Eigen::AlignedBox3d box;
+  Eigen::AlignedBox3d query;
   for (int k = rows.begin(v); k < rows.end(v); ++k) {
     const int e = rows.ids[k];  // ascending
     if (edges_[e].vertex[0] != v) continue;
     chunk.owned.push_back(e);
+    chunk.boxes.push_back(box(edges_[e]));
     chunk.ends.push_back(nearest(edges_[e].vertex[1]));
-    box.extend(grown(edges_[e].box, std::max(edges_[e].need, edge_floor_)));
+    query.extend(grown(chunk.boxes.back(), std::max(need(edges_[e]), edge_floor_)));
   }
   const int count = static_cast<int>(chunk.owned.size());
   if (count == 0) return;
   if (static_cast<int>(chunk.kept.size()) < count) chunk.kept.resize(count);
   double own = nearest(v);
   int met = 0;
-  const auto filed = [&](int f) { return filed_edge(f); };
-  edge_grid_.for_each_overlapping(box, filed, [&](int f) {
+  edge_grid_.for_each_overlapping(query, [&](int f, const Eigen::AlignedBox3f& filed) {
     if (++met > max_met) {
-      chunk.frozen.push_back(box);
+      chunk.frozen.push_back(query);
       return false;
     }
     // Each pair once, from its lower edge.
-    for (int k = 0; k < count && chunk.owned[k] < f; ++k)
-      examine_edges(chunk.owned[k], f, own, chunk.ends[k], chunk.kept[k]);
+    if (chunk.owned[0] >= f) return true;
+    const Eigen::AlignedBox3d f_box = filed.cast<double>();
+    for (int k = 0; k < count && chunk.owned[k] < f; ++k) {
+      examine_edges(chunk.owned[k], chunk.boxes[k], f, f_box, own, chunk.ends[k], chunk.kept[k]);
+    }
     return true;
   });
   lower(v, own);
@@ -107,17 +112,22 @@ void SelfContactProximity::query_edges(int v, Chunk& chunk) {
   }
 }
 
-void SelfContactProximity::examine_edges(int e, int f, double& own0, double& own1, Kept& kept) {
+void SelfContactProximity::examine_edges(int e, const Eigen::AlignedBox3d& e_box, int f,
+                                         const Eigen::AlignedBox3d& f_box, double& own0,
+                                         double& own1, Kept& kept) {
   const Feature &edge = edges_[e], &other = edges_[f];
   const int p0 = edge.vertex[0], p1 = edge.vertex[1], q0 = other.vertex[0], q1 = other.vertex[1];
   if (q0 == p0 || q0 == p1 || q1 == p0 || q1 == p1) return;
-  const Eigen::Array3d gap = box_gap(edge.box, other.box);
-  const bool found = (gap <= edge.reach + other.reach).all();
+  const Eigen::Array3d gap = box_gap(e_box, f_box);
+  const bool found =
+      (gap <= static_cast<double>(edge.reach) + static_cast<double>(other.reach)).all();
   const double low2 = gap.matrix().squaredNorm();  // the distance is no less than its root
   const double c2 = contact_distance_ * contact_distance_;
   const double limit = std::max(std::max(own0, own1), std::max(nearest(q0), nearest(q1)));
   const bool for_bounds = found && low2 < limit * limit;
-  const bool for_pairs = low2 < c2 && !rest_->edge_edge(e, f);
+  // Whether a pair in the rest shape too, asked only where it decides something.
+  const auto at_rest = [&] { return rest_->edge_edge(*surface_, e, f); };
+  const bool for_pairs = low2 < c2 && (for_bounds || !at_rest());
   if (!for_bounds && !for_pairs) return;
   const Eigen::Vector3d &x0 = points_[p0], &x1 = points_[p1], &y0 = points_[q0], &y1 = points_[q1];
   const Eigen::Vector2d su = closest_on_segments(x0, x1, y0, y1);
@@ -129,7 +139,7 @@ void SelfContactProximity::examine_edges(int e, int f, double& own0, double& own
     lower(q0, distance);
     lower(q1, distance);
   }
-  if (for_pairs && distance * distance < c2) {
+  if (for_pairs && distance * distance < c2 && !(for_bounds && at_rest())) {
     SelfContactPair pair{
         {p0, p1, q0, q1}, {1.0 - su(0), su(0), -(1.0 - su(1)), -su(1)}, {}, 0.0, distance, false};
     pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)

@@ -84,7 +84,7 @@ void SelfContactTerm::set(const SelfCollisionParams& params) {
   const double kept = thickness_kept(params.thickness);
   if (kept != thickness_) {
     thickness_ = kept;
-    rest_neighbours_.find(surface_, rest_skip_factor * thickness_);
+    rest_neighbours_ = RestNeighbours(surface_, rest_skip_factor * thickness_);
     remembered_.clear();
     epoch_open_ = false;
   }

@@ -138,7 +138,7 @@ int SelfCrossingGuard::undo_crossings(const SelfCollisionSurface& surface,
           // An edge that is not watched has an empty box: it overlaps nothing. At most
           // max_met triangles an edge (a pile of coincident triangles stays bounded).
           int met = 0;
-          triangle_grid_.for_each_overlapping(edge_boxes_[e], triangle_boxes_, [&](int t) {
+          triangle_grid_.for_each_overlapping(edge_boxes_[e], [&](int t) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, crossed);
             return ++met < max_met;
           });
@@ -156,7 +156,7 @@ int SelfCrossingGuard::undo_crossings(const SelfCollisionSurface& surface,
           if (edge_checked_[e] == round) continue;
           edge_checked_[e] = round;
           int met = 0;
-          triangle_grid_.for_each_overlapping(edge_boxes_[e], triangle_boxes_, [&](int t) {
+          triangle_grid_.for_each_overlapping(edge_boxes_[e], [&](int t) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, found_);
             return ++met < max_met;
           });
@@ -166,7 +166,7 @@ int SelfCrossingGuard::undo_crossings(const SelfCollisionSurface& surface,
           if (triangle_checked_[t] == round) continue;
           triangle_checked_[t] = round;
           int met = 0;
-          edge_grid_.for_each_overlapping(triangle_boxes_[t], edge_boxes_, [&](int e) {
+          edge_grid_.for_each_overlapping(triangle_boxes_[t], [&](int e) {
             if (crosses(surface, e, t, current, next)) add_crossing(e, t, found_);
             return ++met < max_met;
           });
@@ -237,7 +237,7 @@ int SelfCrossingGuard::resolve_pinned(const SelfCollisionSurface& surface,
       for (int s = surface.vertex_edges.begin(v); s < surface.vertex_edges.end(v) && !crossing;
            ++s) {
         const int f = surface.vertex_edges.ids[s];
-        triangle_grid_.for_each_overlapping(edge_boxes_[f], triangle_boxes_, [&](int u) {
+        triangle_grid_.for_each_overlapping(edge_boxes_[f], [&](int u) {
           crossing = crosses(surface, f, u, current, next);
           return !crossing;
         });
@@ -245,7 +245,7 @@ int SelfCrossingGuard::resolve_pinned(const SelfCollisionSurface& surface,
       for (int s = surface.vertex_triangles.begin(v);
            s < surface.vertex_triangles.end(v) && !crossing; ++s) {
         const int u = surface.vertex_triangles.ids[s];
-        edge_grid_.for_each_overlapping(triangle_boxes_[u], edge_boxes_, [&](int f) {
+        edge_grid_.for_each_overlapping(triangle_boxes_[u], [&](int f) {
           crossing = crosses(surface, f, u, current, next);
           return !crossing;
         });
