@@ -16,9 +16,9 @@ constexpr int chunks_per_kind = 64;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The nearest float at or above x >= 0 (the largest float for x beyond float's range).
+// The nearest float at or above x >= 0 (infinity beyond float's range).
 float above(double x) {
-  if (!(x < std::numeric_limits<float>::max())) return std::numeric_limits<float>::max();
+  if (!(x < std::numeric_limits<float>::max())) return std::numeric_limits<float>::infinity();
   const float f = static_cast<float>(x);
   return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }

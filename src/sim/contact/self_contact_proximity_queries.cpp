@@ -46,8 +46,8 @@ void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
     const bool for_bounds = found && low2 < limit * limit;
     // Whether a pair in the rest shape too, asked only where it decides something.
     const auto at_rest = [&] { return rest_->vertex_triangle(*surface_, v, t); };
-    const bool for_pairs = low2 < c2 && (for_bounds || !at_rest());
-    if (!for_bounds && !for_pairs) return true;
+    const bool may_pair = low2 < c2 && (for_bounds || !at_rest());
+    if (!for_bounds && !may_pair) return true;
     const Eigen::Vector3d &xa = points_[a], &xb = points_[b], &xc = points_[c];
     const Eigen::Vector3d alpha = closest_on_triangle(p, xa, xb, xc);
     const Eigen::Vector3d q = p - alpha(0) * xa - alpha(1) * xb - alpha(2) * xc;
@@ -58,7 +58,7 @@ void SelfContactProximity::query_vertex(int v, Chunk& chunk) {
       lower(b, distance);
       lower(c, distance);
     }
-    if (for_pairs && distance * distance < c2 && !(for_bounds && at_rest())) {
+    if (may_pair && distance * distance < c2 && !(for_bounds && at_rest())) {
       SelfContactPair pair{{v, a, b, c}, {1.0, -alpha(0), -alpha(1), -alpha(2)}, {}, 0.0, distance,
                            true};
       pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)
@@ -127,8 +127,8 @@ void SelfContactProximity::examine_edges(int e, const Eigen::AlignedBox3d& e_box
   const bool for_bounds = found && low2 < limit * limit;
   // Whether a pair in the rest shape too, asked only where it decides something.
   const auto at_rest = [&] { return rest_->edge_edge(*surface_, e, f); };
-  const bool for_pairs = low2 < c2 && (for_bounds || !at_rest());
-  if (!for_bounds && !for_pairs) return;
+  const bool may_pair = low2 < c2 && (for_bounds || !at_rest());
+  if (!for_bounds && !may_pair) return;
   const Eigen::Vector3d &x0 = points_[p0], &x1 = points_[p1], &y0 = points_[q0], &y1 = points_[q1];
   const Eigen::Vector2d su = closest_on_segments(x0, x1, y0, y1);
   const Eigen::Vector3d q = (1.0 - su(0)) * x0 + su(0) * x1 - (1.0 - su(1)) * y0 - su(1) * y1;
@@ -139,7 +139,7 @@ void SelfContactProximity::examine_edges(int e, const Eigen::AlignedBox3d& e_box
     lower(q0, distance);
     lower(q1, distance);
   }
-  if (for_pairs && distance * distance < c2 && !(for_bounds && at_rest())) {
+  if (may_pair && distance * distance < c2 && !(for_bounds && at_rest())) {
     SelfContactPair pair{
         {p0, p1, q0, q1}, {1.0 - su(0), su(0), -(1.0 - su(1)), -su(1)}, {}, 0.0, distance, false};
     pair.normal = distance > 0.0 ? Eigen::Vector3d(q / distance)
