@@ -254,10 +254,11 @@ void SelfContactProximity::freeze_near_saturated_queries(double cell) {
     for (int k = range.first; k < range.last; ++k) {
       // The box as filed (each feature's k is its own: no two tasks write the same flag).
       const bool triangle = k < triangles_filed;
-      const auto [id, box] =
+      const std::pair<int, Eigen::AlignedBox3f> entry =
           triangle ? triangle_grid_.filed(k) : edge_grid_.filed(k - triangles_filed);
-      frozen_grid_.for_each_overlapping(box.cast<double>(), [&](int) {
-        feature_frozen_[triangle ? id : triangle_count + id] = 1;
+      const int flag = triangle ? entry.first : triangle_count + entry.first;
+      frozen_grid_.for_each_overlapping(entry.second.cast<double>(), [&](int) {
+        feature_frozen_[flag] = 1;
         return false;
       });
     }
