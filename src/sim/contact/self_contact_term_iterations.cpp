@@ -52,10 +52,7 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
     // The work the force does against the pair's gap, for the convergence trace.
     if (energy) sum -= pair.force * (pair.features.target - violation(pair, p, nullptr));
   }
-  if (packed) {
-    for (Eigen::Index v = 0; v < rhs.rows(); ++v)
-      rhs.row(v) = rhs_rows_[v].transpose();
-  }
+  if (packed) unpack_rows(rhs_rows_, rhs);
   if (energy) *energy += sum;
   solve_ms_ += stopwatch.milliseconds();
 }
@@ -157,10 +154,7 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
     }
     ++pushed;
   }
-  if (pushed > 0) {
-    for (Eigen::Index v = 0; v < p.rows(); ++v)
-      p.row(v) = rows_[v].transpose();
-  }
+  if (pushed > 0) unpack_rows(rows_, p);
   return pushed;
 }
 

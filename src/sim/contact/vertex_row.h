@@ -19,6 +19,12 @@ inline void pack_rows(const Eigen::MatrixXd& m, std::vector<Eigen::Vector3d>& ro
     rows[v] = vertex_row(m, static_cast<int>(v));
 }
 
+// The inverse: `rows` back into the rows of m (#V by 3, already sized).
+inline void unpack_rows(const std::vector<Eigen::Vector3d>& rows, Eigen::MatrixXd& m) {
+  for (Eigen::Index v = 0; v < m.rows(); ++v)
+    m.row(v) = rows[v].transpose();
+}
+
 }  // namespace wobble
 
 #endif
