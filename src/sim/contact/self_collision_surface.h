@@ -44,7 +44,6 @@ class RestNeighbours {
  public:
   RestNeighbours() = default;  // none
   RestNeighbours(const SelfCollisionSurface& surface, double reach);
-  double reach() const { return reach_; }
   // surface: the one given to the constructor.
   bool vertex_triangle(const SelfCollisionSurface& surface, int vertex, int triangle) const;
   bool edge_edge(const SelfCollisionSurface& surface, int e, int f) const;

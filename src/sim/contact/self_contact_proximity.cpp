@@ -16,13 +16,6 @@ constexpr int chunks_per_kind = 64;
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The nearest float at or above x >= 0 (infinity beyond float's range).
-float above(double x) {
-  if (!(x < std::numeric_limits<float>::max())) return std::numeric_limits<float>::infinity();
-  const float f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
 // The value a quarter of `values` are above (0 for none); reorders them.
 double upper_quartile(std::vector<double>& values) {
   if (values.empty()) return 0.0;
@@ -186,7 +179,7 @@ void SelfContactProximity::prepare(const Eigen::MatrixXd& x, const Eigen::Vector
       most = std::max(most, reach_[v]);
       f.vertex[k++] = v;
     }
-    f.reach = above(most);
+    f.reach = SpatialGrid::above(most);
     return f;
   };
   triangles_.resize(surface.triangles.rows());

@@ -45,6 +45,20 @@ class SpatialGrid {
     return rounded;
   }
 
+  // A float at or below x, and one at or above it: x moved out by two of float's roundings
+  // (relative, and absolute near 0) before rounding to nearest, cheaper than std::nextafter.
+  // Beyond float's range: an infinity (a box with one is not filed).
+  static float below(double x) {
+    const double moved = x - std::abs(x) * 0x1p-22 - 0x1p-120;
+    return moved >= -max_float ? static_cast<float>(moved) : -infinite_float;
+  }
+  static float above(double x) {
+    const double moved = x + std::abs(x) * 0x1p-22 + 0x1p-120;
+    return moved <= max_float ? static_cast<float>(moved) : infinite_float;
+  }
+  static constexpr double max_float = std::numeric_limits<float>::max();
+  static constexpr float infinite_float = std::numeric_limits<float>::infinity();
+
   // Files boxes 0..count−1, box id being box_of(id) (an Eigen::AlignedBox3d, asked for a few
   // times a build); level 0's cell is `cell` (m).
   template <typename BoxOf>
@@ -125,19 +139,6 @@ class SpatialGrid {
     std::size_t first_slot = 0;      // its slots + 1 starts in start_
     int first_entry = 0, count = 0;  // its range of entries_
   };
-  // A float at or below x, and one at or above it: x moved out by two of float's roundings
-  // (relative, and absolute near 0) before rounding to nearest, cheaper than std::nextafter.
-  // Beyond float's range: an infinity (a box that is then not filed).
-  static float below(double x) {
-    const double moved = x - std::abs(x) * 0x1p-22 - 0x1p-120;
-    return moved >= -max_float ? static_cast<float>(moved) : -infinite_float;
-  }
-  static float above(double x) {
-    const double moved = x + std::abs(x) * 0x1p-22 + 0x1p-120;
-    return moved <= max_float ? static_cast<float>(moved) : infinite_float;
-  }
-  static constexpr double max_float = std::numeric_limits<float>::max();
-  static constexpr float infinite_float = std::numeric_limits<float>::infinity();
   static std::uint32_t cell_slot(int x, int y, int z, std::uint32_t slots) {
     // Three large primes, multiplied and mixed: neighbouring cells land in unrelated slots.
     const std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::int64_t>(x)) * 73856093u ^
