@@ -2,9 +2,9 @@
 # Install what is missing, build, and time Wobble's stepper against the plain reference on the
 # curtain, 128x128 and 256x256 cloths and the jelly; ends with one table and the Chebyshev curve.
 # Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain);
-# --self-collision prints the self-collision rows alone, --contact the contact rows; --solvers
-# races L-BFGS against
-# local-global (docs/solvers.md).
+# --self-collision prints the self-collision rows alone (--self-collision-settling: whether the
+# shipped pile settles with fewer iterations or a thinner cloth), --contact the contact rows;
+# --solvers races L-BFGS against local-global (docs/solvers.md).
 #
 # bash scripts/benchmark.sh --busy-neighbour [--rounds N] [SCENE ...]
 #   instead times every shipped scene's step quiet and beside a busy process that the benchmark

@@ -16,6 +16,7 @@
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
 #include "self_collision_cost.h"
+#include "self_collision_settling.h"
 #include "sim/simulation.h"
 #include "solve_cost.h"
 #include "solver_race.h"
@@ -189,6 +190,10 @@ int main(int argc, char** argv) {
   }
   if (argc > 1 && std::string(argv[1]) == "--solvers") {
     wobble::benchmark::print_solver_race();  // its rows alone
+    return 0;
+  }
+  if (argc > 1 && std::string(argv[1]) == "--self-collision-settling") {
+    wobble::benchmark::print_self_collision_settling();  // its rows alone
     return 0;
   }
   if (argc > 1 && std::string(argv[1]) == "--self-collision") {
