@@ -31,13 +31,13 @@ namespace wobble {
 // (target: the thickness, or a tenth of it more than the pair had if it started closer). After
 // every update of the iterate (limit_iterate):
 //   1. one Gauss-Seidel sweep pushes each pair with g > 0 apart along n, its vertices weighted by
-//      inverse mass (pins do not give way), the closest points' slide since the epoch started
-//      held back by up to μ times the push (Coulomb; a kept epoch spans steps, so a resting pile
-//      does not creep);
+//      inverse mass (pins do not give way);
 //   2. each pair's force λ ≥ 0 (N) follows: λ ← max(0, λ + κg), κ = η/Σₖ(βₖ²/Wₖ) with Wₖ the
 //      vertex's inertia (1 + cΔt)mₖ/Δt² (what would have moved free masses as far); the local
 //      step adds λβₖn to vertex k (add_targets), so that the global step learns the contact
-//      instead of meeting it anew each iteration; λ carries over to the same pair next step;
+//      instead of meeting it anew each iteration, and with it Coulomb friction −μλ·s/max(‖s‖, ε)
+//      against the closest points' slide s over the step (ε = friction_width(): below it,
+//      static friction as a stiff spring); λ carries over to the same pair next step;
 //   3. every vertex beyond its bound is moved back within it, the common motion taken out; if any
 //      was, a new epoch starts from the bounded iterate (at most max_epochs a step).
 // L-BFGS sees the energy (κ/2) max(0, g + λ/κ)² per pair with Huber friction μλ·f(‖s‖), and the
@@ -101,11 +101,13 @@ class SelfContactTerm : public StepTerm {
   // Finds the pairs and bounds at x_ (reaches from `heading`, #V by 3), κ and λ's start.
   void start_epoch(const StepContext& step, const Eigen::MatrixXd& heading);
   // g(p) (m) and the closest points' slide in the tangent plane from anchor_ (m): over the step,
-  // or over the steps a kept epoch spans, so that a resting pile does not creep.
+  // or over the steps a kept epoch spans, so that a resting pile does not creep (friction's).
   double violation(const Pair& pair, const Eigen::MatrixXd& p, Eigen::Vector3d* slide) const;
   // The same with vertex v at position(v) (the sweep reads packed rows).
   template <typename Position>
   double violation(const Pair& pair, Position position, Eigen::Vector3d* slide) const;
+  // Huber's width for friction (m): slides below it are held as by a stiff spring.
+  double friction_width() const { return 0.01 * thickness_; }
   // The surface's common motion from x_ to p (m): the median along each axis (see the .cpp).
   Eigen::Vector3d common_motion(const Eigen::MatrixXd& p) const;
   // Whether every surface vertex of p is within `fraction` of its bound, the common motion out.

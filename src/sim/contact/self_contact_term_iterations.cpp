@@ -35,6 +35,7 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
 void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                                   Eigen::MatrixXd& rhs, double* energy) {
   const Stopwatch stopwatch;
+  const double mu = colliders_->friction(), epsilon = friction_width();
   double sum = 0.0;
   // Added to packed rows of rhs (the same additions in the same order as to rhs itself).
   bool packed = false;
@@ -44,13 +45,18 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
       pack_rows(rhs, rhs_rows_);
       packed = true;
     }
-    const Eigen::Vector3d force = pair.force * pair.features.normal;
+    Eigen::Vector3d force = pair.force * pair.features.normal;
+    Eigen::Vector3d slide;
+    const double g = violation(pair, p, mu > 0.0 ? &slide : nullptr);
+    // Coulomb friction against the closest points' slide over the step: μλ, less below
+    // friction_width() (static friction as a stiff spring), as L-BFGS's energy has it.
+    if (mu > 0.0) force -= (mu * pair.force / std::max(slide.norm(), epsilon)) * slide;
     for (int k = 0; k < 4; ++k) {
       const double beta = pair.features.beta[k];
       if (beta != 0.0) rhs_rows_[pair.features.vertex[k]] += beta * force;
     }
     // The work the force does against the pair's gap, for the convergence trace.
-    if (energy) sum -= pair.force * (pair.features.target - violation(pair, p, nullptr));
+    if (energy) sum -= pair.force * (pair.features.target - g);
   }
   if (packed) unpack_rows(rhs_rows_, rhs);
   if (energy) *energy += sum;
@@ -60,8 +66,7 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
 double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                                    Eigen::MatrixXd* gradient) const {
   if (!on_) return 0.0;
-  // Huber's width: slides below it are held as by a stiff spring (static friction).
-  const double epsilon = 0.01 * thickness_;
+  const double epsilon = friction_width();
   double energy = 0.0;
   for (const Pair& pair : pairs_) {
     if (!(pair.stiffness > 0.0)) continue;
@@ -94,17 +99,18 @@ double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::Mat
 
 int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
   // One Gauss-Seidel sweep over the pairs: each pair short of its gap is pushed apart along its
-  // normal, its vertices weighted by inverse mass, and its closest points' slide over the step
-  // held back by Coulomb's μ times that push. The push also becomes the pair's force λ in the
-  // next right-hand sides (what would have moved free masses as far), so that the global step
-  // learns the contact instead of meeting it anew each iteration.
+  // normal, its vertices weighted by inverse mass. The push also becomes the pair's force λ in
+  // the next right-hand sides (what would have moved free masses as far), so that the global step
+  // learns the contact instead of meeting it anew each iteration, and friction follows λ there
+  // (add_targets). (Friction in the sweep, holding the slide back by μ times each push, was
+  // friction as strong as the solve was far from converged: with 30 iterations the shipped pile
+  // gained 96 J as it lay.)
   //
   // A pair with no force that was open by a slack s when last looked at stays open, and so does
   // nothing, until its vertices have travelled far enough to close it: g changes by at most
   // Σₖ|βₖ| times how far vertex k moved, and each vertex's travel (the length of its path since
   // the first sweep of the step or epoch) bounds that. Such pairs are passed over without a look
   // (most of a resting pile's); everything else is as if every pair were looked at.
-  const double mu = colliders_->friction();
   int pushed = 0;
   pack_rows(p, rows_);
   if (sweep_fresh_ || travel_.size() != rows_.size() || last_rows_.size() != rows_.size()) {
@@ -125,10 +131,8 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
     // A margin for rounding: a pair this close to closing is looked at.
     if (pair.force == 0.0 && pair.slack > 0.0 && travel - pair.travel_at < 0.999 * pair.slack)
       continue;
-    Eigen::Vector3d slide;
     const double g = violation(
-        pair, [&](int v) -> const Eigen::Vector3d& { return rows_[v]; },
-        mu > 0.0 ? &slide : nullptr);
+        pair, [&](int v) -> const Eigen::Vector3d& { return rows_[v]; }, nullptr);
     // λ follows the pair: up by what had to be pushed, down as the gap opens beyond its target.
     pair.force = std::max(0.0, pair.force + pair.stiffness * g);
     pair.slack = -g;
@@ -140,11 +144,7 @@ int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
       if (f.beta[k] != 0.0 && !step.pinned[v]) weight += f.beta[k] * f.beta[k] / step.rest.m(v);
     }
     if (!(weight > 0.0)) continue;
-    Eigen::Vector3d push = (g / weight) * f.normal;
-    if (mu > 0.0) {
-      const double length = slide.norm();
-      if (length > 0.0) push -= (std::min(mu * g, length) / length / weight) * slide;
-    }
+    const Eigen::Vector3d push = (g / weight) * f.normal;
     for (int k = 0; k < 4; ++k) {
       const int v = f.vertex[k];
       if (f.beta[k] == 0.0 || step.pinned[v]) continue;
