@@ -108,6 +108,9 @@ class SelfContactTerm : public StepTerm {
   double violation(const Pair& pair, Position position, Eigen::Vector3d* slide) const;
   // Huber's width for friction (m): slides below it are held as by a stiff spring.
   double friction_width() const { return 0.01 * thickness_; }
+  // Friction of `strength` (N, μλ) against a pair's slide (m): subtracts its force on the
+  // closest points from `force` and returns its energy (J), both Huber's (friction_width()).
+  double add_friction(double strength, const Eigen::Vector3d& slide, Eigen::Vector3d& force) const;
   // The surface's common motion from x_ to p (m): the median along each axis (see the .cpp).
   Eigen::Vector3d common_motion(const Eigen::MatrixXd& p) const;
   // Whether every surface vertex of p is within `fraction` of its bound, the common motion out.

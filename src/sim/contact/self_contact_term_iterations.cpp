@@ -35,7 +35,7 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
 void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                                   Eigen::MatrixXd& rhs, double* energy) {
   const Stopwatch stopwatch;
-  const double mu = colliders_->friction(), epsilon = friction_width();
+  const double mu = colliders_->friction();
   double sum = 0.0;
   // Added to packed rows of rhs (the same additions in the same order as to rhs itself).
   bool packed = false;
@@ -47,10 +47,10 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
     }
     Eigen::Vector3d force = pair.force * pair.features.normal;
     Eigen::Vector3d slide;
-    const double g = violation(pair, p, mu > 0.0 ? &slide : nullptr);
-    // Coulomb friction against the closest points' slide over the step: μλ, less below
-    // friction_width() (static friction as a stiff spring), as L-BFGS's energy has it.
-    if (mu > 0.0) force -= (mu * pair.force / std::max(slide.norm(), epsilon)) * slide;
+    // g and the slide only where they are used (the trace, friction).
+    const double g = energy || mu > 0.0 ? violation(pair, p, mu > 0.0 ? &slide : nullptr) : 0.0;
+    // Coulomb friction μλ against the closest points' slide over the step, as L-BFGS's energy.
+    if (mu > 0.0) add_friction(mu * pair.force, slide, force);
     for (int k = 0; k < 4; ++k) {
       const double beta = pair.features.beta[k];
       if (beta != 0.0) rhs_rows_[pair.features.vertex[k]] += beta * force;
@@ -66,7 +66,6 @@ void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::Matr
 double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                                    Eigen::MatrixXd* gradient) const {
   if (!on_) return 0.0;
-  const double epsilon = friction_width();
   double energy = 0.0;
   for (const Pair& pair : pairs_) {
     if (!(pair.stiffness > 0.0)) continue;
@@ -78,16 +77,7 @@ double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::Mat
       energy += 0.5 * pair.stiffness * pressed * pressed;
       force = pair.stiffness * pressed * pair.features.normal;
     }
-    if (pair.friction > 0.0) {
-      const double length = slide.norm();
-      if (length < epsilon) {
-        energy += pair.friction * length * length / (2.0 * epsilon);
-        force -= (pair.friction / epsilon) * slide;
-      } else {
-        energy += pair.friction * (length - 0.5 * epsilon);
-        force -= (pair.friction / length) * slide;
-      }
-    }
+    if (pair.friction > 0.0) energy += add_friction(pair.friction, slide, force);
     if (!gradient) continue;
     for (int k = 0; k < 4; ++k) {
       const double beta = pair.features.beta[k];
@@ -95,6 +85,19 @@ double SelfContactTerm::add_energy(const StepContext& /*step*/, const Eigen::Mat
     }
   }
   return energy;
+}
+
+double SelfContactTerm::add_friction(double strength, const Eigen::Vector3d& slide,
+                                     Eigen::Vector3d& force) const {
+  // Huber's function of the slide's length: below ε = friction_width() a stiff spring (static
+  // friction), beyond it a constant pull `strength` (Coulomb).
+  const double epsilon = friction_width(), length = slide.norm();
+  if (length < epsilon) {
+    force -= (strength / epsilon) * slide;
+    return strength * length * length / (2.0 * epsilon);
+  }
+  force -= (strength / length) * slide;
+  return strength * (length - 0.5 * epsilon);
 }
 
 int SelfContactTerm::separate(const StepContext& step, Eigen::MatrixXd& p) {
