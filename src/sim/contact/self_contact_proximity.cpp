@@ -90,10 +90,15 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   scratch_.resize(triangle_count);
   for (int t = 0; t < triangle_count; ++t)
     scratch_[t] = filed_triangle(t).sizes().maxCoeff();
-  // Cells the size of most boxes: each box covers a few cells, each cell holds a few boxes.
+  // Cells twice the size of most boxes: a query box, grown by the floor, spans about three
+  // boxes, and with cells the size of a box it looked at about 125 cells on the first level, most
+  // of them empty (a sheet fills few cells of a 3D grid), and spent its time waiting on their
+  // slots; twice as large, it looks at a fifth as many, each holding about four times as many
+  // boxes (the piles' searches 15-39% faster; three times as large was slower at 40×40).
   double cell = std::max(surface.mean_edge, contact_distance_);
   const double typical = upper_quartile(scratch_);
   if (std::isfinite(typical) && typical > 0.0) cell = typical;
+  cell *= cell_per_box;
   triangle_grid_.build(triangle_count, filed_triangle, cell);
 
   chunks_.resize(2 * chunks_per_kind);

@@ -80,6 +80,8 @@ class SelfContactProximity {
   static constexpr int max_pairs_per_feature = 32;
   static constexpr int max_met = 1024;
   static constexpr double bound_fraction = 0.9;  // γ
+  // The search grids' cells, in sides of the upper quartile of the triangles' filed boxes.
+  static constexpr double cell_per_box = 2.0;
   // The floor f below which no pair is let come (m): this share of the contact distance, and
   // at least rounding_margin roundings of the largest coordinate (see floor()).
   static constexpr double separation_share = 1e-6;
