@@ -11,8 +11,11 @@ source scripts/ensure-packages.sh
 # GCC's sanitizer runtimes (libasan8, libubsan1) come with g++: libgcc-12-dev depends on them.
 ensure_packages test
 
-# -O2 -g: fast enough for the suite, with line numbers in every report.
+# -O2 -g1: fast enough for the suite, with line numbers in every report (-g1 is line tables and
+# function names: -g's full debug information took a fifth of the build's time).
+flags="-O2 -g1 -DNDEBUG"
 cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWOBBLE_SANITIZE=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" -DCMAKE_C_FLAGS_RELWITHDEBINFO="$flags" \
   -DWOBBLE_BUILD_TESTS=ON >/dev/null
 
 # Set before the build too: gtest_discover_tests runs each test program while building.
@@ -41,17 +44,23 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp"
 # the panel's logic and the camera's math (wobble_interaction_tests, wobble_ui_tests,
 # wobble_render_tests). Left to the plain pass of scripts/test.sh, which runs them all: the golden
 # images (their time is Mesa's software rasterizer, whose code is not Wobble's; the app tests
-# still render through it under the sanitizers), the course checker's scenarios
+# still render through it under the sanitizers), the tests that simulate or render a scene for
+# many steps (tests/sanitizers/long_tests.txt: shorter tests run the same code here), the course
+# checker's scenarios
 # (CheckAssignment.*, labelled checker_scenario: scripts/check-assignment.sh compiles the
 # student's and the checker's code itself, without these flags, so under this build they would
 # repeat the plain pass's work exactly; SeedPasses and BuildStepServers stay, since the student
-# tests need the cache and the step servers they build), the docs checks, and the benchmarks,
+# tests need the cache and the step servers they build), seed_standalone (the same six functions
+# are in wobble_sim, instrumented here and run by its tests), the docs checks, and the benchmarks,
 # which no test runs.
 targets=(wobble_sim_tests wobble_sim_allocation_tests wobble_io_tests wobble_bounded_tests
   wobble_student_step_tests wobble_student_view_tests wobble_student_build_tests wobble_app_tests
-  wobble_added_setting_test wobble_interaction_tests wobble_ui_tests wobble_render_tests
-  seed_standalone)
+  wobble_added_setting_test wobble_interaction_tests wobble_ui_tests wobble_render_tests)
 cmake --build build-sanitize --parallel "$(nproc)" --target "${targets[@]}"
+# The long tests' names, anchored, as one regular expression (their only special character is
+# the dot).
+long_tests=$(grep -v '^#' tests/sanitizers/long_tests.txt | sed 's/[.]/[.]/g' | paste -sd '|' -)
 ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" \
-  --label-exclude checker_scenario --exclude-regex '_NOT_BUILT|^docs/|^ShippedClothPile\.'
+  --label-exclude checker_scenario \
+  --exclude-regex "_NOT_BUILT|^docs/|^SeedFunctions[.]|^ShippedClothPile[.]|^($long_tests)\$"
 

@@ -740,7 +740,7 @@ std::vector<BadInput> contact_catalogue() {
 
 // The address space a refusal may take: 200 MiB, except under AddressSanitizer, whose shadow
 // memory alone reserves terabytes of address space.
-#if defined(__SANITIZE_ADDRESS__)  // GCC
+#if defined(WOBBLE_SANITIZE_BUILD) || defined(__SANITIZE_ADDRESS__)  // ours, GCC
 #define WOBBLE_ADDRESS_SANITIZER 1
 #elif defined(__has_feature)  // clang
 #if __has_feature(address_sanitizer)

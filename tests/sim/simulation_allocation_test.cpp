@@ -12,9 +12,10 @@
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
 
-// GCC defines __SANITIZE_ADDRESS__ under -fsanitize=address (WOBBLE_SANITIZE); Clang answers
-// __has_feature instead.
-#if defined(__SANITIZE_ADDRESS__)
+// WOBBLE_SANITIZE's build defines WOBBLE_SANITIZE_BUILD for this file, which it compiles without
+// the instrumentation; GCC defines __SANITIZE_ADDRESS__ under -fsanitize=address, and Clang
+// answers __has_feature instead.
+#if defined(WOBBLE_SANITIZE_BUILD) || defined(__SANITIZE_ADDRESS__)  // ours, GCC
 #define WOBBLE_ADDRESS_SANITIZER 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
