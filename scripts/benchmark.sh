@@ -2,7 +2,8 @@
 # Install what is missing, build, and time Wobble's stepper against the plain reference on the
 # curtain, 128x128 and 256x256 cloths and the jelly; ends with one table and the Chebyshev curve.
 # Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain);
-# --self-collision prints the self-collision rows alone (--self-collision-settling: whether the
+# --self-collision prints the self-collision rows alone (--self-collision-motion: only whether it
+# leaves free motion free, docs/performance.md; --self-collision-settling: whether the
 # shipped pile settles with fewer iterations or a thinner cloth), --contact the contact rows;
 # --solvers races L-BFGS against local-global (docs/solvers.md).
 #

@@ -129,33 +129,9 @@ PileRun run_pile(int n, bool on, const char* solver, double budget_s) {
   if (child == 0) {
     close(channel[0]);
     const long before_kb = status_kb("VmRSS");
-    ClothGridOptions options;
-    options.resolution = n;
-    options.bend = false;
-    SpringNetwork cloth = make_cloth_grid(options);
-    const double edge = 1.0 / (n - 1);
-    Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(cloth.V.rows(), 3);
-    for (Eigen::Index i = 0; i < cloth.V.rows(); ++i) {
-      const double x = cloth.V(i, 0), z = cloth.V(i, 2);
-      cloth.V(i, 1) = 0.55 - z;
-      cloth.V(i, 2) = 0.05 * std::sin(2.0 * pi * x / 0.25) + 0.2 * edge * jitter(i, 1);
-      // Buckling across its plane, more the higher up (as tests/sim/folding_scenes.cpp's pile).
-      const double height = 0.55 - z;
-      velocity(i, 0) = 0.3 * height * std::cos(2.0 * pi * x);
-      velocity(i, 1) = -2.5;
-      velocity(i, 2) = 1.2 * height * std::sin(3.0 * pi * x + 0.5) + 0.3 * jitter(i, 2);
-    }
-    SimulationParams params;
-    params.k = 1000.0;
-    params.dt = 1.0 / 60.0;
-    params.iterations = 15;
-    params.damping = 0.2;
-    params.solver = solver;
-    params.contact.friction = 0.4;
-    params.contact.colliders = {Collider{}};
-    params.self_collision.on = on;
-    params.self_collision.thickness = 0.005;
-    Simulation simulation(cloth, {}, params, velocity);
+    const ThrownPile pile = thrown_pile(n, on, solver);
+    const SpringNetwork& cloth = pile.cloth;
+    Simulation simulation(cloth, {}, pile.params, pile.velocity);
     PhaseTimes times;
     std::vector<double> guard;
     const auto start = std::chrono::steady_clock::now();
@@ -252,6 +228,39 @@ void print_large_drape() {
 }
 
 }  // namespace
+
+ThrownPile thrown_pile(int n, bool on, const char* solver) {
+  ClothGridOptions options;
+  options.resolution = n;
+  options.bend = false;
+  ThrownPile pile;
+  pile.cloth = make_cloth_grid(options);
+  SpringNetwork& cloth = pile.cloth;
+  const double edge = 1.0 / (n - 1);
+  Eigen::MatrixXd& velocity = pile.velocity;
+  velocity = Eigen::MatrixXd::Zero(cloth.V.rows(), 3);
+  for (Eigen::Index i = 0; i < cloth.V.rows(); ++i) {
+    const double x = cloth.V(i, 0), z = cloth.V(i, 2);
+    cloth.V(i, 1) = 0.55 - z;
+    cloth.V(i, 2) = 0.05 * std::sin(2.0 * pi * x / 0.25) + 0.2 * edge * jitter(i, 1);
+    // Buckling across its plane, more the higher up (as tests/sim/folding_scenes.cpp's pile).
+    const double height = 0.55 - z;
+    velocity(i, 0) = 0.3 * height * std::cos(2.0 * pi * x);
+    velocity(i, 1) = -2.5;
+    velocity(i, 2) = 1.2 * height * std::sin(3.0 * pi * x + 0.5) + 0.3 * jitter(i, 2);
+  }
+  SimulationParams& params = pile.params;
+  params.k = 1000.0;
+  params.dt = 1.0 / 60.0;
+  params.iterations = 15;
+  params.damping = 0.2;
+  params.solver = solver;
+  params.contact.friction = 0.4;
+  params.contact.colliders = {Collider{}};
+  params.self_collision.on = on;
+  params.self_collision.thickness = 0.005;
+  return pile;
+}
 
 void print_self_collision_cost() {
   print_pile();

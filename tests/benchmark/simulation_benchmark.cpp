@@ -16,6 +16,7 @@
 #include "instruments_cost.h"
 #include "quantity_colors_cost.h"
 #include "self_collision_cost.h"
+#include "self_collision_motion.h"
 #include "self_collision_settling.h"
 #include "sim/simulation.h"
 #include "solve_cost.h"
@@ -196,7 +197,12 @@ int main(int argc, char** argv) {
     wobble::benchmark::print_self_collision_settling();  // its rows alone
     return 0;
   }
+  if (argc > 1 && std::string(argv[1]) == "--self-collision-motion") {
+    wobble::benchmark::print_self_collision_motion();  // its rows alone
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--self-collision") {
+    wobble::benchmark::print_self_collision_motion();
     wobble::benchmark::print_self_collision_cost();  // its rows alone
     return 0;
   }
