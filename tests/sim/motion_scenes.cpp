@@ -101,7 +101,8 @@ MotionScene sliding_sheet_scene(double angle_degrees, double friction, bool on_p
     scene.params.self_collision.on = true;
     scene.params.self_collision.thickness = thickness;
   }
-  const int first = static_cast<int>(scene.network.V.rows() - small.V.rows());
+  // The small sheet is the whole network on the plane, and follows the slope's sheet otherwise.
+  const int first = on_plane ? 0 : static_cast<int>(scene.network.V.rows());
   if (!on_plane) append(scene.network, small);
   for (int v = first; v < scene.network.V.rows(); ++v)
     scene.moving.push_back(v);
