@@ -4,7 +4,8 @@
 # Extra arguments go to Google Benchmark (e.g. --benchmark_filter=curtain);
 # --self-collision prints the self-collision rows alone (--self-collision-motion: only whether it
 # leaves free motion free, docs/performance.md; --self-collision-settling: whether the
-# shipped pile settles with fewer iterations or a thinner cloth), --contact the contact rows;
+# shipped pile settles with fewer iterations or a thinner cloth; --self-collision-landing:
+# whether the tests' pile settles when it lands harder), --contact the contact rows;
 # --solvers races L-BFGS against local-global (docs/solvers.md).
 #
 # bash scripts/benchmark.sh --busy-neighbour [--rounds N] [SCENE ...]

@@ -6,7 +6,9 @@
 
 #include "io/load_scene.h"
 #include "median.h"
+#include "sim/folding_scenes.h"
 #include "sim/instruments/frame_energy.h"
+#include "sim/mesh_crossings.h"
 #include "sim/simulation.h"
 
 namespace wobble::benchmark {
@@ -43,6 +45,42 @@ void print_self_collision_settling() {
       std::printf("| %d | %.3g m | %.3g J | %.3g J | %.3g J | %.1f | %.0f | %s |\n", iterations,
                   thickness, start, most, kinetic, median(steps), median(searches),
                   settles ? "yes" : "no");
+      std::fflush(stdout);
+    }
+  }
+}
+
+void print_self_collision_landing() {
+  std::printf(
+      "| thickness | let go | most kinetic over steps 401-460 | the tests ask below | crossings "
+      "when self-collision starts / at the end |\n|---|---|---|---|---|\n");
+  for (const double thickness : {0.01, 0.005}) {
+    SelfCollisionParams params{true, thickness};
+    const testing::FoldingScene scene = testing::cloth_pile_scene(params);
+    struct Start {
+      const char* name;
+      double scale;
+      int free_steps;
+    };
+    for (const Start start :
+         {Start{"as the tests", 1.0, 0}, Start{"1.6x as fast", 1.6, 0}, Start{"2x as fast", 2.0, 0},
+          Start{"self-collision from step 10", 1.0, 10}}) {
+      SimulationParams first = scene.params;
+      first.self_collision.on = start.free_steps == 0;
+      Simulation simulation(scene.network, scene.pins, first, start.scale * scene.initial_velocity);
+      double most = 0.0;
+      long crossed = 0;
+      for (int step = 0; step < 460; ++step) {
+        if (step == start.free_steps) {
+          simulation.set_self_collision(params);
+          crossed = testing::count_mesh_crossings(simulation.positions(), scene.network.F);
+        }
+        simulation.step();
+        if (step >= 400) most = std::max(most, frame_energy(simulation).kinetic);
+      }
+      std::printf("| %.3g m | %s | %.3g J | %.0e J | %ld / %ld |\n", thickness, start.name, most,
+                  thickness < 0.01 ? 1e-4 : 1e-5, crossed,
+                  testing::count_mesh_crossings(simulation.positions(), scene.network.F));
       std::fflush(stdout);
     }
   }

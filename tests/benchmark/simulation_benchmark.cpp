@@ -197,6 +197,10 @@ int main(int argc, char** argv) {
     wobble::benchmark::print_self_collision_settling();  // its rows alone
     return 0;
   }
+  if (argc > 1 && std::string(argv[1]) == "--self-collision-landing") {
+    wobble::benchmark::print_self_collision_landing();  // its rows alone
+    return 0;
+  }
   if (argc > 1 && std::string(argv[1]) == "--self-collision-motion") {
     wobble::benchmark::print_self_collision_motion();  // its rows alone
     return 0;
