@@ -185,30 +185,28 @@ void print_single_precision_error() {
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  if (argc > 1 && std::string(argv[1]) == "--contact") {
-    wobble::benchmark::print_contact_cost();  // its rows alone
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--solvers") {
-    wobble::benchmark::print_solver_race();  // its rows alone
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--self-collision-settling") {
-    wobble::benchmark::print_self_collision_settling();  // its rows alone
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--self-collision-landing") {
-    wobble::benchmark::print_self_collision_landing();  // its rows alone
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--self-collision-motion") {
-    wobble::benchmark::print_self_collision_motion();  // its rows alone
-    return 0;
-  }
-  if (argc > 1 && std::string(argv[1]) == "--self-collision") {
-    wobble::benchmark::print_self_collision_motion();
-    wobble::benchmark::print_self_collision_cost();  // its rows alone
-    return 0;
+  // Flags that print one part's rows alone instead of the timed benchmarks.
+  struct Part {
+    const char* flag;
+    void (*print)();
+  };
+  static constexpr Part parts[] = {
+      {"--contact", wobble::benchmark::print_contact_cost},
+      {"--solvers", wobble::benchmark::print_solver_race},
+      {"--self-collision-settling", wobble::benchmark::print_self_collision_settling},
+      {"--self-collision-landing", wobble::benchmark::print_self_collision_landing},
+      {"--self-collision-motion", wobble::benchmark::print_self_collision_motion},
+      {"--self-collision",
+       [] {
+         wobble::benchmark::print_self_collision_motion();
+         wobble::benchmark::print_self_collision_cost();
+       }},
+  };
+  for (const Part& part : parts) {
+    if (argc > 1 && std::string(argv[1]) == part.flag) {
+      part.print();
+      return 0;
+    }
   }
   for (const BenchmarkScene& scene : wobble::benchmark::benchmark_scenes()) {
     const int steps = steps_for(scene);
