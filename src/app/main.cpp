@@ -1,5 +1,7 @@
 // wobble: the command-line entry point. Every error is caught here, once, and becomes one line
-// on stderr and an exit code: 2 for bad input or usage, 1 for a failure at run time.
+// on stderr and an exit code: 2 for bad input or usage, and for a machine that cannot draw (no
+// display, no EGL, no OpenGL 3.3, a shader the driver refuses: what the user must set up); 1 for
+// a failure at run time.
 #include <exception>
 #include <iostream>
 
@@ -8,6 +10,8 @@
 #include "app/headless/run_headless.h"
 #include "app/viewer/run_window.h"
 #include "io/atomic_file.h"
+#include "platform/context_error.h"
+#include "render/shader_program.h"
 #include "sim/input_error.h"
 
 int main(int argc, char** argv) {
@@ -22,6 +26,12 @@ int main(int argc, char** argv) {
     return wobble::run_window(*command, std::cout, std::cerr);
   } catch (const wobble::InputError& error) {
     std::cerr << "wobble: " << wobble::one_line(error.what()) << "\n";
+    return 2;
+  } catch (const wobble::ContextError& error) {
+    std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";
+    return 2;
+  } catch (const wobble::ShaderError& error) {
+    std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";
     return 2;
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << wobble::one_line(error.what()) << "\n";

@@ -1,19 +1,67 @@
 #include "egl_context.h"
 
+// EGL is opened at run time (dlopen), not linked: a machine without libEGL.so.1 still runs the
+// window, and --headless there says what is missing instead of the program not starting.
+#define EGL_EGL_PROTOTYPES 0
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <dlfcn.h>
 #include <glad/gl.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <type_traits>
 
 #include "sim/input_error.h"
 
 namespace wobble {
 
 namespace {
+
+// The EGL functions used here, from libEGL.so.1 (glvnd's, which picks the vendor: Mesa or
+// NVIDIA). Opened once; `missing` says why when it cannot be.
+struct EglLibrary {
+  PFNEGLGETPROCADDRESSPROC get_proc_address = nullptr;
+  PFNEGLQUERYSTRINGPROC query_string = nullptr;
+  PFNEGLGETERRORPROC get_error = nullptr;
+  PFNEGLINITIALIZEPROC initialize = nullptr;
+  PFNEGLTERMINATEPROC terminate = nullptr;
+  PFNEGLCHOOSECONFIGPROC choose_config = nullptr;
+  PFNEGLBINDAPIPROC bind_api = nullptr;
+  PFNEGLCREATECONTEXTPROC create_context = nullptr;
+  PFNEGLMAKECURRENTPROC make_current = nullptr;
+  PFNEGLDESTROYCONTEXTPROC destroy_context = nullptr;
+  std::string missing;
+
+  EglLibrary() {
+    void* library = dlopen("libEGL.so.1", RTLD_NOW | RTLD_LOCAL);
+    if (library == nullptr) {
+      missing = "libEGL.so.1 is not installed (Debian: libegl1, with libegl-mesa0 for Mesa)";
+      return;
+    }
+    const auto load = [&](auto& function, const char* name) {
+      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(library, name));
+      if (function == nullptr && missing.empty()) missing = std::string("libEGL.so.1 lacks ") + name;
+    };
+    load(get_proc_address, "eglGetProcAddress");
+    load(query_string, "eglQueryString");
+    load(get_error, "eglGetError");
+    load(initialize, "eglInitialize");
+    load(terminate, "eglTerminate");
+    load(choose_config, "eglChooseConfig");
+    load(bind_api, "eglBindAPI");
+    load(create_context, "eglCreateContext");
+    load(make_current, "eglMakeCurrent");
+    load(destroy_context, "eglDestroyContext");
+  }
+};
+
+const EglLibrary& egl() {
+  static const EglLibrary library;
+  return library;
+}
 
 std::string egl_error_name(EGLint code) {
   switch (code) {
@@ -61,9 +109,9 @@ EGLDisplay device_display(const char* client_extensions, std::string& failure) {
     return EGL_NO_DISPLAY;
   }
   const auto query_devices =
-      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(egl().get_proc_address("eglQueryDevicesEXT"));
   const auto platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+      egl().get_proc_address("eglGetPlatformDisplayEXT"));
   EGLDeviceEXT devices[8];
   EGLint count = 0;
   if (query_devices == nullptr || platform_display == nullptr ||
@@ -74,7 +122,7 @@ EGLDisplay device_display(const char* client_extensions, std::string& failure) {
   const EGLDisplay display = platform_display(EGL_PLATFORM_DEVICE_EXT, devices[0], nullptr);
   if (display == EGL_NO_DISPLAY) {
     failure = "eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT) failed (" +
-              egl_error_name(eglGetError()) + ")";
+              egl_error_name(egl().get_error()) + ")";
   }
   return display;
 }
@@ -85,14 +133,14 @@ EGLDisplay surfaceless_display(const char* client_extensions, std::string& failu
     return EGL_NO_DISPLAY;
   }
   const auto platform_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+      egl().get_proc_address("eglGetPlatformDisplayEXT"));
   const EGLDisplay display =
       platform_display == nullptr
           ? EGL_NO_DISPLAY
           : platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   if (display == EGL_NO_DISPLAY) {
     failure = "eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA) failed (" +
-              egl_error_name(eglGetError()) + ")";
+              egl_error_name(egl().get_error()) + ")";
   }
   return display;
 }
@@ -100,16 +148,16 @@ EGLDisplay surfaceless_display(const char* client_extensions, std::string& failu
 // Initialize `display` and make a GL 3.3 core context current on it without a surface.
 EGLContext make_current_context(EGLDisplay display, std::string& failure) {
   EGLint major = 0, minor = 0;
-  if (eglInitialize(display, &major, &minor) != EGL_TRUE) {
-    failure = "eglInitialize failed (" + egl_error_name(eglGetError()) + ")";
+  if (egl().initialize(display, &major, &minor) != EGL_TRUE) {
+    failure = "eglInitialize failed (" + egl_error_name(egl().get_error()) + ")";
     return EGL_NO_CONTEXT;
   }
   const auto fail = [&](const std::string& why) {
     failure = why;
-    eglTerminate(display);
+    egl().terminate(display);
     return EGL_NO_CONTEXT;
   };
-  if (!has_extension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
+  if (!has_extension(egl().query_string(display, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
     return fail("EGL_KHR_surfaceless_context is not offered");
   }
   // No surface type is required: drawing goes to a framebuffer object.
@@ -117,12 +165,12 @@ EGLContext make_current_context(EGLDisplay display, std::string& failure) {
                                       EGL_NONE};
   EGLConfig config = nullptr;
   EGLint config_count = 0;
-  if (eglChooseConfig(display, config_attributes, &config, 1, &config_count) != EGL_TRUE ||
+  if (egl().choose_config(display, config_attributes, &config, 1, &config_count) != EGL_TRUE ||
       config_count < 1) {
     return fail("eglChooseConfig found no desktop OpenGL config");
   }
-  if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE) {
-    return fail("eglBindAPI(EGL_OPENGL_API) failed (" + egl_error_name(eglGetError()) + ")");
+  if (egl().bind_api(EGL_OPENGL_API) != EGL_TRUE) {
+    return fail("eglBindAPI(EGL_OPENGL_API) failed (" + egl_error_name(egl().get_error()) + ")");
   }
   const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
                                        3,
@@ -131,13 +179,13 @@ EGLContext make_current_context(EGLDisplay display, std::string& failure) {
                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                        EGL_NONE};
-  const EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attributes);
+  const EGLContext context = egl().create_context(display, config, EGL_NO_CONTEXT, context_attributes);
   if (context == EGL_NO_CONTEXT) {
-    return fail("eglCreateContext(OpenGL 3.3 core) failed (" + egl_error_name(eglGetError()) + ")");
+    return fail("eglCreateContext(OpenGL 3.3 core) failed (" + egl_error_name(egl().get_error()) + ")");
   }
-  if (eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
-    const std::string error = egl_error_name(eglGetError());
-    eglDestroyContext(display, context);
+  if (egl().make_current(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
+    const std::string error = egl_error_name(egl().get_error());
+    egl().destroy_context(display, context);
     return fail("eglMakeCurrent without a surface failed (" + error + ")");
   }
   return context;
@@ -153,7 +201,10 @@ EglContext::EglContext() {
     throw InputError("WOBBLE_EGL_PLATFORM: expected 'device' or 'surfaceless' (or unset), got '" +
                      forced + "'");
   }
-  const char* client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (!egl().missing.empty()) {
+    throw ContextError("cannot create a headless OpenGL 3.3 context: " + egl().missing);
+  }
+  const char* client_extensions = egl().query_string(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string failures;
   for (const std::string platform : {"device", "surfaceless"}) {
     if (!forced.empty() && forced != platform) continue;
@@ -164,17 +215,21 @@ EglContext::EglContext() {
     EGLContext context = EGL_NO_CONTEXT;
     if (display != EGL_NO_DISPLAY) context = make_current_context(display, failure);
     if (context != EGL_NO_CONTEXT) {
-      if (gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) == 0) {
-        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-        eglDestroyContext(display, context);
-        eglTerminate(display);
+      if (gladLoadGL(reinterpret_cast<GLADloadfunc>(egl().get_proc_address)) == 0) {
+        egl().make_current(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+        egl().destroy_context(display, context);
+        egl().terminate(display);
         failure = "gladLoadGL could not load OpenGL 3.3 through eglGetProcAddress";
       } else {
         display_ = display;
         context_ = context;
-        description_ = "EGL " + platform + ", " +
-                       reinterpret_cast<const char*>(glGetString(GL_RENDERER)) + ", " +
-                       reinterpret_cast<const char*>(glGetString(GL_VERSION));
+        const auto text = [](GLenum name) {
+          const auto* value = reinterpret_cast<const char*>(glGetString(name));
+          return std::string(value == nullptr ? "?" : value);
+        };
+        driver_ = GlDriver{platform, text(GL_VENDOR), text(GL_RENDERER), text(GL_VERSION)};
+        description_ = "EGL " + platform + ", " + driver_.vendor + ", " + driver_.renderer +
+                       ", " + driver_.version;
         return;
       }
     }
@@ -186,9 +241,9 @@ EglContext::EglContext() {
 }
 
 EglContext::~EglContext() {
-  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-  eglDestroyContext(display_, context_);
-  eglTerminate(display_);
+  egl().make_current(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  egl().destroy_context(display_, context_);
+  egl().terminate(display_);
 }
 
 }  // namespace wobble

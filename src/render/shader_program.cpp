@@ -40,7 +40,7 @@ GLuint compile(GLenum type, const std::string& file_name) {
   if (ok != GL_TRUE) {
     const std::string log = failure_log(shader, glGetShaderInfoLog);
     glDeleteShader(shader);
-    throw std::runtime_error("shaders/" + file_name + ": does not compile: " + log);
+    throw ShaderError("shaders/" + file_name + ": does not compile: " + log);
   }
   return shader;
 }
@@ -67,7 +67,7 @@ ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& 
   if (ok != GL_TRUE) {
     const std::string log = failure_log(program_, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw std::runtime_error("shaders/" + vertex_file + " + " + fragment_file +
+    throw ShaderError("shaders/" + vertex_file + " + " + fragment_file +
                              ": do not link: " + log);
   }
 }

@@ -3,12 +3,20 @@
 
 #include <glad/gl.h>
 
+#include <stdexcept>
 #include <string>
 
 namespace wobble {
 
+// A shader the driver does not compile, or a program it does not link: one line naming the file
+// and quoting the driver's log. The command line exits with code 2, as for a missing context.
+class ShaderError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 // A linked vertex + fragment program built from two files of shaders/ (by file name, e.g.
-// "mesh.vert"). Needs a current GL context. Throws std::runtime_error naming the file and
+// "mesh.vert"). Needs a current GL context. Throws ShaderError naming the file and
 // quoting the driver's log when a shader does not compile or the program does not link.
 class ShaderProgram {
  public:

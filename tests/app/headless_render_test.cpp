@@ -243,7 +243,7 @@ TEST(HeadlessRender, WithoutEglItExitsWithOneLineSayingWhatToInstall) {
   const auto run =
       run_wobble("cloth --headless --frames 2 --screenshot '" + folder.file("a.png") + "'",
                  no_display + " __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
-  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_NE(run.err.find("EGL"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("install libegl-mesa0"), std::string::npos) << run.err;
   EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;

@@ -38,7 +38,7 @@ TEST(WindowSmoke, OpensRunsThirtyFramesAndShowsTheClothAndPanel) {
 
 TEST(WindowSmoke, WithoutADisplayItPointsToHeadlessAndXvfb) {
   const auto run = run_wobble("cloth --frames 1", "DISPLAY= WAYLAND_DISPLAY=");
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--headless"), std::string::npos) << run.err;
   EXPECT_NE(run.err.find("xvfb-run"), std::string::npos) << run.err;
 }

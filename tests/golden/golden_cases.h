@@ -5,9 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "image_compare.h"
+#include "app/outputs/image_compare.h"
 
 namespace wobble::testing {
+
+using wobble::ImageTolerance;
 
 // One stored picture: tests/golden/<name>.png is what `wobble <arguments> --headless
 // --screenshot FILE` draws. "@ASSETS@" in the arguments stands for Wobble's assets/ folder.
@@ -73,15 +75,10 @@ inline const std::vector<GoldenCase>& golden_cases() {
   return cases;
 }
 
-// Why these numbers. Renders on one machine kind are byte-identical, so the tolerance is only
-// for another Mesa, which may round shading a level or two differently and move antialiased
-// edges: a channel may move by up to 8 of 255 (3%) without counting, and up to 0.03% of the
-// pixels (23 at 320 × 240) may differ by more, for edges. What real changes do, measured by
-// golden_sensitivity_test at 320 × 240: a camera turned by 2° changes 17% of the pixels, k raised
-// by 10% 3.5%, and one spring dropped from the jelly's springs view 1.3% (1,019 pixels). A
-// lighting tweak (the diffuse wrap from 0.25 to 0.35) fails every case with 1% to 5%. A threshold
-// of 24 instead of 8 let that lighting tweak pass unnoticed.
-inline constexpr Tolerance golden_tolerance{8, 0.0003};
+// The goldens are compared as `--expect` compares by default (app/outputs/image_compare.h): a
+// pixel counts only when its colour is not within the other image's range around it, so another
+// driver's anti-aliased edges do not count. Measured numbers: golden_sensitivity_test.
+inline constexpr ImageTolerance golden_tolerance{};
 
 }  // namespace wobble::testing
 

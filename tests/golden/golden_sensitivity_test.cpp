@@ -3,13 +3,15 @@
 // changed, and check that the stored image then no longer matches.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
+#include <utility>
 
 #include "app/cli/command_line.h"
 #include "app/headless/render_offscreen.h"
 #include "app/viewer/viewer.h"
 #include "golden_cases.h"
-#include "image_compare.h"
+#include "app/outputs/image_compare.h"
 
 namespace {
 
@@ -50,12 +52,12 @@ wobble::RgbaImage render_changed(const std::string& name, Change change) {
   return wobble::render_offscreen(viewer, options);
 }
 
-wobble::testing::Comparison against_golden(const std::string& name,
+wobble::ImageComparison against_golden(const std::string& name,
                                            const wobble::RgbaImage& actual) {
   const wobble::RgbaImage expected =
       wobble::read_png(std::string(WOBBLE_GOLDEN_DIR) + "/" + name + ".png");
-  const wobble::testing::Comparison comparison =
-      wobble::testing::compare_images(expected, actual, golden_tolerance);
+  const wobble::ImageComparison comparison =
+      wobble::compare_images(expected, actual, golden_tolerance);
   // The margin each change clears is worth seeing when the tolerance is reconsidered.
   std::cout << "  " << name << ": " << comparison.summary(golden_tolerance) << "\n";
   return comparison;
@@ -65,6 +67,42 @@ TEST(GoldenSensitivity, TheUnchangedSceneMatchesInProcessToo) {
   const wobble::RgbaImage image = render_changed("cloth", [](auto&, auto&) {});
   const auto comparison = against_golden("cloth", image);
   EXPECT_TRUE(comparison.matches(golden_tolerance)) << comparison.summary(golden_tolerance);
+}
+
+// The same golden with every pixel moved `dx` right and `dy` down (the edge rows and columns
+// repeated): every edge in the picture one pixel away from where it was.
+wobble::RgbaImage shifted(const wobble::RgbaImage& image, int dx, int dy) {
+  wobble::RgbaImage moved = image;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const unsigned char* from = image.pixel(std::clamp(x - dx, 0, image.width - 1),
+                                              std::clamp(y - dy, 0, image.height - 1));
+      std::copy(from, from + 4, moved.pixels.data() + 4 * (y * image.width + x));
+    }
+  }
+  return moved;
+}
+
+wobble::RgbaImage golden_image(const std::string& name) {
+  return wobble::read_png(std::string(WOBBLE_GOLDEN_DIR) + "/" + name + ".png");
+}
+
+TEST(GoldenSensitivity, EveryEdgeMovedByOnePixelPasses) {
+  for (const std::string name : {"cloth", "jelly_wireframe_springs", "cloth_ui", "drape_strain"}) {
+    for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{-1, -1}}) {
+      const auto comparison = against_golden(name, shifted(golden_image(name), dx, dy));
+      EXPECT_TRUE(comparison.matches(golden_tolerance))
+          << name << " moved (" << dx << ", " << dy << "): " << comparison.summary(golden_tolerance);
+    }
+  }
+}
+
+TEST(GoldenSensitivity, EdgesMovedByTwoPixelsFail) {
+  for (const std::string name : {"cloth", "jelly_wireframe_springs"}) {
+    const auto comparison = against_golden(name, shifted(golden_image(name), 2, 0));
+    EXPECT_FALSE(comparison.matches(golden_tolerance)) << name << ": "
+                                                       << comparison.summary(golden_tolerance);
+  }
 }
 
 TEST(GoldenSensitivity, CameraTurnedTwoDegreesFails) {

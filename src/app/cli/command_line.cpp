@@ -82,6 +82,24 @@ std::string path_value(const char* option, const std::string& text, const char* 
 
 // Two outputs that would write one file, links followed: the later would silently replace the
 // earlier. A device, a terminal or a pipe takes both, one after the other.
+// --expect-tolerance's "LEVELS[,PERCENT]": whole levels of 255, and a percentage of the pixels.
+ImageTolerance parse_expect_tolerance(const std::string& text) {
+  const std::size_t comma = text.find(',');
+  const std::optional<long> levels = parse_number<long>(text.substr(0, comma));
+  const std::optional<double> percent =
+      comma == std::string::npos ? std::optional<double>(100.0 * ImageTolerance{}.share)
+                                 : parse_number<double>(text.substr(comma + 1));
+  if (!levels || *levels < 0 || *levels > 255 || !percent || !(*percent >= 0.0) ||
+      !(*percent <= 100.0)) {
+    throw InputError("--expect-tolerance: expected LEVELS[,PERCENT] (a whole number from 0 to "
+                     "255, then a number from 0 to 100), got '" + text + "'");
+  }
+  ImageTolerance tolerance;
+  tolerance.channel = static_cast<int>(*levels);
+  tolerance.share = 0.01 * *percent;
+  return tolerance;
+}
+
 void check_distinct_outputs(const CommandLine& command) {
   const std::pair<const char*, const std::string*> outputs[] = {
       {"--screenshot", &command.screenshot},
@@ -136,7 +154,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
       record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness,
-      threads, solver;
+      threads, solver, expect, expect_tolerance;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -196,6 +214,12 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                  "Write every frame as DIR/frame_00001.png, ..., or as one video FILE.webm "
                  "(VP9) or FILE.mp4 (H.264)");
   app.add_flag("--ui", command.ui, "Headless images show the control panel too");
+  app.add_option("--expect", expect,
+                 "Headless: compare the last frame with this PNG; exit 1 and write "
+                 "FILE.diff.png beside it when they differ beyond anti-aliasing");
+  app.add_option("--expect-tolerance", expect_tolerance,
+                 "LEVELS[,PERCENT]: a channel may be off by LEVELS of 255 without counting, and "
+                 "PERCENT of the pixels may differ (default 8,0.03)");
   app.add_flag("--plots", command.plots,
                "Open the convergence and energy plots (key G), in images too");
   app.add_flag("--wireframe", command.wireframe, "Start with the wireframe shown");
@@ -232,7 +256,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
 
   if (version) {
     out << "wobble " << WOBBLE_VERSION << "\n";
-    return std::nullopt;
+    if (!command.headless) return std::nullopt;
+    // With --headless: what would draw (run_headless makes the context and says).
+    command.version_with_driver = true;
+    return command;
   }
   if (list_scenes) {
     for (const std::string& name : builtin_scene_names()) {
@@ -332,6 +359,14 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                        *color_by + "'");
     }
     command.color_by = *quantity;
+  }
+  if (expect) command.expect = path_value("--expect", *expect, "PNG file path");
+  if (expect_tolerance) {
+    if (!expect) throw InputError("--expect-tolerance: needs --expect FILE.png");
+    command.expect_tolerance = parse_expect_tolerance(*expect_tolerance);
+  }
+  if (!command.expect.empty() && !command.headless) {
+    throw InputError("--expect: compares a headless run's last frame, so it needs --headless");
   }
   check_distinct_outputs(command);
   return command;

@@ -10,6 +10,7 @@
 #include "app/cli/compare_settings.h"
 #include "app/cli/settings_overrides.h"
 #include "app/interaction/drag_script.h"
+#include "app/outputs/image_compare.h"
 #include "sim/simulation.h"
 
 namespace wobble {
@@ -46,12 +47,21 @@ struct CommandLine {
   std::string screenshot;          // PNG of the frame after the last step; empty: none
   std::string record;              // folder for one PNG per frame, or a .webm/.mp4; empty: none
   bool ui = false;                 // headless: draw the ImGui panel too
+  // --expect FILE.png (headless): the last frame compared with FILE by compare_images; a
+  // mismatch exits with 1 and writes FILE's stem + ".diff.png" beside it. --expect-tolerance
+  // LEVELS[,PERCENT] loosens the comparison.
+  std::string expect;
+  ImageTolerance expect_tolerance;
+  // --version --headless: the version, then which EGL platform and GL driver would draw.
+  bool version_with_driver = false;
   bool plots = false;              // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;    // degrees
   ColorQuantity color_by = ColorQuantity::material;  // else coloured, with a legend
 
-  bool writes_images() const { return !screenshot.empty() || !record.empty(); }
+  bool writes_images() const {
+    return !screenshot.empty() || !record.empty() || !expect.empty();
+  }
 
   static constexpr long default_headless_frames = 120;
   static constexpr long max_frames = 10'000'000;

@@ -110,10 +110,13 @@ RgbaImage render_offscreen(Viewer& viewer, const OffscreenOptions& options, Imag
   std::unique_ptr<ImGuiSession> ui;
   if (imgui) {
     ui = std::make_unique<ImGuiSession>(
-        nullptr, "#version 330 core", 1.0f,
+        nullptr, 1.0f,
         Eigen::Vector2f(static_cast<float>(options.width), static_cast<float>(options.height)));
   }
-  if (report) report->context = context.description();
+  if (report) {
+    report->context = context.description();
+    report->driver = context.driver();
+  }
 
   OffscreenHost host(target, options, imgui, outputs, report);
   FrameMeters meters;

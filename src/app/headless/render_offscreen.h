@@ -9,6 +9,7 @@
 #include "app/outputs/run_statistics.h"
 #include "app/viewer/viewer.h"
 #include "io/png_image.h"
+#include "platform/egl_context.h"
 
 namespace wobble {
 
@@ -22,7 +23,8 @@ struct OffscreenOptions {
 // steps: app/outputs/step_outputs.h.)
 struct OffscreenReport {
   std::vector<double> render_ms;  // per frame: drawing, UI and read-back (when an image is read)
-  std::string context;            // which EGL platform and GL renderer drew
+  std::string context;            // which EGL platform and GL driver drew, on one line
+  GlDriver driver;                // the same, field by field
 };
 
 // The headless mode's frames: make an EGL context and a framebuffer object, then draw

@@ -1,15 +1,15 @@
 #include "app/viewer/frame_loop.h"
 
 #include <glad/gl.h>
-// glad first: the backends must not include a GL header of their own.
+// glad first: GLFW's backend must not include a GL header of its own.
 #include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
 #include <cmath>
 
 #include "app/viewer/viewer.h"
 #include "render/offscreen_target.h"
+#include "render/panel_renderer.h"
 
 namespace wobble {
 
@@ -40,7 +40,6 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   // 2. new frame
   const bool imgui = host.uses_imgui();
   if (imgui) {
-    ImGui_ImplOpenGL3_NewFrame();
     host.new_platform_frame();
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
@@ -68,7 +67,11 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   if (result.drawn) {
     host.bind_target();
     viewer.render(width, height, window, window.x() > 0.0f ? width / window.x() : 1.0f);
-    if (imgui) ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (imgui) {
+      // The current ImGui context's renderer (ImGuiSession's), as ImGui's own backends keep it.
+      if (auto* renderer = static_cast<PanelRenderer*>(ImGui::GetIO().BackendRendererUserData))
+        renderer->draw(*ImGui::GetDrawData());
+    }
   }
   // 6. present
   host.present(viewer, result.drawn);
@@ -76,8 +79,7 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   return result;
 }
 
-ImGuiSession::ImGuiSession(GLFWwindow* window, const char* glsl_version, float scale,
-                           const Eigen::Vector2f& display) {
+ImGuiSession::ImGuiSession(GLFWwindow* window, float scale, const Eigen::Vector2f& display) {
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini left in whatever folder wobble was started from
@@ -89,7 +91,7 @@ ImGuiSession::ImGuiSession(GLFWwindow* window, const char* glsl_version, float s
     io.DisplaySize = ImVec2(display.x(), display.y());
     io.DeltaTime = 1.0f / 60.0f;
   }
-  ImGui_ImplOpenGL3_Init(glsl_version);
+  renderer_ = std::make_unique<PanelRenderer>();
 }
 
 void ImGuiSession::apply_scale(float scale) {
@@ -109,8 +111,7 @@ void ImGuiSession::apply_scale(float scale) {
 void ImGuiSession::rescale(float scale) {
   if (scale == scale_) return;
   apply_scale(scale);
-  ImGui_ImplOpenGL3_DestroyFontsTexture();
-  ImGui_ImplOpenGL3_CreateFontsTexture();
+  renderer_->upload_fonts();
 }
 
 void ImGuiSession::new_glfw_frame() {
@@ -118,7 +119,7 @@ void ImGuiSession::new_glfw_frame() {
 }
 
 ImGuiSession::~ImGuiSession() {
-  ImGui_ImplOpenGL3_Shutdown();
+  renderer_.reset();
   if (platform_) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
 }

@@ -2,6 +2,7 @@
 #define WOBBLE_APP_VIEWER_FRAME_LOOP_H
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@ struct GLFWwindow;
 
 namespace wobble {
 
+class PanelRenderer;
 class Viewer;
 
 // What differs between the window (app/viewer/run_window.cpp), the page (app/web/run_browser.cpp)
@@ -79,13 +81,13 @@ struct FrameResult {
 FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale);
 
 // ImGui for the life of a loop, set up the one way every host needs it: no imgui.ini left
-// anywhere, fonts and sizes scaled by `scale`, the OpenGL 3 renderer for `glsl_version`
-// ("#version 330 core" on the desktop and EGL, "#version 300 es" in the page), and GLFW's
-// platform backend for `window`; with no window (headless), a fixed `display` size and frame
+// anywhere, fonts and sizes scaled by `scale`, Wobble's own renderer (render/panel_renderer.h,
+// through the GL functions glad loaded, so nothing opens libGL.so.1), and GLFW's platform
+// backend for `window`; with no window (headless), a fixed `display` size and frame
 // time instead, so that the panel is laid out the same on every run.
 class ImGuiSession {
  public:
-  ImGuiSession(GLFWwindow* window, const char* glsl_version, float scale,
+  ImGuiSession(GLFWwindow* window, float scale,
                const Eigen::Vector2f& display = Eigen::Vector2f::Zero());
   ~ImGuiSession();
   // GLFW's part of a new frame, for a host whose session has a window.
@@ -100,6 +102,7 @@ class ImGuiSession {
 
  private:
   void apply_scale(float scale);
+  std::unique_ptr<PanelRenderer> renderer_;
   bool platform_ = false;
   float scale_ = 1.0f;
 };

@@ -152,7 +152,7 @@ int run_window(const CommandLine& command, std::ostream& out, std::ostream& prog
   const std::string title = "Wobble: " + viewer.scene().name;
   GlfwWindow window(command.width, command.height, title);
   const float ui_scale = window.content_scale();
-  ImGuiSession ui(window.handle(), "#version 330 core", ui_scale);
+  ImGuiSession ui(window.handle(), ui_scale);
   print_notes(viewer.scene(), progress);
   viewer.attach_renderer();
   // The simulation steps beside the UI from here on; a finished batch wakes a waiting UI.

@@ -57,13 +57,12 @@ add_link_options(-msimd128)
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)
 
-# Dear ImGui with its GLFW and OpenGL 3 (here ES 3, WebGL 2) backends.
+# Dear ImGui with its GLFW backend (Wobble draws the panel itself: render/panel_renderer.h).
 add_library(wobble_web_imgui STATIC
   ${web_imgui}/imgui.cpp ${web_imgui}/imgui_draw.cpp ${web_imgui}/imgui_tables.cpp
   ${web_imgui}/imgui_widgets.cpp ${web_imgui}/imgui_demo.cpp
-  ${web_imgui}/backends/imgui_impl_glfw.cpp ${web_imgui}/backends/imgui_impl_opengl3.cpp)
+  ${web_imgui}/backends/imgui_impl_glfw.cpp)
 target_include_directories(wobble_web_imgui SYSTEM PUBLIC ${web_imgui})
-target_compile_definitions(wobble_web_imgui PRIVATE IMGUI_IMPL_OPENGL_ES3)
 target_compile_options(wobble_web_imgui PRIVATE -w)  # not our code
 
 add_library(wobble_web_zlib STATIC
