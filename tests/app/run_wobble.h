@@ -52,6 +52,17 @@ inline Result run_wobble(const std::string& arguments, const std::string& enviro
   return result;
 }
 
+#ifdef WOBBLE_HIDE_LIBRARIES_MODULE
+// Environment assignments for run_wobble that play a machine without `libraries` (colon-separated
+// file names): app/hide_libraries/ preloaded, so that dlopen of them fails.
+inline std::string hiding(const std::string& libraries) {
+  return "LD_PRELOAD='" + std::string(WOBBLE_HIDE_LIBRARIES_MODULE) + "' WOBBLE_HIDE_LIBRARIES='" +
+         libraries + "'";
+}
+// What glvnd's libGL is called by: what ImGui's own OpenGL backend opened.
+inline const std::string no_libgl = "libGL.so.1:libGL.so";
+#endif
+
 // In a forked child whose streams are already set up: becomes the wobble executable
 // (WOBBLE_EXECUTABLE) run with `arguments`; exits with 127 if it cannot be started.
 [[noreturn]] inline void exec_wobble(const std::vector<std::string>& arguments) {
