@@ -105,10 +105,8 @@ void RightSide::take_samples() {
   if (record_convergence_ && right.records_convergence()) {
     // Into the buffers the last batch's trace left, as the left side's batch does.
     const ConvergenceTrace& trace = right.last_convergence();
-    samples_.trace.energy.assign(trace.energy.begin(), trace.energy.end());
-    samples_.trace.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
-    samples_.trace.chebyshev = trace.chebyshev;
-    samples_.trace.solver = trace.solver;
+    // The whole record, its force scale included (what the light measures a step at rest by).
+    samples_.trace = trace;
     samples_.trace_step = right.steps_taken();
   }
   if (record_energy_) samples_.energy.emplace_back(right.time(), frame_energy(right));

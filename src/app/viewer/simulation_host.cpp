@@ -83,10 +83,9 @@ void SimulationHost::run_batch() {
     batch_.timings.push_back(simulation.last_step_timing());
     if (batch_.record_trace) {
       const ConvergenceTrace& trace = simulation.last_convergence();
-      batch_.trace.energy.assign(trace.energy.begin(), trace.energy.end());
-      batch_.trace.gradient_norm.assign(trace.gradient_norm.begin(), trace.gradient_norm.end());
-      batch_.trace.chebyshev = trace.chebyshev;
-      batch_.trace.solver = trace.solver;
+      // The whole record, its force scale included (what the light measures a step at rest
+      // by); the vectors keep their buffers.
+      batch_.trace = trace;
       batch_.trace_step = step;
     }
     if (batch_.record_energy) {
