@@ -88,7 +88,8 @@ float instrument_column_left(float display_width, float ui_scale) {
 }
 
 const char* convergence_hint(ConvergenceLight light, bool chebyshev_applies) {
-  if (light == ConvergenceLight::green) return "";
+  // Only far from converged: amber is a step that got most of the way, nothing to fix.
+  if (light != ConvergenceLight::red) return "";
   return chebyshev_applies ? "stiff springs need more iterations, Chebyshev, or a smaller dt"
                            : "stiff springs need more iterations or a smaller dt";
 }
@@ -128,7 +129,7 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
     const char* name = !split ? "" : side == &data.left ? "left: " : "right: ";
     draw_light(*side, name);
   }
-  if (worst) {
+  if (worst && worst->light == ConvergenceLight::red) {
     ImGui::PushStyleColor(ImGuiCol_Text, light_color(worst->light));
     ImGui::TextWrapped("%s", convergence_hint(worst->light, chebyshev_applies));
     ImGui::PopStyleColor();

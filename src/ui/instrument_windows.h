@@ -21,7 +21,7 @@ struct ConvergenceCurve {
   ConvergenceLight light = ConvergenceLight::green;
   double reduction = 0.0;         // last gradient norm over the first
   long step = 0;                  // which step these are from
-  bool chebyshev_applies = true;  // the hint may suggest Chebyshev
+  bool chebyshev_applies = true;  // the hint may suggest Chebyshev (local-global, not on yet)
 };
 
 // What the convergence window shows: the simulation's last step, or with the view split both
@@ -62,8 +62,8 @@ float instrument_column_width(float display_width, float ui_scale);
 // the right edge. The split view keeps left of it.
 float instrument_column_left(float display_width, float ui_scale);
 
-// The light's words, e.g. "converged", and the hint shown under it (empty when green); the hint
-// suggests Chebyshev only where it applies (`chebyshev_applies`: local-global).
+// The light's words, e.g. "converged", and the hint shown under it (only when red); the hint
+// suggests Chebyshev only where it would help (`chebyshev_applies`: local-global, not on yet).
 const char* convergence_label(ConvergenceLight light);
 // `value` as a legend writes it beside others read against `scale` (the largest of them): four
 // significant digits of the scale and as many decimals for every value ("1.795", "0.016",

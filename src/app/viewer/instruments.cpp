@@ -40,7 +40,8 @@ ConvergenceCurve curve_of(const ConvergenceTrace& trace, long step) {
   curve.method = !local_global     ? solver_label(trace.solver)
                  : trace.chebyshev ? "Chebyshev"
                                    : "plain";
-  curve.chebyshev_applies = local_global;
+  // Chebyshev is suggested only where it would change something: local-global without it.
+  curve.chebyshev_applies = local_global && !trace.chebyshev;
   curve.light = light_for(trace);
   curve.reduction = trace.gradient_reduction();
   curve.step = step;
