@@ -9,7 +9,8 @@ namespace wobble {
 // GL 3.3 has no three-channel buffer format). The springs are drawn as one GL_LINES call over the
 // spring index buffer, so a fragment's gl_PrimitiveID is its spring's row: each line gets its own
 // colour while the springs keep sharing the vertex positions, with no per-spring copy of them.
-// Needs a current GL context for its whole life.
+// Needs a current GL context for its whole life. In the page (WebGL 2, no buffer textures) it
+// makes no GL call at all.
 class SpringColorTable {
  public:
   SpringColorTable();

@@ -96,6 +96,7 @@ struct PanelSettings : SceneRowSettings,
                        SplitSettings {
   bool recording = false;  // every new state drawn written as a PNG or a video frame (F9)
   int record_format = 0;   // what the recording writes: a RecordFormat (panel_sections.h)
+  bool record_whole_window = false;  // a recorded frame shows the window, not the scene alone
 };
 
 // Buttons pressed this frame, and where the panel was drawn.

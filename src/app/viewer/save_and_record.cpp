@@ -17,7 +17,8 @@ namespace wobble {
 SaveRowRequests SaveAndRecord::draw_panel_rows() {
   std::string status;
   if (recorder_) status = recorder_->status();
-  SaveRowRequests requests = draw_save_rows(recording_, record_format_, status, record_offered_);
+  SaveRowRequests requests =
+      draw_save_rows(recording_, record_format_, record_whole_window_, status, record_offered_);
   if (requests.screenshot) command(ViewerCommand::screenshot);
   requests.screenshot = false;  // taken
   return requests;
@@ -112,8 +113,25 @@ std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, lo
     }
   }
   screenshot_requested_ = false;
-  if (recorder_) record(scene, steps, drawn, read_frame, time, told);
+  if (recorder_) {
+    if (wants_scene_frame() && !scene_frame_.pixels.empty()) {
+      // The scene as it was before the panel was drawn over it (scene_drawn). (A frame whose
+      // scene was not kept, where no panel was drawn, is what the window shows.)
+      record(scene, steps, drawn, [this] { return std::move(scene_frame_); }, time, told);
+    } else {
+      record(scene, steps, drawn, read_frame, time, told);
+    }
+  }
+  scene_frame_ = RgbaImage();
   return told;
+}
+
+bool SaveAndRecord::wants_scene_frame() const {
+  return recorder_ && recording_ && !record_whole_window_;
+}
+
+void SaveAndRecord::scene_drawn(const std::function<RgbaImage()>& read_frame) {
+  if (wants_scene_frame()) scene_frame_ = read_frame();
 }
 
 void SaveAndRecord::record(const std::string& scene, long steps, bool drawn,

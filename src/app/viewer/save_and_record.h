@@ -75,8 +75,14 @@ class SaveAndRecord {
                                        const FrameTime& time = FrameTime());
   // What the record toggle writes from its next start: PNG frames (the default), or a video.
   void set_record_format(std::optional<VideoFormat> video);
+  // What a recorded frame shows: the scene alone (the default, for slides), or the whole window.
+  void set_record_whole_window(bool whole) { record_whole_window_ = whole; }
+  // Called once the scene is drawn and before the panel goes over it: while recording the scene
+  // alone, `read_frame` is read then, and write_frame records that picture.
+  void scene_drawn(const std::function<RgbaImage()>& read_frame);
 
  private:
+  bool wants_scene_frame() const;
   void record(const std::string& scene, long steps, bool drawn,
               const std::function<RgbaImage()>& read_frame, const FrameTime& time,
               std::vector<std::string>& told);
@@ -84,6 +90,8 @@ class SaveAndRecord {
   bool recording_ = false;      // the record toggle
   bool record_offered_ = true;  // the panel shows the toggle (not in the page)
   int record_format_ = 0;       // the panel's choice: RecordFormat (panel_sections.h)
+  bool record_whole_window_ = false;  // the panel's second combo: the scene alone by default
+  RgbaImage scene_frame_;             // this frame's scene before the panel (scene_drawn)
   bool screenshot_requested_ = false;
   std::unique_ptr<WindowRecorder> recorder_;  // null: nowhere to record (headless)
   std::function<void(const std::string& path)> written_;

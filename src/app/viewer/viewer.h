@@ -131,6 +131,10 @@ class Viewer {
   // new state. `read_frame` reads the frame drawn, when `drawn` (a minimized window draws
   // none). What was written, or why not, shows as notices.
   void write_window_files(bool drawn, const std::function<RgbaImage()>& read_frame);
+  // The scene drawn, before the panel goes over it: a recording of the scene alone reads it now.
+  void scene_drawn(const std::function<RgbaImage()>& read_frame) {
+    save_and_record_.scene_drawn(read_frame);
+  }
   // The simulated time of the state shown and the step it is taken with, for a video's frames.
   FrameTime shown_time() const;
 

@@ -30,15 +30,13 @@ namespace wobble {
 
 namespace {
 
-// What WebGL 2 lacks of the desktop's GL 3.3 core, and the renderer calls: glad leaves these
-// null on a GL ES 3.0 context. Polygon modes (the wireframe over the surface) draw filled, and
-// the springs' colour table (a buffer texture) stays empty; see shaders/es/spring_colors.frag.
+// What WebGL 2 lacks of the desktop's GL 3.3 core, and the renderer calls: glad leaves it null
+// on a GL ES 3.0 context. Polygon modes (the wireframe over the surface) draw filled. (The
+// springs' colour table, a buffer texture, makes no call in the page: spring_color_table.h.)
 void GLAD_API_PTR no_polygon_mode(GLenum, GLenum) {}
-void GLAD_API_PTR no_texture_buffer(GLenum, GLenum, GLuint) {}
 
 void fill_missing_gl_functions() {
   if (glad_glPolygonMode == nullptr) glad_glPolygonMode = no_polygon_mode;
-  if (glad_glTexBuffer == nullptr) glad_glTexBuffer = no_texture_buffer;
 }
 
 double seconds_now() {

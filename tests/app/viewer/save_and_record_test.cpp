@@ -14,6 +14,7 @@
 
 #include "app/viewer/instruments.h"
 #include "io/load_scene.h"
+#include "io/png_image.h"
 #include "sim/instruments/frame_energy.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
@@ -97,6 +98,42 @@ TEST_F(SaveAndRecordTest, F9RecordsEachNewStateIntoAFolderOfItsOwn) {
   }
   EXPECT_EQ(folders, 1);
   EXPECT_EQ(frames, 3);
+}
+
+// What a recorded frame shows: the scene as drawn before the panel went over it (the default,
+// for slides), or, with the combo on "whole window", the frame the window shows.
+TEST_F(SaveAndRecordTest, F9RecordsTheSceneAloneUnlessTheWholeWindowIsAsked) {
+  const auto coloured = [](unsigned char value) {
+    wobble::RgbaImage image = grey_frame();
+    image.pixels.assign(image.pixels.size(), value);
+    return image;
+  };
+  for (const bool whole : {false, true}) {
+    wobble::SaveAndRecord saves;
+    std::ostringstream progress;
+    saves.record_into(".", progress);
+    saves.set_record_whole_window(whole);
+    saves.command(wobble::ViewerCommand::toggle_record);
+    int scene_reads = 0;
+    for (long step : {1, 2}) {
+      saves.scene_drawn([&] {
+        ++scene_reads;
+        return coloured(60);  // the scene alone
+      });
+      saves.write_frame("cloth", step, true, [&] { return coloured(200); });  // with the panel
+    }
+    saves.command(wobble::ViewerCommand::toggle_record);
+    const std::vector<std::string> told =
+        saves.write_frame("cloth", 3, true, [&] { return coloured(200); });
+    ASSERT_EQ(told.size(), 1u);
+    const std::string folder = whole ? "wobble-cloth-frames-0002" : "wobble-cloth-frames-0001";
+    EXPECT_NE(told[0].find(folder), std::string::npos) << told[0];
+    EXPECT_EQ(scene_reads, whole ? 0 : 2) << "the scene is read only when it is recorded";
+    for (const char* frame : {"frame_00001.png", "frame_00002.png"}) {
+      const wobble::RgbaImage written = wobble::read_png(folder + "/" + frame);
+      EXPECT_EQ(written.pixels[0], whole ? 200 : 60) << folder << "/" << frame;
+    }
+  }
 }
 
 // With the record combo on a video, F9 writes one file, wobble-SCENE-NNNN.webm, beside the
