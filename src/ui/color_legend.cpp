@@ -24,7 +24,8 @@ void draw_color_legend(const ColorLegend& legend, float ui_scale,
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float margin = 10.0f * ui_scale;
   float right = display.x - margin, bottom = display.y - margin;
-  if (clearance.instrument_column) right -= instrument_column_width(display.x, ui_scale) + margin;
+  if (clearance.instrument_column_left >= 0.0f)
+    right = std::min(right, clearance.instrument_column_left - margin);
   // The labels are two lines, and a third for the right side's warning (side_labels.cpp).
   if (clearance.side_labels) bottom -= 3.0f * ImGui::GetTextLineHeightWithSpacing() + 2.0f * margin;
   ImGui::SetNextWindowPos(ImVec2(right, bottom), ImGuiCond_Always, ImVec2(1.0f, 1.0f));

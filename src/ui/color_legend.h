@@ -20,7 +20,9 @@ struct ColorLegend {
 
 // What else is on screen that the legend keeps clear of.
 struct LegendClearance {
-  bool instrument_column = false;  // the plot windows at the right (instrument_windows.h)
+  // The plot windows' column at the right (instrument_windows.h): its left edge, negative when
+  // no plot is open.
+  float instrument_column_left = -1.0f;
   bool side_labels = false;        // the split view's labels along the bottom (side_labels.h)
 };
 

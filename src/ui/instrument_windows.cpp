@@ -79,12 +79,18 @@ const char* convergence_label(ConvergenceLight light) {
   return "";
 }
 
-float instrument_column_width(float display_width, float ui_scale) {
-  return std::min(380.0f * ui_scale, 0.45f * display_width);
+float instrument_column_width(float display_width, float ui_scale, float panel_right) {
+  const float width = std::min(380.0f * ui_scale, 0.45f * display_width);
+  if (!(panel_right > 0.0f)) return width;
+  // What the panel and the column leave the shape, with the column's margin from the edge.
+  const float leaving = display_width - column_free_share * display_width - 10.0f * ui_scale -
+                        panel_right;
+  return leaving >= 0.25f * display_width ? std::min(width, leaving) : width;
 }
 
-float instrument_column_left(float display_width, float ui_scale) {
-  return display_width - instrument_column_width(display_width, ui_scale) - 10.0f * ui_scale;
+float instrument_column_left(float display_width, float ui_scale, float panel_right) {
+  return display_width - instrument_column_width(display_width, ui_scale, panel_right) -
+         10.0f * ui_scale;
 }
 
 const char* convergence_hint(ConvergenceLight light, bool chebyshev_applies) {
@@ -94,12 +100,14 @@ const char* convergence_hint(ConvergenceLight light, bool chebyshev_applies) {
                            : "stiff springs need more iterations or a smaller dt";
 }
 
-void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale) {
+void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale,
+                             float panel_right) {
   // Top right, out of the way of the panel (top left) and of a shape framed in the middle; on a
   // small display (a headless image) the two windows share the right side's height.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float width = instrument_column_width(display.x, ui_scale);
-  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale), 10.0f * ui_scale),
+  const float width = instrument_column_width(display.x, ui_scale, panel_right);
+  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale, panel_right),
+                                 10.0f * ui_scale),
                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, std::min(390.0f * ui_scale, 0.6f * display.y - 15.0f)),
                            ImGuiCond_FirstUseEver);
@@ -194,11 +202,12 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
   ImGui::End();
 }
 
-void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale) {
+void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale,
+                        float panel_right) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float width = instrument_column_width(display.x, ui_scale);
+  const float width = instrument_column_width(display.x, ui_scale, panel_right);
   const float top = std::min(410.0f * ui_scale, 0.6f * display.y + 5.0f);
-  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale), top),
+  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale, panel_right), top),
                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, std::min(250.0f * ui_scale, display.y - top - 10.0f)),
                            ImGuiCond_FirstUseEver);

@@ -49,18 +49,25 @@ struct EnergyPlotData {
 // The "Convergence" window: a green, amber or red light (one a side) with a one-line hint, the
 // gradient norm and the energy above the step's lowest, per iteration, on log axes, each curve
 // named by its solver. `open` is cleared by the window's close button.
-void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale);
+// `panel_right`: the panel's right edge (pixels; 0 when hidden), which the column keeps clear of.
+void draw_convergence_window(const ConvergencePlotData& data, bool& open, float ui_scale,
+                             float panel_right = 0.0f);
 
 // The "Energy" window: kinetic, spring, gravity and total energy over time; with the view split,
 // the two sides' total energies.
-void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale);
+void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale,
+                        float panel_right = 0.0f);
 
-// Width of the column the two windows open in at the right of the display (pixels): 380 at
-// most, 45% of a small display. Other overlays keep out of it.
-float instrument_column_width(float display_width, float ui_scale);
+// Width of the column the two windows open in at the right of the display (pixels): 380 times
+// the UI scale at most, 45% of a small display, and narrower where the panel (its right edge at
+// `panel_right`, 0 when hidden) would otherwise leave the shape less than
+// column_free_share of the display between them (a projector's UI scale of 1.5 at 1280 wide),
+// though never below a quarter of the display. Other overlays keep out of it.
+constexpr float column_free_share = 0.3f;
+float instrument_column_width(float display_width, float ui_scale, float panel_right = 0.0f);
 // Where that column begins (pixels from the display's left edge): its width and a margin from
 // the right edge. The split view keeps left of it.
-float instrument_column_left(float display_width, float ui_scale);
+float instrument_column_left(float display_width, float ui_scale, float panel_right = 0.0f);
 
 // The light's words, e.g. "converged", and the hint shown under it (only when red); the hint
 // suggests Chebyshev only where it would help (`chebyshev_applies`: local-global, not on yet).

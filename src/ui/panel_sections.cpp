@@ -132,11 +132,11 @@ SaveRowRequests draw_save_rows(bool& recording, int& record_format, bool& record
   ImGui::Checkbox("record", &recording);
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "F9: every new state drawn, as the combos beside say:\n"
+        "F9: every new state drawn, as the combo beside says:\n"
         "PNG frames: DIR/frame_00001.png, ... in a new folder wobble-SCENE-frames-0001\n"
         "WebM video: wobble-SCENE-0001.webm (VP9; plays in every browser)\n"
         "MP4 video: wobble-SCENE-0001.mp4 (H.264; slides and players)\n"
-        "scene: the 3-D view alone, for slides; window: the panel and windows too\n"
+        "scene only (the default): the 3-D view alone, for slides; whole window: the panel too\n"
         "A video's frames play at their simulated time.");
   }
   // Short names in the row, the full ones in the list; beside the toggle where it fits.
@@ -150,33 +150,22 @@ SaveRowRequests draw_save_rows(bool& recording, int& record_format, bool& record
   ImGui::SetNextItemWidth(combo_width);
   record_format = std::clamp(record_format, 0, 2);
   ImGui::BeginDisabled(recording);  // one recording, one format
+  // One combo for both choices, so that the row keeps its width: what record writes, then what a
+  // frame shows, the scene alone (the default, what goes on a slide) or the whole window.
   if (ImGui::BeginCombo("##record as", shown[record_format])) {
     for (int format = 0; format < 3; ++format) {
       if (ImGui::Selectable(listed[format], format == record_format)) record_format = format;
     }
-    ImGui::EndCombo();
-  }
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("what record writes: PNG frames, a WebM video or an MP4 video");
-  // What a frame shows: the scene alone (the default, what goes on a slide), or the window.
-  static const char* const views[] = {"scene", "window"};
-  static const char* const view_names[] = {"scene only", "whole window"};
-  const float view_width =
-      ImGui::CalcTextSize("window").x + ImGui::GetFrameHeight() + 2.0f * style.FramePadding.x;
-  ImGui::SameLine();
-  if (ImGui::GetContentRegionAvail().x < view_width) ImGui::NewLine();
-  ImGui::SetNextItemWidth(view_width);
-  if (ImGui::BeginCombo("##record view", views[record_whole_window ? 1 : 0])) {
-    for (int view = 0; view < 2; ++view) {
-      if (ImGui::Selectable(view_names[view], (view == 1) == record_whole_window))
-        record_whole_window = view == 1;
-    }
+    ImGui::Separator();
+    if (ImGui::Selectable("scene only", !record_whole_window)) record_whole_window = false;
+    if (ImGui::Selectable("whole window", record_whole_window)) record_whole_window = true;
     ImGui::EndCombo();
   }
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("what record films: the scene alone (for slides), or the whole window "
-                      "with the panel");
+    ImGui::SetTooltip("what record writes (PNG frames, a WebM or an MP4 video) and films: %s",
+                      record_whole_window ? "the whole window, panel included"
+                                          : "the scene alone, for slides");
   }
   if (!recording_status.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));

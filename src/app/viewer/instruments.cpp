@@ -129,18 +129,19 @@ void Instruments::set_sides(PlottedSides sides) {
   sides_ = std::move(sides);
 }
 
-float Instruments::draw(float ui_scale) {
+float Instruments::draw(float ui_scale, float panel_right) {
   bool& convergence_open = open_.show_convergence;
   bool& energy_open = open_.show_energy;
   // The plots stand in a column at the window's right (instrument_windows.h).
   const float display = ImGui::GetIO().DisplaySize.x;
   const float column_left =
-      convergence_open || energy_open ? instrument_column_left(display, ui_scale) : -1.0f;
+      convergence_open || energy_open ? instrument_column_left(display, ui_scale, panel_right)
+                                      : -1.0f;
   if (convergence_open) {
     ConvergencePlotData data;
     data.left = curve_of(left_.trace, left_.trace_step);
     if (sides_.split) data.right = curve_of(right_.trace, right_.trace_step);
-    draw_convergence_window(data, convergence_open, ui_scale);
+    draw_convergence_window(data, convergence_open, ui_scale, panel_right);
   }
   if (energy_open) {
     EnergyPlotData data;
@@ -156,7 +157,7 @@ float Instruments::draw(float ui_scale) {
       data.left_solver = sides_.left_solver;
       data.right_solver = sides_.right_solver;
     }
-    draw_energy_window(data, energy_open, ui_scale);
+    draw_energy_window(data, energy_open, ui_scale, panel_right);
   }
   // A window closed here stops its recording from the next batch on.
   if (!energy_open) {

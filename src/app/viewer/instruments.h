@@ -59,10 +59,11 @@ class Instruments {
                   const std::vector<std::pair<double, FrameEnergy>>& energy);
   // Which sides there are now; the right side's curves are forgotten when the view is not split.
   void set_sides(PlottedSides sides);
-  // ImGui, between NewFrame and Render: the open plots, in a column at the window's right. A
-  // plot the user closes is closed. Returns the column's left edge (ImGui's units), or a
-  // negative number when no plot is open.
-  float draw(float ui_scale);
+  // ImGui, between NewFrame and Render: the open plots, in a column at the window's right, clear
+  // of the panel whose right edge is `panel_right` (0: hidden) where it can be. A plot the user
+  // closes is closed. Returns the column's left edge (ImGui's units), or a negative number when
+  // no plot is open.
+  float draw(float ui_scale, float panel_right = 0.0f);
 
   // What the plots show as CSV text: the convergence plot's step (the simulation's, the left
   // side's) as --convergence-csv writes a step ("" when no step was traced yet), and the energy

@@ -328,6 +328,7 @@ class Viewer {
   PanelPlace panel_place_;          // where build_ui last drew the panel; not shown without a panel
   float instruments_left_ = -1.0f;  // the plots' left edge (window units); < 0 while closed
   bool framed_with_plots_ = false;  // the plots were open when the view was last framed
+  bool framed_with_panel_ = false;  // ... and the panel shown
   float framed_panel_bottom_ = 0.0f;  // ... and the bottom of a panel as wide as it (0: none)
   std::vector<Binding> help_ = viewer_bindings();
   PageActions page_actions_;

@@ -66,7 +66,7 @@ void Viewer::build_legend(float ui_scale) {
   const ColorQuantity quantity = quantity_colors_.quantity();
   if (quantity == ColorQuantity::material) return;
   LegendClearance clearance;
-  clearance.instrument_column = instruments_.column_open();
+  clearance.instrument_column_left = instruments_left_;
   clearance.side_labels = right_.simulation() != nullptr;
   if (quantity == ColorQuantity::contacts) {
     draw_color_legend(contacts_legend(), ui_scale, clearance);

@@ -120,7 +120,7 @@ void Viewer::draw_student_legend(float ui_scale) {
   legend.note = shown_student_distance_ <= distance_floor ? "the same as Wobble's (within 1e-6 m)"
                                                           : "largest distance this step";
   LegendClearance clearance;
-  clearance.instrument_column = instruments_.column_open();
+  clearance.instrument_column_left = instruments_left_;
   clearance.side_labels = true;
   draw_color_legend(legend, ui_scale, clearance);
 }

@@ -15,7 +15,9 @@ void Viewer::update_recording() {
 }
 
 void Viewer::show_instruments(float ui_scale) {
-  instruments_left_ = instruments_.draw(ui_scale);
+  // The column keeps clear of the panel where it can (a projector's UI scale).
+  const float panel_right = panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f;
+  instruments_left_ = instruments_.draw(ui_scale, panel_right);
   if (!host_.batch_started()) update_recording();
 }
 

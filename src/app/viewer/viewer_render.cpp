@@ -90,7 +90,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   if (!host_.batch_started() && arrays_stale_) update_vertex_arrays();
   const float aspect = static_cast<float>(left_width) / std::max(framebuffer_height, 1);
   // Split, both sides share one camera and each is framed whole in its half; else the shape is
-  // framed in what the panel and the plots leave free, and again when the plots open or close.
+  // framed in what the panel and the plots leave free.
   std::vector<std::pair<float, float>> covers;
   if (!right_.simulation()) {
     if (panel_place_.shown) {
@@ -107,8 +107,12 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   // Only a framing below the panel follows its height (a tall panel leaves the whole view).
   const float panel_bottom = region.top > 0.0f ? panel_place_.y + panel_place_.height : 0.0f;
   const bool plots_open = instruments_left_ >= 0.0f;
-  if (plots_open != framed_with_plots_ || std::abs(panel_bottom - framed_panel_bottom_) > 1.0f) {
+  // Framed again when the plots open or close, the panel is shown or hidden (Tab), or a panel as
+  // wide as the view changes its height.
+  if (plots_open != framed_with_plots_ || panel_place_.shown != framed_with_panel_ ||
+      std::abs(panel_bottom - framed_panel_bottom_) > 1.0f) {
     framed_with_plots_ = plots_open;
+    framed_with_panel_ = panel_place_.shown;
     framed_panel_bottom_ = panel_bottom;
     if (!view_camera_.framing_pending()) view_camera_.frame_next();
   }

@@ -106,8 +106,8 @@ TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
 // G opens the plots in a column at the right: the cloth moves into what the panel and the plots
 // leave free, both pins in sight (they hid the right pin and half the cloth), and F frames there.
 TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
-  // At a UI scale of 1 (at 2 the panel and the plots leave too little between them, and the
-  // cloth is framed in the whole window behind them).
+  // At a UI scale of 1 (at 2 the panel and the plots leave too little between them even with the
+  // column narrowed, and the cloth is framed in the whole window behind them).
   HeadlessImGui imgui;
   CameraFixture f;
   const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.0f); };
@@ -141,6 +141,65 @@ TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
       0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
   EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x())
       << "centred beside the panel again";
+}
+
+// At a projector's UI scale (1.5 at 1280 × 720) the plots' column narrows to leave the shape a
+// third of the view beside the panel: G then F shows the whole cloth and the whole jelly there.
+// (The column kept its full width, the gap was too narrow to frame into, and the shape was
+// framed in the whole window: the cloth behind the panel and a pin behind the plots.)
+TEST(ViewerCamera, AtAProjectorsScaleGThenFShowsTheShapeBetweenPanelAndPlots) {
+  for (const std::string name : {"cloth", "jelly"}) {
+    HeadlessImGui imgui;
+    CameraFixture f(wobble::make_builtin_scene(name));
+    const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.5f); };
+    frame();
+    f.press_key(GLFW_KEY_G);
+    for (int i = 0; i < 3; ++i)
+      frame();
+    f.press_key(GLFW_KEY_F);
+    for (int i = 0; i < 2; ++i)
+      frame();
+    const ImGuiWindow* plots = ImGui::FindWindowByName("Convergence of the last step");
+    const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+    ASSERT_NE(plots, nullptr);
+    ASSERT_NE(panel, nullptr);
+    const float plots_left = plots->Pos.x, panel_right = panel->Pos.x + panel->Size.x;
+    EXPECT_GE(plots_left - panel_right, 0.25f * window.x()) << name;
+    EXPECT_GT(plots->Size.x, 0.25f * window.x()) << name << ": the plots still readable";
+    const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2f at = f.on_screen(i);
+      ASSERT_GT(at.x(), panel_right) << name << ": vertex " << i << " behind the panel";
+      ASSERT_LT(at.x(), plots_left) << name << ": vertex " << i << " behind the plots";
+      ASSERT_TRUE(at.y() > 0.0f && at.y() < window.y()) << name << ": vertex " << i;
+    }
+  }
+}
+
+// Tab hides the panel: the shape is framed again in the whole window, and again beside the panel
+// when it comes back (it stayed where the panel had left room for it).
+TEST(ViewerCamera, TabHidingThePanelFramesAgain) {
+  HeadlessImGui imgui;
+  CameraFixture f;
+  const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.0f); };
+  const auto middle_x = [&f] {
+    return 0.5f * (f.on_screen(f.viewer.scene().pins[0]).x() +
+                   f.on_screen(f.viewer.scene().pins[1]).x());
+  };
+  for (int i = 0; i < 2; ++i)
+    frame();
+  const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+  ASSERT_NE(panel, nullptr);
+  const float beside = 0.5f * (panel->Pos.x + panel->Size.x + window.x());
+  EXPECT_NEAR(middle_x(), beside, 0.1f * window.x());
+  f.press_key(GLFW_KEY_TAB);
+  for (int i = 0; i < 2; ++i)
+    frame();
+  EXPECT_NEAR(middle_x(), 0.5f * window.x(), 0.1f * window.x()) << "centred in the window";
+  f.press_key(GLFW_KEY_TAB);
+  for (int i = 0; i < 2; ++i)
+    frame();
+  EXPECT_NEAR(middle_x(), beside, 0.1f * window.x()) << "beside the panel again";
 }
 
 // A scene with its own camera (the flag) opens in what the panel leaves free: its view, made for
