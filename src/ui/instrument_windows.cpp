@@ -51,8 +51,11 @@ void draw_light(const ConvergenceCurve& side, const char* name) {
   ImGui::Dummy(ImVec2(line, line));
   ImGui::SameLine();
   // Two sides' lines carry their names: " of scale" would no longer fit the column.
-  ImGui::TextColored(color, "%s%s: |grad| at %.2g%s", name, convergence_label(side.light),
-                     side.reduction, name[0] == '\0' ? " of scale" : "");
+  // Wrapped, in the light's colour: a narrow column (a projector's UI scale) keeps it whole.
+  ImGui::PushStyleColor(ImGuiCol_Text, color);
+  ImGui::TextWrapped("%s%s: |grad| at %.2g%s", name, convergence_label(side.light), side.reduction,
+                     name[0] == '\0' ? " of scale" : "");
+  ImGui::PopStyleColor();
 }
 
 }  // namespace
@@ -85,7 +88,7 @@ float instrument_column_width(float display_width, float ui_scale, float panel_r
   // What the panel and the column leave the shape, with the column's margin from the edge.
   const float leaving = display_width - column_free_share * display_width - 10.0f * ui_scale -
                         panel_right;
-  return leaving >= 0.25f * display_width ? std::min(width, leaving) : width;
+  return std::min(width, std::max(leaving, std::min(width, min_column_width * ui_scale)));
 }
 
 float instrument_column_left(float display_width, float ui_scale, float panel_right) {

@@ -62,8 +62,9 @@ void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale,
 // the UI scale at most, 45% of a small display, and narrower where the panel (its right edge at
 // `panel_right`, 0 when hidden) would otherwise leave the shape less than
 // column_free_share of the display between them (a projector's UI scale of 1.5 at 1280 wide),
-// though never below a quarter of the display. Other overlays keep out of it.
+// though not below min_column_width times the UI scale. Other overlays keep out of it.
 constexpr float column_free_share = 0.3f;
+constexpr float min_column_width = 200.0f;
 float instrument_column_width(float display_width, float ui_scale, float panel_right = 0.0f);
 // Where that column begins (pixels from the display's left edge): its width and a margin from
 // the right edge. The split view keeps left of it.
