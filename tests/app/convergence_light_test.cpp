@@ -1,5 +1,6 @@
 // The convergence light as a class sees it: read from the panel as drawn (a headless `--ui
-// --plots` picture), not from the function that classifies a step. The light at rest was red
+// --plots` picture at 1280 × 720, where the plots' column has its full width), not from the function
+// that classifies a step. The light at rest was red
 // twice after its classification had been fixed, because the panel's copy of the step's record
 // lost the force scale the classification measures a step at rest by.
 #include <gtest/gtest.h>
@@ -16,7 +17,7 @@ namespace {
 using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
-constexpr int width = 900, height = 560;
+constexpr int width = 1280, height = 720;
 
 // The light's three colours as drawn (instrument_windows.cpp's, in bytes).
 struct Light {
