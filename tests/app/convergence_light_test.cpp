@@ -1,8 +1,8 @@
 // The convergence light as a class sees it: read from the panel as drawn (a headless `--ui
-// --plots` picture at 1280 × 720, where the plots' column has its full width), not from the function
-// that classifies a step. The light at rest was red
-// twice after its classification had been fixed, because the panel's copy of the step's record
-// lost the force scale the classification measures a step at rest by.
+// --plots` picture at 1280 × 720, where the plots' column has its full width), not from the
+// function that classifies a step. The light at rest was red twice after its classification had
+// been fixed, because the panel's copy of the step's record lost the force scale the
+// classification measures a step at rest by.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
