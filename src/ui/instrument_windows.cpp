@@ -24,6 +24,9 @@ ImVec4 light_color(ConvergenceLight light) {
   return ImVec4(1, 1, 1, 1);
 }
 
+// Below this share of the energy, a difference between two iterates' energies is rounding.
+constexpr double rounding_share = 1e-12;
+
 std::vector<double> iteration_numbers(std::size_t count) {
   std::vector<double> x(count);
   for (std::size_t i = 0; i < count; ++i)
@@ -175,10 +178,16 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
     x[s] = iteration_numbers(energy.size());
     // The objective's own value is offset by −pᵀf_ext; what shows convergence is how far each
     // iterate's energy is above the lowest reached.
+    // Differences below about 1e-12 of the energy itself are its rounding, not convergence (a
+    // step at rest drew broken noise near 1e-14): they are left out, as the lowest itself (0 on
+    // a log axis) always was, so the curve ends where the energy stops changing.
     const double lowest = *std::min_element(energy.begin(), energy.end());
+    const double floor = rounding_share * std::max(std::abs(lowest), std::abs(energy[0]));
     above[s].resize(energy.size());
-    for (std::size_t i = 0; i < energy.size(); ++i)
-      above[s][i] = energy[i] - lowest;
+    for (std::size_t i = 0; i < energy.size(); ++i) {
+      const double difference = energy[i] - lowest;
+      above[s][i] = difference > floor ? difference : 0.0;
+    }
     const char* name = !split ? "" : sides[s] == &data.left ? "left: " : "right: ";
     gradient_names[s] = name + side.solver;
     char e0[64];

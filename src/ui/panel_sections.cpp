@@ -302,8 +302,9 @@ void draw_view_section(ViewSettings& settings) {
   ImGui::Checkbox("points", &settings.points);
   const char* const color_names[] = {"material", "strain", "speed", "contacts"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
-  ImGui::SliderFloat("UI scale", &settings.ui_scale, ViewSettings::min_ui_scale,
-                     ViewSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
+  // Dragged like every other number, 0.01 a pixel: a slider jumped to where the click landed.
+  ImGui::DragFloat("UI scale", &settings.ui_scale, 0.01f, ViewSettings::min_ui_scale,
+                   ViewSettings::max_ui_scale, "%.2f", ImGuiSliderFlags_AlwaysClamp);
 }
 
 bool draw_instruments_section(InstrumentSettings& settings) {

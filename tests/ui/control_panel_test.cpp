@@ -301,7 +301,7 @@ TEST(LogDrag, SpeedMakesAFactorAPixelOverTheRange) {
 namespace {
 
 // Every number is dragged, never set by where a click lands: a click on the iterations, gravity,
-// friction or wind made the value jump to the click, while k and dt dragged.
+// friction, wind or the UI scale made the value jump to the click, while k and dt dragged.
 TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
   struct Case {
     const char* label;
@@ -312,7 +312,8 @@ TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
       {"gravity (m/s^2)", [](const PanelSettings& s) { return s.gravity; }},
       {"friction", [](const PanelSettings& s) { return s.friction; }},
       {"wind (m/s)", [](const PanelSettings& s) { return s.wind_speed; }},
-      {"wind heading", [](const PanelSettings& s) { return s.wind_heading; }}};
+      {"wind heading", [](const PanelSettings& s) { return s.wind_heading; }},
+      {"UI scale", [](const PanelSettings& s) { return s.ui_scale; }}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.label);
     PanelDriver panel(1280.0f, 720.0f, 1.0f);
