@@ -10,6 +10,16 @@ namespace wobble {
 
 namespace {
 
+// A scene's description as a tooltip, wrapped at about 40 characters of the font: one line of a
+// long description ran 800 pixels across the plots beside the panel.
+void wrapped_tooltip(const std::string& text) {
+  ImGui::BeginTooltip();
+  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+  ImGui::TextUnformatted(text.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::EndTooltip();
+}
+
 const ImVec4 warning_color(1.0f, 0.75f, 0.2f, 1.0f);
 
 // The tooltip of every drag over decades.
@@ -78,13 +88,13 @@ SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
             requests.scene_changed = true;
           }
           if (!scenes[i].description.empty() && ImGui::IsItemHovered())
-            ImGui::SetTooltip("%s", scenes[i].description.c_str());
+            wrapped_tooltip(scenes[i].description);
         }
       }
       ImGui::EndCombo();
     }
     if (!scenes[settings.scene].description.empty() && ImGui::IsItemHovered())
-      ImGui::SetTooltip("%s", scenes[settings.scene].description.c_str());
+      wrapped_tooltip(scenes[settings.scene].description);
   }
   if (settings.page) {
     requests.pick_files = ImGui::Button("Open file...");
