@@ -80,8 +80,6 @@ std::string path_value(const char* option, const std::string& text, const char* 
   return text;
 }
 
-// Two outputs that would write one file, links followed: the later would silently replace the
-// earlier. A device, a terminal or a pipe takes both, one after the other.
 // --expect-tolerance's "LEVELS[,PERCENT]": whole levels of 255, and a percentage of the pixels.
 ImageTolerance parse_expect_tolerance(const std::string& text) {
   const std::size_t comma = text.find(',');
@@ -100,6 +98,8 @@ ImageTolerance parse_expect_tolerance(const std::string& text) {
   return tolerance;
 }
 
+// Two outputs that would write one file, links followed: the later would silently replace the
+// earlier. A device, a terminal or a pipe takes both, one after the other.
 void check_distinct_outputs(const CommandLine& command) {
   const std::pair<const char*, const std::string*> outputs[] = {
       {"--screenshot", &command.screenshot},
