@@ -42,8 +42,10 @@ struct EglLibrary {
       return;
     }
     const auto load = [&](auto& function, const char* name) {
-      function = reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(library, name));
-      if (function == nullptr && missing.empty()) missing = std::string("libEGL.so.1 lacks ") + name;
+      function =
+          reinterpret_cast<std::remove_reference_t<decltype(function)>>(dlsym(library, name));
+      if (function == nullptr && missing.empty())
+        missing = std::string("libEGL.so.1 lacks ") + name;
     };
     load(get_proc_address, "eglGetProcAddress");
     load(query_string, "eglQueryString");
@@ -179,9 +181,11 @@ EGLContext make_current_context(EGLDisplay display, std::string& failure) {
                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                        EGL_NONE};
-  const EGLContext context = egl().create_context(display, config, EGL_NO_CONTEXT, context_attributes);
+  const EGLContext context =
+      egl().create_context(display, config, EGL_NO_CONTEXT, context_attributes);
   if (context == EGL_NO_CONTEXT) {
-    return fail("eglCreateContext(OpenGL 3.3 core) failed (" + egl_error_name(egl().get_error()) + ")");
+    return fail("eglCreateContext(OpenGL 3.3 core) failed (" + egl_error_name(egl().get_error()) +
+                ")");
   }
   if (egl().make_current(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context) != EGL_TRUE) {
     const std::string error = egl_error_name(egl().get_error());
@@ -228,8 +232,8 @@ EglContext::EglContext() {
           return std::string(value == nullptr ? "?" : value);
         };
         driver_ = GlDriver{platform, text(GL_VENDOR), text(GL_RENDERER), text(GL_VERSION)};
-        description_ = "EGL " + platform + ", " + driver_.vendor + ", " + driver_.renderer +
-                       ", " + driver_.version;
+        description_ = "EGL " + platform + ", " + driver_.vendor + ", " + driver_.renderer + ", " +
+                       driver_.version;
         return;
       }
     }

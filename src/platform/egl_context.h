@@ -15,7 +15,7 @@ namespace wobble {
 // libEGL.so.1 is opened at run time, so the program starts without it (the window needs none).
 // What drew a headless picture, for a CI log beside a failing image.
 struct GlDriver {
-  std::string platform;  // EGL's: "device" or "surfaceless"
+  std::string platform;                   // EGL's: "device" or "surfaceless"
   std::string vendor, renderer, version;  // GL_VENDOR, GL_RENDERER, GL_VERSION
 };
 

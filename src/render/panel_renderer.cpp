@@ -68,10 +68,9 @@ struct SavedState {
     glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
     glBlendEquationSeparate(static_cast<GLenum>(blend_rgb_equation),
                             static_cast<GLenum>(blend_alpha_equation));
-    glBlendFuncSeparate(static_cast<GLenum>(blend_rgb_source),
-                        static_cast<GLenum>(blend_rgb_destination),
-                        static_cast<GLenum>(blend_alpha_source),
-                        static_cast<GLenum>(blend_alpha_destination));
+    glBlendFuncSeparate(
+        static_cast<GLenum>(blend_rgb_source), static_cast<GLenum>(blend_rgb_destination),
+        static_cast<GLenum>(blend_alpha_source), static_cast<GLenum>(blend_alpha_destination));
     set(GL_BLEND, blend);
     set(GL_CULL_FACE, cull);
     set(GL_DEPTH_TEST, depth);
@@ -104,7 +103,8 @@ void point_attributes(std::size_t first_vertex) {
 
 }  // namespace
 
-PanelRenderer::PanelRenderer() : program_(std::make_unique<ShaderProgram>("panel.vert", "panel.frag")) {
+PanelRenderer::PanelRenderer()
+    : program_(std::make_unique<ShaderProgram>("panel.vert", "panel.frag")) {
   projection_ = program_->uniform("projection");
   atlas_ = program_->uniform("atlas");
   glGenVertexArrays(1, &vertex_array_);
@@ -240,7 +240,8 @@ void PanelRenderer::draw(const ImDrawData& data) {
       const float clip_right = (command.ClipRect.z - origin.x) * scale.x;
       const float clip_bottom = (command.ClipRect.w - origin.y) * scale.y;
       if (clip_right <= clip_left || clip_bottom <= clip_top) continue;
-      glScissor(static_cast<int>(clip_left), static_cast<int>(static_cast<float>(height) - clip_bottom),
+      glScissor(static_cast<int>(clip_left),
+                static_cast<int>(static_cast<float>(height) - clip_bottom),
                 static_cast<int>(clip_right - clip_left), static_cast<int>(clip_bottom - clip_top));
       glBindTexture(GL_TEXTURE_2D,
                     static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(command.TextureId)));

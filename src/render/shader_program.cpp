@@ -67,8 +67,7 @@ ShaderProgram::ShaderProgram(const std::string& vertex_file, const std::string& 
   if (ok != GL_TRUE) {
     const std::string log = failure_log(program_, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw ShaderError("shaders/" + vertex_file + " + " + fragment_file +
-                             ": do not link: " + log);
+    throw ShaderError("shaders/" + vertex_file + " + " + fragment_file + ": do not link: " + log);
   }
 }
 

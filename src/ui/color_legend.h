@@ -23,7 +23,7 @@ struct LegendClearance {
   // The plot windows' column at the right (instrument_windows.h): its left edge, negative when
   // no plot is open.
   float instrument_column_left = -1.0f;
-  bool side_labels = false;        // the split view's labels along the bottom (side_labels.h)
+  bool side_labels = false;  // the split view's labels along the bottom (side_labels.h)
 };
 
 // Draws the legend in a small undecorated window at the bottom right of the view: of the display,

@@ -120,9 +120,8 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     static_cast<SceneRowRequests&>(requests) = draw_scene_rows(settings, scenes);
   };
   parts.save_rows = [&] {
-    static_cast<SaveRowRequests&>(requests) =
-        draw_save_rows(settings.recording, settings.record_format, settings.record_whole_window,
-                       stats.recording);
+    static_cast<SaveRowRequests&>(requests) = draw_save_rows(
+        settings.recording, settings.record_format, settings.record_whole_window, stats.recording);
   };
   parts.play_rows = [&] {
     static_cast<PlayRequests&>(requests) = draw_play_rows(settings, stats.warning);

@@ -94,8 +94,8 @@ struct PanelSettings : SceneRowSettings,
                        ViewSettings,
                        InstrumentSettings,
                        SplitSettings {
-  bool recording = false;  // every new state drawn written as a PNG or a video frame (F9)
-  int record_format = 0;   // what the recording writes: a RecordFormat (panel_sections.h)
+  bool recording = false;            // every new state drawn written as a PNG or a video frame (F9)
+  int record_format = 0;             // what the recording writes: a RecordFormat (panel_sections.h)
   bool record_whole_window = false;  // a recorded frame shows the window, not the scene alone
 };
 

@@ -89,8 +89,8 @@ float instrument_column_width(float display_width, float ui_scale, float panel_r
   const float width = std::min(380.0f * ui_scale, 0.45f * display_width);
   if (!(panel_right > 0.0f)) return width;
   // What the panel and the column leave the shape, with the column's margin from the edge.
-  const float leaving = display_width - column_free_share * display_width - 10.0f * ui_scale -
-                        panel_right;
+  const float leaving =
+      display_width - column_free_share * display_width - 10.0f * ui_scale - panel_right;
   return std::min(width, std::max(leaving, std::min(width, min_column_width * ui_scale)));
 }
 
@@ -112,9 +112,9 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
   // small display (a headless image) the two windows share the right side's height.
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = instrument_column_width(display.x, ui_scale, panel_right);
-  ImGui::SetNextWindowPos(ImVec2(instrument_column_left(display.x, ui_scale, panel_right),
-                                 10.0f * ui_scale),
-                          ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(
+      ImVec2(instrument_column_left(display.x, ui_scale, panel_right), 10.0f * ui_scale),
+      ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, std::min(390.0f * ui_scale, 0.6f * display.y - 15.0f)),
                            ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Convergence of the last step", &open)) {
@@ -214,8 +214,7 @@ void draw_convergence_window(const ConvergencePlotData& data, bool& open, float 
   ImGui::End();
 }
 
-void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale,
-                        float panel_right) {
+void draw_energy_window(const EnergyPlotData& data, bool& open, float ui_scale, float panel_right) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = instrument_column_width(display.x, ui_scale, panel_right);
   const float top = std::min(410.0f * ui_scale, 0.6f * display.y + 5.0f);

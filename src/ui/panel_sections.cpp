@@ -173,9 +173,9 @@ SaveRowRequests draw_save_rows(bool& recording, int& record_format, bool& record
   }
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip("what record writes (PNG frames, a WebM or an MP4 video) and films: %s",
-                      record_whole_window ? "the whole window, panel included"
-                                          : "the scene alone, for slides");
+    ImGui::SetTooltip(
+        "what record writes (PNG frames, a WebM or an MP4 video) and films: %s",
+        record_whole_window ? "the whole window, panel included" : "the scene alone, for slides");
   }
   if (!recording_status.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.35f, 0.3f, 1.0f));

@@ -45,8 +45,8 @@ struct SaveRowRequests {
 // What the record toggle writes, the combo beside it: PNG frames in a folder, or one video.
 enum RecordFormat : int { record_png_frames = 0, record_webm_video = 1, record_mp4_video = 2 };
 // `record_whole_window`: what a recorded frame shows (the scene alone, or the window with its
-// panel), the second choice in the same combo. Without `offer_record` (the page, which has no folder to record into),
-// the toggle and the combos are left out.
+// panel), the second choice in the same combo. Without `offer_record` (the page, which has no
+// folder to record into), the toggle and the combos are left out.
 SaveRowRequests draw_save_rows(bool& recording, int& record_format, bool& record_whole_window,
                                const std::string& recording_status, bool offer_record = true);
 

@@ -24,8 +24,8 @@ struct Light {
   const char* name;
   int rgb[3];
 };
-constexpr Light lights[] = {{"green", {89, 217, 89}}, {"amber", {255, 184, 38}},
-                            {"red", {255, 77, 64}}};
+constexpr Light lights[] = {
+    {"green", {89, 217, 89}}, {"amber", {255, 184, 38}}, {"red", {255, 77, 64}}};
 
 bool near(const unsigned char* p, const int (&rgb)[3], int tolerance) {
   for (int c = 0; c < 3; ++c) {
@@ -62,11 +62,11 @@ struct Shown {
 Shown shown(const std::string& arguments, long frames) {
   TemporaryFolder folder;
   const std::string image_path = folder.file("panel.png");
-  const auto run = run_wobble(arguments + " --headless --ui --plots --frames " +
-                                  std::to_string(frames) + " --width " + std::to_string(width) +
-                                  " --height " + std::to_string(height) + " --screenshot '" +
-                                  image_path + "'",
-                              "DISPLAY= WAYLAND_DISPLAY=");
+  const auto run =
+      run_wobble(arguments + " --headless --ui --plots --frames " + std::to_string(frames) +
+                     " --width " + std::to_string(width) + " --height " + std::to_string(height) +
+                     " --screenshot '" + image_path + "'",
+                 "DISPLAY= WAYLAND_DISPLAY=");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   const wobble::RgbaImage image = wobble::read_png(image_path);
   const int first_line = 10 + 19 + 8;

@@ -344,9 +344,9 @@ TEST(HeadlessRender, SplitViewSidesShowBesideThePanel) {
 // Every way the headless path can find no GPU gives one line and exit 2, never a signal.
 TEST(HeadlessRender, WithoutLibEglItExitsWithOneLineNamingIt) {
   TemporaryFolder folder;
-  const auto run = run_wobble(
-      "cloth --headless --ui --frames 2 --screenshot '" + folder.file("a.png") + "'",
-      no_display + " " + wobble::testing::hiding("libEGL.so.1"));
+  const auto run =
+      run_wobble("cloth --headless --ui --frames 2 --screenshot '" + folder.file("a.png") + "'",
+                 no_display + " " + wobble::testing::hiding("libEGL.so.1"));
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_EQ(run.err,
             "wobble: error: cannot create a headless OpenGL 3.3 context: libEGL.so.1 is not "
@@ -357,10 +357,10 @@ TEST(HeadlessRender, WithoutLibEglItExitsWithOneLineNamingIt) {
 TEST(HeadlessRender, AnAskedPlatformThatFailsExitsWithOneLineNamingIt) {
   TemporaryFolder folder;
   for (const std::string platform : {"device", "surfaceless"}) {
-    const auto run = run_wobble(
-        "cloth --headless --ui --frames 2 --screenshot '" + folder.file("a.png") + "'",
-        no_display + " WOBBLE_EGL_PLATFORM=" + platform +
-            " __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
+    const auto run =
+        run_wobble("cloth --headless --ui --frames 2 --screenshot '" + folder.file("a.png") + "'",
+                   no_display + " WOBBLE_EGL_PLATFORM=" + platform +
+                       " __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json");
     EXPECT_EQ(run.exit_code, 2) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_NE(run.err.find("(" + platform + ": "), std::string::npos) << run.err;
@@ -388,9 +388,11 @@ TEST(HeadlessRender, ThePanelDrawsWithoutLibGl) {
 
 TEST(HeadlessRender, StatsAndVersionNameTheDriverThatDrew) {
   TemporaryFolder folder;
-  const auto run = run_wobble("cloth --headless --frames 2 --width 64 --height 48 --stats "
-                              "--screenshot '" + folder.file("a.png") + "'",
-                              no_display + " WOBBLE_EGL_PLATFORM=surfaceless");
+  const auto run = run_wobble(
+      "cloth --headless --frames 2 --width 64 --height 48 --stats "
+      "--screenshot '" +
+          folder.file("a.png") + "'",
+      no_display + " WOBBLE_EGL_PLATFORM=surfaceless");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto stats = nlohmann::json::parse(run.out.substr(run.out.rfind('{')));
   EXPECT_EQ(stats.at("egl_platform"), "surfaceless");
@@ -417,9 +419,11 @@ TEST(HeadlessRender, StatsAndVersionNameTheDriverThatDrew) {
 class ExpectOption : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto run = run_wobble("cloth --headless --frames 8 --width 160 --height 120 "
-                                "--screenshot '" + expected_ + "'",
-                                no_display);
+    const auto run = run_wobble(
+        "cloth --headless --frames 8 --width 160 --height 120 "
+        "--screenshot '" +
+            expected_ + "'",
+        no_display);
     ASSERT_EQ(run.exit_code, 0) << run.err;
   }
   wobble::testing::Result expect(const std::string& extra) {
@@ -485,8 +489,8 @@ TEST_F(ExpectOption, BadInputIsRefusedBeforeAnyWork) {
        "--expect-tolerance: expected LEVELS[,PERCENT]"},
   };
   for (const auto& [arguments, message] : cases) {
-    const auto run = run_wobble(arguments + " --screenshot '" + folder_.file("out.png") + "'",
-                                no_display);
+    const auto run =
+        run_wobble(arguments + " --screenshot '" + folder_.file("out.png") + "'", no_display);
     EXPECT_EQ(run.exit_code, 2) << arguments << ": " << run.err;
     EXPECT_EQ(run.err.rfind("wobble: " + message, 0), 0u) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;

@@ -9,9 +9,9 @@
 
 #include "app/cli/command_line.h"
 #include "app/headless/render_offscreen.h"
+#include "app/outputs/image_compare.h"
 #include "app/viewer/viewer.h"
 #include "golden_cases.h"
-#include "app/outputs/image_compare.h"
 
 namespace {
 
@@ -52,8 +52,7 @@ wobble::RgbaImage render_changed(const std::string& name, Change change) {
   return wobble::render_offscreen(viewer, options);
 }
 
-wobble::ImageComparison against_golden(const std::string& name,
-                                           const wobble::RgbaImage& actual) {
+wobble::ImageComparison against_golden(const std::string& name, const wobble::RgbaImage& actual) {
   const wobble::RgbaImage expected =
       wobble::read_png(std::string(WOBBLE_GOLDEN_DIR) + "/" + name + ".png");
   const wobble::ImageComparison comparison =
@@ -92,7 +91,8 @@ TEST(GoldenSensitivity, EveryEdgeMovedByOnePixelPasses) {
     for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{-1, -1}}) {
       const auto comparison = against_golden(name, shifted(golden_image(name), dx, dy));
       EXPECT_TRUE(comparison.matches(golden_tolerance))
-          << name << " moved (" << dx << ", " << dy << "): " << comparison.summary(golden_tolerance);
+          << name << " moved (" << dx << ", " << dy
+          << "): " << comparison.summary(golden_tolerance);
     }
   }
 }
@@ -100,8 +100,8 @@ TEST(GoldenSensitivity, EveryEdgeMovedByOnePixelPasses) {
 TEST(GoldenSensitivity, EdgesMovedByTwoPixelsFail) {
   for (const std::string name : {"cloth", "jelly_wireframe_springs"}) {
     const auto comparison = against_golden(name, shifted(golden_image(name), 2, 0));
-    EXPECT_FALSE(comparison.matches(golden_tolerance)) << name << ": "
-                                                       << comparison.summary(golden_tolerance);
+    EXPECT_FALSE(comparison.matches(golden_tolerance))
+        << name << ": " << comparison.summary(golden_tolerance);
   }
 }
 

@@ -48,9 +48,9 @@ TEST_P(GoldenImage, MatchesStoredPng) {
   // headless path may need it (ImGui's own OpenGL backend opened it, and the panel aborted).
   const std::string expected_copy = (output / "expected.png").string();
   std::filesystem::copy_file(expected_path, expected_copy);
-  const wobble::testing::Result run = wobble::testing::run_wobble(
-      arguments + " --expect '" + expected_copy + "'",
-      "DISPLAY= " + wobble::testing::hiding(wobble::testing::no_libgl));
+  const wobble::testing::Result run =
+      wobble::testing::run_wobble(arguments + " --expect '" + expected_copy + "'",
+                                  "DISPLAY= " + wobble::testing::hiding(wobble::testing::no_libgl));
   EXPECT_EQ(run.exit_code, 0) << golden.name << ": " << run.err << "  stored   " << expected_path
                               << "\n  actual   " << actual_path;
   EXPECT_NE(run.err.find(": matches ("), std::string::npos) << run.err;

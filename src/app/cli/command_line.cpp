@@ -84,13 +84,15 @@ std::string path_value(const char* option, const std::string& text, const char* 
 ImageTolerance parse_expect_tolerance(const std::string& text) {
   const std::size_t comma = text.find(',');
   const std::optional<long> levels = parse_number<long>(text.substr(0, comma));
-  const std::optional<double> percent =
-      comma == std::string::npos ? std::optional<double>(100.0 * ImageTolerance{}.share)
-                                 : parse_number<double>(text.substr(comma + 1));
+  const std::optional<double> percent = comma == std::string::npos
+                                            ? std::optional<double>(100.0 * ImageTolerance{}.share)
+                                            : parse_number<double>(text.substr(comma + 1));
   if (!levels || *levels < 0 || *levels > 255 || !percent || !(*percent >= 0.0) ||
       !(*percent <= 100.0)) {
-    throw InputError("--expect-tolerance: expected LEVELS[,PERCENT] (a whole number from 0 to "
-                     "255, then a number from 0 to 100), got '" + text + "'");
+    throw InputError(
+        "--expect-tolerance: expected LEVELS[,PERCENT] (a whole number from 0 to "
+        "255, then a number from 0 to 100), got '" +
+        text + "'");
   }
   ImageTolerance tolerance;
   tolerance.channel = static_cast<int>(*levels);

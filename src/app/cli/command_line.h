@@ -54,14 +54,12 @@ struct CommandLine {
   ImageTolerance expect_tolerance;
   // --version --headless: the version, then which EGL platform and GL driver would draw.
   bool version_with_driver = false;
-  bool plots = false;              // open the convergence and energy plots
+  bool plots = false;  // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;    // degrees
   ColorQuantity color_by = ColorQuantity::material;  // else coloured, with a legend
 
-  bool writes_images() const {
-    return !screenshot.empty() || !record.empty() || !expect.empty();
-  }
+  bool writes_images() const { return !screenshot.empty() || !record.empty() || !expect.empty(); }
 
   static constexpr long default_headless_frames = 120;
   static constexpr long max_frames = 10'000'000;

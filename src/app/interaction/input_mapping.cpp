@@ -90,8 +90,9 @@ const std::vector<Binding>& viewer_bindings() {
       {"Tab", "the control panel shown / hidden"},
       {"F12", "screenshot: wobble-SCENE-0001.png, ... in the working folder"},
       {"F11", "export the current positions: wobble-SCENE-0001.obj, ..."},
-      {"F9", "record on / off: each new state, as PNG frames in wobble-SCENE-frames-0001/ or a "
-             "WebM or MP4 video, of the scene alone or the whole window (the panel's combos)"},
+      {"F9",
+       "record on / off: each new state, as PNG frames in wobble-SCENE-frames-0001/ or a "
+       "WebM or MP4 video, of the scene alone or the whole window (the panel's record combo)"},
       {"Ctrl+S", "save the scene, its pins and settings: wobble-SCENE-scene-0001.json"},
       {"H", "this help on / off"},
       {"Esc", "close the help (never quits)"},

@@ -19,8 +19,8 @@ namespace wobble {
 // one that appeared. An edge moved by one pixel then costs nothing, one moved by two a column of
 // pixels. The images match when the pixels that differ are at most `share` of all.
 struct ImageTolerance {
-  int channel = 8;         // levels of 255 a channel may be off without counting
-  double share = 0.0003;   // of the pixels that may differ (0.03%: 23 at 320 × 240)
+  int channel = 8;        // levels of 255 a channel may be off without counting
+  double share = 0.0003;  // of the pixels that may differ (0.03%: 23 at 320 × 240)
 };
 
 struct ImageComparison {

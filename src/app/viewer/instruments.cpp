@@ -134,9 +134,9 @@ float Instruments::draw(float ui_scale, float panel_right) {
   bool& energy_open = open_.show_energy;
   // The plots stand in a column at the window's right (instrument_windows.h).
   const float display = ImGui::GetIO().DisplaySize.x;
-  const float column_left =
-      convergence_open || energy_open ? instrument_column_left(display, ui_scale, panel_right)
-                                      : -1.0f;
+  const float column_left = convergence_open || energy_open
+                                ? instrument_column_left(display, ui_scale, panel_right)
+                                : -1.0f;
   if (convergence_open) {
     ConvergencePlotData data;
     data.left = curve_of(left_.trace, left_.trace_step);

@@ -117,7 +117,8 @@ std::vector<std::string> SaveAndRecord::write_frame(const std::string& scene, lo
     if (wants_scene_frame() && !scene_frame_.pixels.empty()) {
       // The scene as it was before the panel was drawn over it (scene_drawn). (A frame whose
       // scene was not kept, where no panel was drawn, is what the window shows.)
-      record(scene, steps, drawn, [this] { return std::move(scene_frame_); }, time, told);
+      record(
+          scene, steps, drawn, [this] { return std::move(scene_frame_); }, time, told);
     } else {
       record(scene, steps, drawn, read_frame, time, told);
     }

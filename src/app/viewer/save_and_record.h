@@ -87,9 +87,9 @@ class SaveAndRecord {
               const std::function<RgbaImage()>& read_frame, const FrameTime& time,
               std::vector<std::string>& told);
 
-  bool recording_ = false;      // the record toggle
-  bool record_offered_ = true;  // the panel shows the toggle (not in the page)
-  int record_format_ = 0;       // the panel's choice: RecordFormat (panel_sections.h)
+  bool recording_ = false;            // the record toggle
+  bool record_offered_ = true;        // the panel shows the toggle (not in the page)
+  int record_format_ = 0;             // the panel's choice: RecordFormat (panel_sections.h)
   bool record_whole_window_ = false;  // the panel's second combo: the scene alone by default
   RgbaImage scene_frame_;             // this frame's scene before the panel (scene_drawn)
   bool screenshot_requested_ = false;

@@ -308,8 +308,7 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
       std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,
                                    css_height > 0 ? static_cast<int>(css_height) : 720, title);
   fill_missing_gl_functions();
-  app->ui =
-      std::make_unique<ImGuiSession>(app->window->handle(), page_pixel_ratio());
+  app->ui = std::make_unique<ImGuiSession>(app->window->handle(), page_pixel_ratio());
   app->host = std::make_unique<PageHost>(*app->window, *app->ui);
   // The wheel from the browser's event, which says its unit; GLFW's path (ImGui's and the
   // window's callbacks) is turned off.

@@ -102,10 +102,8 @@ TEST(ImageCompare, TheShareDecides) {
   wobble::RgbaImage b = a;
   for (int i = 0; i < 20; ++i)
     b.pixels[4 * (i * 37)] = 255;  // 20 of 10,000 pixels: 0.2%
-  EXPECT_TRUE(
-      wobble::compare_images(a, b, Tolerance{24, 0.002}).matches(Tolerance{24, 0.002}));
-  EXPECT_FALSE(
-      wobble::compare_images(a, b, Tolerance{24, 0.0019}).matches(Tolerance{24, 0.0019}));
+  EXPECT_TRUE(wobble::compare_images(a, b, Tolerance{24, 0.002}).matches(Tolerance{24, 0.002}));
+  EXPECT_FALSE(wobble::compare_images(a, b, Tolerance{24, 0.0019}).matches(Tolerance{24, 0.0019}));
 }
 
 TEST(ImageCompare, DifferentSizesNeverMatch) {
@@ -113,7 +111,7 @@ TEST(ImageCompare, DifferentSizesNeverMatch) {
       square_on_grey(10, 10, 0, 0, 1), square_on_grey(10, 11, 0, 0, 1), Tolerance{255, 1.0});
   EXPECT_FALSE(comparison.matches(Tolerance{255, 1.0}));
   EXPECT_TRUE(wobble::difference_image(square_on_grey(10, 10, 0, 0, 1),
-                                                square_on_grey(10, 11, 0, 0, 1), Tolerance{})
+                                       square_on_grey(10, 11, 0, 0, 1), Tolerance{})
                   .pixels.empty());
 }
 

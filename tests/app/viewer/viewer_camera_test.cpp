@@ -183,8 +183,8 @@ TEST(ViewerCamera, TabHidingThePanelFramesAgain) {
   CameraFixture f;
   const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.0f); };
   const auto middle_x = [&f] {
-    return 0.5f * (f.on_screen(f.viewer.scene().pins[0]).x() +
-                   f.on_screen(f.viewer.scene().pins[1]).x());
+    return 0.5f *
+           (f.on_screen(f.viewer.scene().pins[0]).x() + f.on_screen(f.viewer.scene().pins[1]).x());
   };
   for (int i = 0; i < 2; ++i)
     frame();
