@@ -24,7 +24,12 @@ def main():
     failures = []
     cases = [('scene=flag&k=abc&iterations=20', 'flag',
               ['address: k: expected a positive finite number, got \'abc\'']),
-             ('scene=flg', 'cloth', ['address: scene: no scene \'flg\' (the scenes: cloth, jelly,'])]
+             ('scene=flg', 'cloth', ['address: scene: no scene \'flg\' (the scenes: cloth, jelly,']),
+             # Each cost the whole address before: the default cloth opened instead.
+             ('scene=flag&k=2000&k=50', 'flag', ['address: k: given twice; the last is used']),
+             ('scene=banner&self-collision', 'banner',
+              ['address: self-collision: not for a course scene']),
+             ('scene=course/banner', 'banner', [])]
     for query, scene, told in cases:
         browser = Chromium(shutil.which('chromium') or 'chromium')
         try:

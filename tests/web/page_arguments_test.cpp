@@ -176,3 +176,44 @@ TEST(PageWheel, ANotchIsANotchTheDesktopsWay) {
   EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(-10000.0, 0), 5.0) << "a fling stays a few";
   EXPECT_DOUBLE_EQ(wobble::page_wheel_notches(std::nan(""), 0), 0.0);
 }
+
+namespace {
+
+// Mistakes that cost the whole address before (the page opened the default cloth): a key given
+// twice, a switch a course scene refuses, and a course scene named by its folder.
+TEST(PageArguments, AKeyGivenTwiceKeepsTheLastAndSaysSo) {
+  const wobble::PageRequest twice = wobble::read_page_address("?scene=flag&k=2000&k=50", catalog);
+  EXPECT_EQ(twice.arguments, (Arguments{"wobble", "--k", "50", "--", "/site/assets/flag.json"}));
+  EXPECT_EQ(twice.refusals, (Arguments{"address: k: given twice; the last is used"}));
+  // The command line takes what is left: one --k.
+  std::vector<const char*> argv;
+  for (const std::string& word : twice.arguments)
+    argv.push_back(word.c_str());
+  std::ostringstream ignored;
+  EXPECT_NO_THROW(wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), ignored));
+}
+
+TEST(PageArguments, ACourseSceneLeavesOutWhatItRefusesAndOpensWithTheRest) {
+  const Arguments with_course = {"cloth", "/site/assets/flag.json",
+                                 "/site/assets/course/banner.json"};
+  const wobble::PageRequest banner =
+      wobble::read_page_address("?scene=banner&self-collision&k=300&chebyshev", with_course);
+  EXPECT_EQ(banner.arguments,
+            (Arguments{"wobble", "--k", "300", "--", "/site/assets/course/banner.json"}));
+  ASSERT_EQ(banner.refusals.size(), 2u);
+  EXPECT_EQ(banner.refusals[0].rfind("address: self-collision: not for a course scene", 0), 0u)
+      << banner.refusals[0];
+  EXPECT_NE(banner.refusals[0].find("; left out"), std::string::npos) << banner.refusals[0];
+  EXPECT_EQ(banner.refusals[1].rfind("address: chebyshev: not for a course scene", 0), 0u)
+      << banner.refusals[1];
+  // The same switch on a scene of Wobble's own is taken.
+  EXPECT_TRUE(
+      wobble::read_page_address("?scene=flag&self-collision", with_course).refusals.empty());
+  // Named by its folder, as the site lays it out.
+  const wobble::PageRequest by_folder =
+      wobble::read_page_address("?scene=course/banner", with_course);
+  EXPECT_TRUE(by_folder.refusals.empty());
+  EXPECT_EQ(by_folder.arguments, (Arguments{"wobble", "--", "/site/assets/course/banner.json"}));
+}
+
+}  // namespace

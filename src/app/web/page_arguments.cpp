@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -130,9 +131,24 @@ std::vector<std::string> page_link_losses(const SimulationParams& opened,
 PageRequest read_page_address(const std::string& query, const std::vector<std::string>& catalog) {
   PageRequest request;
   std::string scene;
-  std::vector<std::string> options;
+  // The options the address gives, in its order, each key once: a key given again replaces its
+  // value (the command line refused the pair, and the page opened the default scene instead).
+  struct Given {
+    std::string key;
+    std::vector<std::string> words;  // "--k", "2000"; a switch's word alone
+  };
+  std::vector<Given> given;
   const auto refuse = [&](const std::string& key, const std::string& why) {
     request.refusals.push_back("address: " + key + ": " + why);
+  };
+  const auto take = [&](const std::string& key, std::vector<std::string> words) {
+    for (Given& earlier : given) {
+      if (earlier.key != key) continue;
+      refuse(key, "given twice; the last is used");
+      earlier.words = std::move(words);
+      return;
+    }
+    given.push_back(Given{key, std::move(words)});
   };
   std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
   while (start < query.size()) {
@@ -148,7 +164,13 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
       if (value.empty()) continue;
       std::string found;
       for (const std::string& source : catalog) {
-        if (scene_label(source) == value || source == value) found = source;
+        // By its picker label ("banner"), its source, or its path's end without the extension
+        // ("course/banner").
+        const std::string stem = std::filesystem::path(source).replace_extension().string();
+        const bool ends = stem.size() > value.size() &&
+                          stem.compare(stem.size() - value.size(), value.size(), value) == 0 &&
+                          stem[stem.size() - value.size() - 1] == '/';
+        if (scene_label(source) == value || source == value || ends) found = source;
       }
       // A path (a dropped file's, a scene beside the site) is tried as it is.
       const bool path =
@@ -168,8 +190,7 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
       std::ostringstream ignored;
       try {
         parse_command_line(3, argv, ignored);
-        options.push_back(option);
-        options.push_back(value);
+        take(key, {option, value});
       } catch (const InputError& error) {
         std::string why = error.what();
         if (why.rfind(option + ": ", 0) == 0) why = why.substr(option.size() + 2);
@@ -178,7 +199,7 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
     } else if (is_address_switch(key)) {
       // "plots", "plots=1" or "plots=on" turns it on; "plots=0" leaves it as the scene has it.
       if (value.empty() || value == "1" || value == "on" || value == "true") {
-        options.push_back("--" + key);
+        take(key, {"--" + key});
       } else if (value != "0" && value != "off" && value != "false") {
         refuse(key, "expected no value, 1 or 0, got '" + value + "'");
       }
@@ -187,7 +208,29 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
     }
   }
   request.arguments = {"wobble"};
-  request.arguments.insert(request.arguments.end(), options.begin(), options.end());
+  for (const Given& option : given) {
+    // A course scene keeps the reference's method: what the command line refuses for one
+    // (self-collision, Chebyshev, ...) is left out and said, instead of costing the whole address.
+    if (is_course_scene_source(scene)) {
+      std::vector<const char*> argv = {"wobble"};
+      for (const std::string& word : option.words)
+        argv.push_back(word.c_str());
+      std::ostringstream ignored;
+      try {
+        SimulationParams course;
+        course.gravity_model = GravityModel::force_per_vertex;
+        apply_scene_overrides(
+            *parse_command_line(static_cast<int>(argv.size()), argv.data(), ignored), course);
+      } catch (const InputError& error) {
+        std::string why = error.what();
+        const std::string& word = option.words.front();
+        if (why.rfind(word + ": ", 0) == 0) why = why.substr(word.size() + 2);
+        refuse(option.key, why + "; left out");
+        continue;
+      }
+    }
+    request.arguments.insert(request.arguments.end(), option.words.begin(), option.words.end());
+  }
   // "--" first: a scene named like an option is still a scene.
   if (!scene.empty()) {
     request.arguments.push_back("--");
