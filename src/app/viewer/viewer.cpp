@@ -84,14 +84,21 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
 
 Viewer::~Viewer() = default;
 
-bool Viewer::open_file(const std::string& path) {
+bool Viewer::open_file(const std::string& path, const std::string& hidden_folder) {
   try {
     load(load_scene(path, false, missing_texture_));
     scene_source_ = path;
     return true;
   } catch (const std::exception& error) {
-    // In the notes, and on screen (a dropped file's reason would otherwise go unseen).
-    tell(error.what());
+    // In the notes, and on screen (a dropped file's reason would otherwise go unseen), without
+    // the folder the page put the dropped files in: the user dropped "banner.json", not
+    // "/opened/2/a/b/c/banner.json".
+    std::string why = error.what();
+    const std::string folder = hidden_folder + "/";
+    for (std::size_t at = hidden_folder.empty() ? std::string::npos : why.find(folder);
+         at != std::string::npos; at = why.find(folder, at))
+      why.erase(at, folder.size());
+    tell(why);
     return false;
   }
 }
@@ -103,7 +110,8 @@ bool Viewer::open_files(const std::vector<std::string>& paths) {
     const std::string name = std::filesystem::path(path).extension().string();
     if (name == ".json" || name == ".JSON") chosen = path;
   }
-  return open_file(chosen);
+  // The page's dropped files lie in a folder of its own making; a window's have real paths.
+  return open_file(chosen, panel_.page ? std::filesystem::path(chosen).parent_path().string() : "");
 }
 
 void Viewer::set_page_actions(PageActions actions) {

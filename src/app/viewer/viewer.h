@@ -92,8 +92,9 @@ class Viewer {
   void restore_defaults();
   // Open a scene or mesh file (dropped on the window, or typed into the panel's "open" field),
   // as load_scene reads it. A file that does not load leaves the current scene running, the
-  // reason shown in the panel's notes; returns whether it loaded.
-  bool open_file(const std::string& path);
+  // reason shown in the panel's notes, `hidden_folder` (and its '/') taken out of it: the page's
+  // own folder for dropped files. Returns whether it loaded.
+  bool open_file(const std::string& path, const std::string& hidden_folder = "");
   // Files dropped or picked together: the scene file among them (the last .json) opens, its mesh
   // and texture beside it; with no scene file, the last one. Returns whether it loaded.
   bool open_files(const std::vector<std::string>& paths);

@@ -538,6 +538,30 @@ TEST(Viewer, AFileDroppedOrTypedOpensAndABadOneLeavesTheSceneRunning) {
       << f.viewer.scene().notes.back();
 }
 
+// The page puts dropped files in a folder of its own; what went wrong names them as the user
+// knows them ("banner.json", "'banner.obj'"), not by that folder. A window's keep their paths.
+TEST(Viewer, ADroppedFilesReasonNamesItWithoutThePagesFolder) {
+  wobble::testing::TemporaryFolder folder;
+  const std::string dropped = folder.file("opened_2_a_b_c");
+  std::filesystem::create_directories(dropped);
+  // The course's banner without its mesh beside it.
+  std::filesystem::copy_file(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json",
+                             dropped + "/banner.json");
+  for (const bool page : {true, false}) {
+    ViewerFixture f;
+    if (page) f.viewer.set_page_actions(wobble::Viewer::PageActions{[] {}, [] {}});
+    EXPECT_FALSE(f.viewer.open_files({dropped + "/banner.json"}));
+    const std::string& told = f.viewer.scene().notes.back();
+    if (page) {
+      EXPECT_EQ(told.find(dropped), std::string::npos) << told;
+      EXPECT_EQ(told.rfind("banner.json", 0), 0u) << told;
+      EXPECT_NE(told.find("'banner.obj'"), std::string::npos) << told;
+    } else {
+      EXPECT_NE(told.find(dropped + "/banner.json"), std::string::npos) << told;
+    }
+  }
+}
+
 TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
   wobble::testing::TemporaryFolder folder;
   const std::filesystem::path before = std::filesystem::current_path();
