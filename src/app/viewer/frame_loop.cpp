@@ -67,9 +67,9 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   if (result.drawn) {
     host.bind_target();
     viewer.render(width, height, window, window.x() > 0.0f ? width / window.x() : 1.0f);
-    // A recording of the scene alone takes it before the panel goes over it.
-    if (imgui) viewer.scene_drawn([width, height] { return read_shown_frame(width, height); });
     if (imgui) {
+      // A recording of the scene alone takes it before the panel goes over it.
+      viewer.scene_drawn([width, height] { return read_shown_frame(width, height); });
       // The current ImGui context's renderer (ImGuiSession's), as ImGui's own backends keep it.
       if (auto* renderer = static_cast<PanelRenderer*>(ImGui::GetIO().BackendRendererUserData))
         renderer->draw(*ImGui::GetDrawData());

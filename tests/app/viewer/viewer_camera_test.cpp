@@ -5,6 +5,8 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <optional>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -78,6 +80,17 @@ struct CameraFixture {
   wobble::Viewer viewer;
 };
 
+// Where the panel ends and the convergence plot begins (window units), as ImGui placed them.
+struct Columns {
+  float panel_right, plots_left, plots_width;
+};
+std::optional<Columns> panel_and_plots() {
+  const ImGuiWindow* plots = ImGui::FindWindowByName("Convergence of the last step");
+  const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
+  if (plots == nullptr || panel == nullptr) return std::nullopt;
+  return Columns{panel->Pos.x + panel->Size.x, plots->Pos.x, plots->Size.x};
+}
+
 TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
   HeadlessImGui imgui;
   CameraFixture f;
@@ -115,11 +128,9 @@ TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
   f.press_key(GLFW_KEY_G);
   for (int i = 0; i < 3; ++i)
     frame();
-  const ImGuiWindow* plots = ImGui::FindWindowByName("Convergence of the last step");
-  const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
-  ASSERT_NE(plots, nullptr);
-  ASSERT_NE(panel, nullptr);
-  const float plots_left = plots->Pos.x, panel_right = panel->Pos.x + panel->Size.x;
+  const std::optional<Columns> columns = panel_and_plots();
+  ASSERT_TRUE(columns);
+  const float plots_left = columns->plots_left, panel_right = columns->panel_right;
   ASSERT_GT(plots_left - panel_right, 0.25f * window.x());
   const auto in_between = [&] {
     for (const int pin : f.viewer.scene().pins) {
@@ -159,13 +170,11 @@ TEST(ViewerCamera, AtAProjectorsScaleGThenFShowsTheShapeBetweenPanelAndPlots) {
     f.press_key(GLFW_KEY_F);
     for (int i = 0; i < 2; ++i)
       frame();
-    const ImGuiWindow* plots = ImGui::FindWindowByName("Convergence of the last step");
-    const ImGuiWindow* panel = ImGui::FindWindowByName("Wobble");
-    ASSERT_NE(plots, nullptr);
-    ASSERT_NE(panel, nullptr);
-    const float plots_left = plots->Pos.x, panel_right = panel->Pos.x + panel->Size.x;
+    const std::optional<Columns> columns = panel_and_plots();
+    ASSERT_TRUE(columns) << name;
+    const float plots_left = columns->plots_left, panel_right = columns->panel_right;
     EXPECT_GE(plots_left - panel_right, 0.25f * window.x()) << name;
-    EXPECT_GT(plots->Size.x, 0.25f * window.x()) << name << ": the plots still readable";
+    EXPECT_GT(columns->plots_width, 0.25f * window.x()) << name << ": the plots still readable";
     const int n = static_cast<int>(f.viewer.simulation().positions().rows());
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector2f at = f.on_screen(i);
