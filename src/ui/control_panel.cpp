@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "panel_stats.h"
@@ -73,8 +74,16 @@ PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, 
                           2.0f * style.ItemSpacing.y - stats_height - 1.0f;
   ImGuiStorage* storage = ImGui::GetStateStorage();
   const ImGuiID list_height_id = ImGui::GetID("##sections height");
-  const float list_height =
-      std::max(std::min(storage->GetFloat(list_height_id, list_room), list_room), 40.0f * ui_scale);
+  const float contents_height = storage->GetFloat(list_height_id, list_room);
+  float list_height = std::min(contents_height, list_room);
+  if (contents_height > list_room) {
+    // Too tall for the panel: the list ends under a whole row, never through one. Its rows (the
+    // headers, sliders, buttons and boxes) all take a frame's height and the spacing under it.
+    const float pitch = ImGui::GetFrameHeightWithSpacing();
+    list_height =
+        std::floor((list_room + style.ItemSpacing.y) / pitch) * pitch - style.ItemSpacing.y;
+  }
+  list_height = std::max(list_height, 40.0f * ui_scale);
   ImGui::BeginChild("sections", ImVec2(0.0f, list_height));
   // Widgets take what the labels leave.
   ImGui::PushItemWidth(-120.0f * ui_scale);

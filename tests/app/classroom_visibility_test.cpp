@@ -176,3 +176,50 @@ TEST(ClassroomVisibility, TheShippedPileFoldsWithinHalfASecondOfLanding) {
   // 0.55 s: landed after about 0.02 s, then half a second.
   EXPECT_LT(highest_after(folder, pile, 33), 0.25) << "still standing";
 }
+
+namespace {
+
+// The heights (px) of the runs of the panel's frames (the blue of headers, sliders, buttons and
+// boxes) met going down the column x of `image` from y = top, in order.
+std::vector<int> frame_runs(const wobble::RgbaImage& image, int x, int top) {
+  std::vector<int> runs;
+  int run = 0;
+  for (int y = top; y < image.height; ++y) {
+    const unsigned char* p = image.pixel(x, y);
+    const bool frame = p[2] > p[0] + 20;  // the panel's background and text are grey or white
+    if (frame) {
+      ++run;
+    } else if (run > 0) {
+      runs.push_back(run);
+      run = 0;
+    }
+  }
+  if (run > 0) runs.push_back(run);
+  return runs;
+}
+
+}  // namespace
+
+// Where the panel is taller than the window, its sections scroll in a list that ends under a
+// whole row: no header or slider shows cut in half at the list's foot (at 720 px the row after
+// "instruments" did, until scrolled). Read from the panel as drawn, at two heights.
+TEST(ClassroomVisibility, ThePanelsListEndsUnderAWholeRow) {
+  for (const int height : {720, 610}) {
+    TemporaryFolder folder;
+    const std::string image_path = folder.file("panel.png");
+    const auto run = run_wobble("--headless --ui --frames 3 --width 1280 --height " +
+                                    std::to_string(height) + " --screenshot '" + image_path + "'",
+                                "DISPLAY= WAYLAND_DISPLAY=");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const wobble::RgbaImage image = wobble::read_png(image_path);
+    // The panel at (10, 10), its title bar 19 px tall; its rows' frames start 8 px in, their text 4
+    // px further
+    const std::vector<int> runs = frame_runs(image, 10 + 8 + 2, 10 + 19 + 2);
+    ASSERT_GE(runs.size(), 10u) << "the panel's rows at " << height << " px";
+    const int whole = *std::max_element(runs.begin(), runs.end());
+    for (size_t i = 0; i < runs.size(); ++i) {
+      EXPECT_GE(runs[i], whole - 1) << "row " << i << " of " << runs.size() << " is " << runs[i]
+                                    << " px of " << whole << " at " << height << " px";
+    }
+  }
+}
