@@ -37,9 +37,9 @@ class WindowHost : public FrameHost {
 
   std::vector<InputEvent> poll(const Viewer& viewer, const FrameMeters& meters) override {
     // With nothing new to draw (paused and untouched, or a batch of steps still running) the
-    // window waits for input or a finished batch instead of redrawing the same picture (88% of
-    // a core under Xvfb before). ImGui settles a click or a hover over a few frames, so it only
-    // waits after a few frames without input, and then at most half a second, which also keeps
+    // window waits for input or a finished batch instead of redrawing the same picture, which
+    // would keep a core busy for nothing. ImGui settles a click or a hover over a few frames, so it
+    // only waits after a few frames without input, and then at most half a second, which also keeps
     // a resize or an uncovered window redrawn. Otherwise the UI draws at most frame_seconds
     // apart where the display does not pace the swaps (Xvfb, a compositor without vsync): more
     // would only take cores from the steps.

@@ -90,11 +90,9 @@ void SelfContactProximity::find(const SelfCollisionSurface& surface, const RestN
   scratch_.resize(triangle_count);
   for (int t = 0; t < triangle_count; ++t)
     scratch_[t] = filed_triangle(t).sizes().maxCoeff();
-  // Cells twice the size of most boxes: a query box, grown by the floor, spans about three
-  // boxes, and with cells the size of a box it looked at about 125 cells on the first level, most
-  // of them empty (a sheet fills few cells of a 3D grid), and spent its time waiting on their
-  // slots; twice as large, it looks at a fifth as many, each holding about four times as many
-  // boxes (the piles' searches 15-39% faster; three times as large was slower at 40×40).
+  // Cells about the size of the upper quartile of the boxes: a query box, grown by the floor,
+  // spans a few boxes, and smaller cells leave a query looking at many empty cells (a sheet fills
+  // few cells of a 3D grid): docs/performance.md, "Contact's weight and the self-contact grid".
   double cell = std::max(surface.mean_edge, contact_distance_);
   const double typical = upper_quartile(scratch_);
   if (std::isfinite(typical) && typical > 0.0) cell = typical;

@@ -45,24 +45,8 @@ namespace wobble {
 // nearly overlap: the triangles' and edges' boxes and reaches are kept in single precision,
 // rounded outwards, so a few more pairs are found, never fewer). Every found pair counts, the
 // rest neighbours and pairs beyond max_pairs_per_feature included.
-// Why no crossing follows when every vertex moves (relative to a common motion) by at most its
-// bound along a straight line: the points of a feature are convex mixes of its vertices, so
-// they move no farther than its farthest vertex; a found pair at distance d has each side move
-// less than d/2, and a pair not found is farther apart than R_a + R_b while each side moves at
-// most γR. A common motion of everything changes no distance.
-//
-// Search: a pair can lower a bound only when it is closer than the largest "need" of its
-// vertices, an upper bound on their nearest found distance: first the seeds, min(2R_v, the
-// distance to the far edge of one of v's triangles where a triangle lies across that edge and
-// the two are found), which follow the mesh's spacing rather than the reach; for the edges, the
-// nearest left by the vertex-triangle pass, which in a pile is the next layer's distance. And a
-// pair is listed only closer than contact_distance. So a query box and a box in a spatial grid
-// need together grow by that much: the query side grows by its need or a common floor (most
-// needs, and the contact distance), the grid side only by its need's excess over the floor, and
-// most boxes in the grids stay bare. Each vertex looks up the triangles; then the edges whose
-// lower vertex it is look up, together, the higher-numbered edges. A candidate gets an exact
-// distance only when its box gap leaves it able to lower a bound or be a pair. The grids hold
-// each feature's box once, in single precision (SpatialGrid); nothing else holds it.
+// Why these bounds rule out a crossing, and how the search finds the pairs that can lower a
+// bound without looking at every box in reach: docs/method.md, "Self-contact".
 //
 // Bounded by design: the grids and buffers are O(features) and kept between calls; a query
 // looks at no more than max_met boxes. A query that meets more (coincident layers, a cloth

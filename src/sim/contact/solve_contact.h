@@ -33,9 +33,10 @@ namespace wobble {
 class SolveContact {
  public:
   // κ as a multiple of the vertex's own Q diagonal. The term slows a member's motion along the
-  // surface too (the iteration's target for it is where it was): at 1, 0.3 and 0.1 a frictionless
-  // tablecloth no longer slides off its table in 5 s (mean x 0.31, 0.33, 0.44 m against 0.7);
-  // at 0.05 it does, while the jelly_drop still lands within 0.05% of its shape (0.01: 0.1%).
+  // surface too (the iteration's target for it is where it was), so κ is kept small: large
+  // enough to hold the jelly_drop's shape as it lands, small enough that a frictionless
+  // tablecloth still slides off its table (docs/performance.md, "Contact's weight and the
+  // self-contact grid").
   static constexpr double weight_scale = 0.05;
   // How long H is kept while S changes (steps). With
   // Chebyshev acceleration H follows S every step: the acceleration's extrapolation needs Q to

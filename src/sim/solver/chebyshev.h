@@ -17,25 +17,15 @@ namespace wobble {
 // The paper takes σ = ρ and s = 1: Chebyshev polynomials on [−ρ, ρ], for an iteration whose
 // error may flip sign. This one's does not: its updates shrink steadily, their ratio settling at
 // ρ, so its spectrum lies in [0, ρ]. The polynomials on [0, ρ] give σ = ρ/(2 − ρ) and a stretch
-// s = 2/(2 − ρ) of every step, and shrink the error faster: measured over a 120-frame fall, 10
-// accelerated iterations left 0.43–0.47 of the error of 10 plain ones on the curtain where the
-// paper's recurrence left 0.60, and on the jelly 3 left 0.95 of it where the paper's left 1.5.
+// s = 2/(2 − ρ) of every step, and shrink the error faster.
 //
-// Those polynomials are small on [0, ρ] but do little at its ends for few iterations: one
-// accelerated iteration flips the sign of the error's fast components (λ near 0) and keeps
-// 96% of them. Step after step that threw a cloth away during a drag with 1 to 3 iterations.
-// So Simulation::step() makes the last iteration of every step a plain one, which removes fast
-// components (it multiplies each by its λ): stable in every scene with 1 to 20 iterations and a
-// drag. On the benchmark's curtain 10 iterations then leave 0.39 of plain ones' error, where the
-// paper's recurrence left 0.49.
-//
-// With that last plain iteration, no delayed start measured best: S = 0 (the recurrence from
-// the first iteration) reaches the error of 10 plain iterations after 3 on the benchmark's
-// curtain and 128×128 cloth at every 10th step of a 120-frame fall, where S = 1 (the textbook
-// start) needs 3 or 4 and S = 2 needs 4; on the jelly S = 0 and 1 need 3 or 4 and leave 0.04
-// of plain iterations' error at 10. γ = 0.9 needed 4 on the curtain, γ = 1.1 3 or 4. Both stay
-// settable, and 1 to 20 iterations stay stable through a drag and with dt = 0.05 and
-// k = 20000 in every scene.
+// Those polynomials do little at the ends of [0, ρ] for few iterations: one accelerated
+// iteration flips the sign of the error's fast components (λ near 0) and keeps most of them, and
+// a drag with 1 to 3 iterations threw the cloth away. So the local-global solver
+// (local_global_solver.cpp) makes the last iteration of every step a plain one, which multiplies
+// each fast component by its λ. The defaults are S = 0 (the recurrence from the first
+// iteration) and γ = 1; docs/performance.md ("Chebyshev against plain iterations") gives the
+// measurements behind [0, ρ], the last plain iteration, S and γ.
 class ChebyshevAcceleration {
  public:
   static constexpr double default_under_relaxation = 1.0;

@@ -87,9 +87,8 @@ void CholeskySolver::copy_for_solve(Value* columns, Value* blocks) const {
 
 void CholeskySolver::solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
   const Eigen::Index n = static_cast<Eigen::Index>(permutation_.size());
-  // On a 64-byte boundary, so that no lane straddles two cache lines. Left to where the
-  // allocator put work_, the global step of the 128×128 cloth took 4% longer after work_'s
-  // allocation merely moved (80 to 84 ms a step).
+  // On a 64-byte boundary, so that no lane straddles two cache lines and the step's time does
+  // not depend on where the allocator put work_.
   const std::uintptr_t address = reinterpret_cast<std::uintptr_t>(work_.data());
   Lane4* w = reinterpret_cast<Lane4*>(work_.data() + ((64 - address % 64) % 64) / sizeof(double));
   for (Eigen::Index i = 0; i < n; ++i)

@@ -8,8 +8,9 @@
 
 namespace wobble {
 
-// The step's terms in step order (pins, forces, collider contact, self-contact, then any term
-// registered from outside), and each hook called over all of them. The Simulation owns the
+// The step's terms in step order, and each hook called over all of them. The order is
+// term_registry.h's: the pins, the made terms (the built-in ones, then any registered from
+// outside), collider contact, self-contact. The Simulation owns the
 // terms; the list only points at them. What a solver asks of the step goes through here, so a
 // solver cannot leave a term out.
 class StepTerms {
