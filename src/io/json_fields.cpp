@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "sim/input_error.h"
+#include "text_pieces.h"
 
 namespace wobble {
 
@@ -25,13 +26,6 @@ void append_preview(const nlohmann::json& value, std::size_t max_chars, std::str
   } else {
     text += value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   }
-}
-
-std::string joined(const std::vector<std::string>& keys) {
-  std::string list;
-  for (const std::string& key : keys)
-    list += (list.empty() ? "" : ", ") + key;
-  return list;
 }
 
 }  // namespace
@@ -86,7 +80,8 @@ void JsonFields::fail(const std::string& key, const std::string& expected) const
 void JsonFields::allow_only(const std::vector<std::string>& keys, const std::string& what) const {
   for (const auto& item : object_.items()) {
     if (std::find(keys.begin(), keys.end(), item.key()) == keys.end()) {
-      throw InputError(where(item.key()) + ": unknown key, " + what + " takes " + joined(keys));
+      throw InputError(where(item.key()) + ": unknown key, " + what + " takes " +
+                       comma_joined(keys));
     }
   }
 }

@@ -5,6 +5,7 @@
 
 #include "sim/input_error.h"
 #include "sim/value_limits.h"
+#include "text_pieces.h"
 
 namespace wobble {
 
@@ -30,19 +31,12 @@ const std::array<ColliderKeys, 5>& collider_keys() {
 
 const char* const type_names = "\"ground\", \"plane\", \"sphere\", \"box\" or \"capsule\"";
 
-std::string joined(const std::vector<std::string>& keys) {
-  std::string list;
-  for (const std::string& key : keys)
-    list += (list.empty() ? "" : ", ") + key;
-  return list;
-}
-
 // "center, radius, friction": what a collider of this type takes besides its type.
 std::string key_list(const ColliderKeys& keys) {
   std::vector<std::string> all = keys.required;
   all.insert(all.end(), keys.optional.begin(), keys.optional.end());
   all.push_back("friction");
-  return joined(all);
+  return comma_joined(all);
 }
 
 bool belongs_to_some_type(const std::string& key) {
@@ -69,7 +63,7 @@ void check_keys(const nlohmann::json& object, const JsonFields& fields, const Co
   for (const std::string& key : keys.required) {
     if (!object.contains(key)) {
       throw InputError(fields.where(key) + ": missing, a " + keys.name + " collider needs " +
-                       joined(keys.required));
+                       comma_joined(keys.required));
     }
   }
 }

@@ -3,16 +3,11 @@
 #include <charconv>
 
 #include "atomic_file.h"
+#include "text_pieces.h"
 
 namespace wobble {
 
 namespace {
-
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  out.append(buffer, result.ptr);
-}
 
 void append_indices(std::string& out, const char* tag, const Eigen::MatrixXi& rows) {
   for (Eigen::Index row = 0; row < rows.rows(); ++row) {
@@ -34,7 +29,7 @@ std::string obj_text(const Eigen::MatrixXd& V, const Eigen::MatrixXi& F, const E
     out += 'v';
     for (Eigen::Index c = 0; c < V.cols(); ++c) {
       out += ' ';
-      append_number(out, V(i, c));
+      append_shortest(out, V(i, c));
     }
     out += '\n';
   }

@@ -11,19 +11,13 @@
 #include "sim/settings/setting_registry.h"
 #include "sim/solver/solver_registry.h"
 #include "sim/value_limits.h"
+#include "text_pieces.h"
 
 namespace wobble {
 
 namespace {
 
 using nlohmann::json;
-
-// The shortest decimal that reads back (strtod, as read_obj reads) to the same double.
-void append_number(std::string& text, double value) {
-  char buffer[32];
-  const std::to_chars_result result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  text.append(buffer, result.ptr);
-}
 
 json vector_json(const Eigen::Vector3d& v) {
   return json::array({v.x(), v.y(), v.z()});
@@ -190,16 +184,16 @@ std::string wobble_scene_obj_text(const Scene& scene) {
     text += "v";
     for (int c = 0; c < 3; ++c) {
       text += ' ';
-      append_number(text, network.V(i, c));
+      append_shortest(text, network.V(i, c));
     }
     text += '\n';
   }
   if (uv) {
     for (Eigen::Index i = 0; i < network.V.rows(); ++i) {
       text += "vt ";
-      append_number(text, scene.look.uv(i, 0));
+      append_shortest(text, scene.look.uv(i, 0));
       text += ' ';
-      append_number(text, scene.look.uv(i, 1));
+      append_shortest(text, scene.look.uv(i, 1));
       text += '\n';
     }
   }

@@ -6,7 +6,8 @@ namespace wobble {
 
 namespace {
 
-constexpr GLuint from_location = 0, to_location = 1, color_location = 2;
+constexpr GLuint spring_from_location = 0, spring_to_location = 1,
+                 spring_color_location = 2;
 // Each spring's four corners carry the same row: its two ends and its colour.
 constexpr int floats_per_corner = 9, floats_per_spring = 4 * floats_per_corner;
 
@@ -19,7 +20,7 @@ ThickSprings::ThickSprings() {
   glBindVertexArray(array_);
   glBindBuffer(GL_ARRAY_BUFFER, buffer_);
   const GLsizei stride = floats_per_corner * sizeof(float);
-  const GLuint locations[3] = {from_location, to_location, color_location};
+  const GLuint locations[3] = {spring_from_location, spring_to_location, spring_color_location};
   for (int k = 0; k < 3; ++k) {
     glEnableVertexAttribArray(locations[k]);
     glVertexAttribPointer(locations[k], 3, GL_FLOAT, GL_FALSE, stride,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../shared_constants.h"
 #include "cloth_pixels.h"
 #include "io/png_image.h"
 #include "run_wobble.h"
@@ -17,7 +18,7 @@ namespace {
 using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
-const std::string assets = WOBBLE_ASSETS_DIR;
+using wobble::testing::assets;
 
 wobble::RgbaImage render(const TemporaryFolder& folder, const std::string& scene, int frames) {
   const std::string image = folder.file("shown.png");

@@ -13,7 +13,7 @@ namespace {
 using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
-constexpr int width = 640, height = 400;
+constexpr int image_width = 640, image_height = 400;
 
 wobble::RgbaImage render(const TemporaryFolder& folder, const std::string& name,
                          const std::string& options) {
@@ -50,16 +50,18 @@ TEST(ColorByRender, StrainReplacesTheMaterialAndTheLegendSitsAtTheBottomRight) {
   TemporaryFolder folder;
   const wobble::RgbaImage material = render(folder, "material.png", "");
   const wobble::RgbaImage strain = render(folder, "strain.png", "--color-by strain");
-  ASSERT_EQ(strain.width, width);
+  ASSERT_EQ(strain.width, image_width);
   // The orange front is gone: the cloth is near-white, pink and red.
   const long orange = count_pixels(material, wobble::testing::is_cloth_front);
   EXPECT_GT(orange, 5000);
   EXPECT_LT(count_pixels(strain, wobble::testing::is_cloth_front), orange / 10);
   // The legend changes the bottom-right corner, and nothing changes where there is neither cloth
   // nor legend: the top of the picture and its bottom left.
-  EXPECT_GT(differences(material, strain, width - 200, height - 60, width, height), 8000);
-  EXPECT_EQ(differences(material, strain, 0, 0, width, 60), 0);
-  EXPECT_EQ(differences(material, strain, 0, height - 100, width / 2, height), 0);
+  EXPECT_GT(differences(material, strain, image_width - 200, image_height - 60, image_width,
+                        image_height),
+            8000);
+  EXPECT_EQ(differences(material, strain, 0, 0, image_width, 60), 0);
+  EXPECT_EQ(differences(material, strain, 0, image_height - 100, image_width / 2, image_height), 0);
 }
 
 TEST(ColorByRender, SpeedAndStrainDifferAndThePanelKeepsTheLegend) {
@@ -68,14 +70,17 @@ TEST(ColorByRender, SpeedAndStrainDifferAndThePanelKeepsTheLegend) {
   const wobble::RgbaImage strain = render(folder, "strain.png", "--color-by strain");
   const wobble::RgbaImage speed = render(folder, "speed.png", "--color-by speed");
   const wobble::RgbaImage speed_ui = render(folder, "speed_ui.png", "--color-by speed --ui");
-  EXPECT_GT(differences(strain, speed, 0, 0, width, height), 5000);
+  EXPECT_GT(differences(strain, speed, 0, 0, image_width, image_height), 5000);
   // The panel is at the top left; the legend at the bottom right stays with it. The cloth is
   // framed beside the panel then, so the ground grid seen through the legend's translucent
   // background moves: the corner is close to the one without the panel, not equal, and far
   // from one without a legend.
-  const long legend = differences(material, speed, width - 200, height - 60, width, height);
+  const long legend =
+      differences(material, speed, image_width - 200, image_height - 60, image_width, image_height);
   EXPECT_GT(legend, 8000);
-  EXPECT_LT(differences(speed, speed_ui, width - 200, height - 60, width, height), legend / 2);
+  EXPECT_LT(
+      differences(speed, speed_ui, image_width - 200, image_height - 60, image_width, image_height),
+      legend / 2);
   EXPECT_GT(differences(speed, speed_ui, 0, 0, 300, 200), 20000);
 }
 
@@ -96,7 +101,7 @@ TEST(ColorByRender, ContactsPaintTheClothWhereItLiesOnTheBall) {
     EXPECT_EQ(run.exit_code, 0) << run.err;
     wobble::RgbaImage image = wobble::read_png(folder.file(name));
     // The legend's blue block is not the cloth: only the picture above it counts.
-    image.height = height - 100;
+    image.height = image_height - 100;
     return image;
   };
   const wobble::RgbaImage material = drape("material.png", "");

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "../shared_constants.h"
 #include "app/cli/scene_catalog.h"
 #include "io/load_scene.h"
 #include "io/png_image.h"
@@ -15,7 +16,7 @@ namespace {
 using wobble::testing::run_wobble;
 using wobble::testing::TemporaryFolder;
 
-const std::string assets = WOBBLE_ASSETS_DIR;
+using wobble::testing::assets;
 
 TEST(SceneFiles, EveryShippedSceneAndMeshOpensHeadless) {
   std::vector<std::string> sources;

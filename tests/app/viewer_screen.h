@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 
+#include "../shared_constants.h"
 #include "app/interaction/picking.h"
 #include "app/viewer/viewer.h"
 #include "render/camera.h"
@@ -17,6 +18,14 @@ inline Eigen::Vector2f vertex_on_screen(const Viewer& viewer, int i,
       projection_matrix(viewer.camera(), window.x() / window.y()) * view_matrix(viewer.camera());
   const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
   return project_to_window(view_projection, p, window)->head<2>();
+}
+
+// Key `key` pressed over the 3-D view of a 1280 × 720 window (testing::window).
+inline void press(Viewer& viewer, int key) {
+  InputEvent event;
+  event.type = InputEvent::Type::key_press;
+  event.code = key;
+  viewer.handle_events({event}, false, false, window);
 }
 
 }  // namespace wobble::testing

@@ -10,6 +10,7 @@
 #include <memory>
 #include <thread>
 
+#include "../shared_constants.h"
 #include "app/viewer/viewer.h"
 #include "viewer_screen.h"
 
@@ -17,7 +18,7 @@ namespace {
 
 using wobble::InputEvent;
 
-const Eigen::Vector2f window(1280.0f, 720.0f);
+using wobble::testing::window;
 constexpr double frame_seconds = 1.0 / 60.0;
 
 wobble::ViewerSettings with_a_scripted_drag() {

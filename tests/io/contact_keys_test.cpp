@@ -29,7 +29,7 @@ wobble::Scene load(const std::string& json) {
   return load(folder, json);
 }
 
-std::string error_of(const std::string& json) {
+std::string contact_keys_error(const std::string& json) {
   try {
     load(json);
   } catch (const wobble::InputError& error) {
@@ -112,8 +112,8 @@ TEST(ContactKeys, WindObjectTurnsTheAerodynamicWindOn) {
   EXPECT_TRUE(off.notes.empty());
   // An unknown key in the wind object stops loading, as everywhere else.
   const std::string message =
-      error_of(std::string("{") + cloth +
-               R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "colour": 1}}})");
+      contact_keys_error(std::string("{") + cloth +
+                         R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "colour": 1}}})");
   EXPECT_NE(message.find("scene.json: simulation.wind.colour: unknown key, simulation.wind takes "
                          "velocity, drag, lift, gusts, air_density, on, model"),
             std::string::npos)
@@ -203,7 +203,7 @@ TEST(ContactKeys, BadValuesNameTheFileTheKeyAndWhatWasExpected) {
       {R"("simulation": {"wind": {"velocity": [4, 0, 1e9]}})", "simulation.wind.velocity"},
   };
   for (const auto& [keys, expected] : cases) {
-    const std::string message = error_of(top + keys + "}");
+    const std::string message = contact_keys_error(top + keys + "}");
     EXPECT_NE(message.find(expected), std::string::npos) << keys << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }

@@ -8,13 +8,14 @@
 #include <memory>
 #include <string>
 
+#include "../shared_constants.h"
 #include "io/load_scene.h"
 #include "sim/contact/collider.h"
 #include "sim/simulation.h"
 
 namespace {
 
-const std::string assets = WOBBLE_ASSETS_DIR;
+using wobble::testing::assets;
 
 struct Run {
   double worst_relative = 0.0;      // deepest vertex inside a bounded collider / its scale

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "../shared_constants.h"
 #include "io/load_scene.h"
 #include "sim/contact/collider.h"
 #include "sim/instruments/rigid_fit.h"
@@ -15,7 +16,7 @@
 
 namespace {
 
-const std::string assets = WOBBLE_ASSETS_DIR;
+using wobble::testing::assets;
 
 struct Landing {
   double shape_error = 0.0;  // RMS from the best rigid placement / diagonal

@@ -10,13 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "../shared_constants.h"
 #include "io/load_scene.h"
 #include "shipped_scenes.h"
 #include "sim/simulation.h"
 
 namespace {
 
-const std::string assets = WOBBLE_ASSETS_DIR;
+using wobble::testing::assets;
 
 TEST(EnergyDescent, EveryShippedSceneEveryIteration) {
   const std::vector<std::string> scenes = wobble::testing::shipped_scenes(assets);

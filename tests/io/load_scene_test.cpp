@@ -13,7 +13,7 @@ namespace {
 
 using wobble::testing::TemporaryFolder;
 
-std::string error_of(const std::string& source, bool fill = false) {
+std::string load_error(const std::string& source, bool fill = false) {
   try {
     wobble::load_scene(source, fill);
   } catch (const wobble::InputError& error) {
@@ -33,8 +33,8 @@ void write_cube(const std::string& path) {
 TEST(LoadScene, BuiltInNamesGiveTheBuiltInScenes) {
   const wobble::Scene cloth = wobble::load_scene("cloth");
   EXPECT_EQ(cloth.network.V, wobble::make_builtin_scene("cloth").network.V);
-  EXPECT_NE(error_of("clothes").find("no such scene file or built-in scene (built-in: cloth, "
-                                     "jelly)"),
+  EXPECT_NE(load_error("clothes").find("no such scene file or built-in scene (built-in: cloth, "
+                                       "jelly)"),
             std::string::npos);
 }
 
@@ -62,8 +62,8 @@ TEST(LoadScene, ClosedObjFilledIsAJellyOnItsBase) {
   EXPECT_FALSE(scene.pins.empty());
   for (int i : scene.pins)
     EXPECT_NEAR(scene.network.V(i, 1), 0.0, 1e-9);
-  EXPECT_NE(error_of(folder.file("cube.obj") + ".none"), "(no error)");
-  EXPECT_NE(error_of("cloth", true).find("--fill"), std::string::npos);
+  EXPECT_NE(load_error(folder.file("cube.obj") + ".none"), "(no error)");
+  EXPECT_NE(load_error("cloth", true).find("--fill"), std::string::npos);
 }
 
 TEST(LoadScene, ExportedObjLoadsAgain) {
@@ -79,7 +79,7 @@ TEST(LoadScene, ExportedObjLoadsAgain) {
 TEST(LoadScene, UnknownFilesAreRefusedByName) {
   TemporaryFolder folder;
   std::ofstream(folder.file("notes.txt")) << "hello";
-  const std::string message = error_of(folder.file("notes.txt"));
+  const std::string message = load_error(folder.file("notes.txt"));
   EXPECT_NE(message.find("notes.txt: unknown kind of file"), std::string::npos) << message;
 }
 
@@ -89,8 +89,8 @@ TEST(LoadScene, ObjWhoseFacesHaveNoAreaIsRefusedByName) {
   TemporaryFolder folder;
   const std::string path = folder.file("line.obj");
   std::ofstream(path) << "f 1 2 3\nv 0 0 8\nv 0 0 5\nv 0 0 5\n";
-  EXPECT_EQ(error_of(path), path + ": every face has zero area, so no vertex gets a mass from " +
-                                "its area; expected faces whose corners are not all on one line");
+  EXPECT_EQ(load_error(path), path + ": every face has zero area, so no vertex gets a mass from " +
+                                  "its area; expected faces whose corners are not all on one line");
 }
 
 // Zero-area faces are wrong only where the masses come from areas: a scene that gives every
@@ -114,7 +114,7 @@ TEST(LoadScene, ZeroAreaFacesNeedMassesGivenVertexByVertex) {
   for (const std::string material :
        {"", R"(, "material": {"density": 2})", R"(, "material": {"mass": 1, "k": 10})"}) {
     std::ofstream(scene, std::ios::trunc) << R"({"mesh": {"file": "line.obj"})" + material + "}";
-    EXPECT_EQ(error_of(scene), refusal) << material;
+    EXPECT_EQ(load_error(scene), refusal) << material;
   }
 }
 

@@ -13,7 +13,7 @@ namespace {
 using wobble::testing::TemporaryFolder;
 
 // The InputError message that reading `text` as FOLDER/scene.json gives.
-std::string error_of(const TemporaryFolder& folder, const std::string& text) {
+std::string read_error(const TemporaryFolder& folder, const std::string& text) {
   std::ofstream(folder.file("scene.json")) << text;
   try {
     wobble::read_json_file(folder.file("scene.json"));
@@ -34,7 +34,7 @@ TEST(ReadJsonFile, ParsesAnObject) {
 
 TEST(ReadJsonFile, SyntaxErrorNamesItsLine) {
   TemporaryFolder folder;
-  EXPECT_EQ(error_of(folder, "{\n  \"k\": 1,\n  oops\n}"),
+  EXPECT_EQ(read_error(folder, "{\n  \"k\": 1,\n  oops\n}"),
             folder.file("scene.json") +
                 ": line 3: malformed JSON: syntax error while parsing object key - invalid "
                 "literal; last read: '1,<U+000A>  o'; expected string literal");
@@ -45,10 +45,10 @@ TEST(ReadJsonFile, SyntaxErrorNamesItsLine) {
 TEST(ReadJsonFile, NumberTooLargeForADoubleNamesItsLine) {
   TemporaryFolder folder;
   EXPECT_EQ(
-      error_of(folder, "{\n  \"k\": 1e400\n}"),
+      read_error(folder, "{\n  \"k\": 1e400\n}"),
       folder.file("scene.json") + ": line 2: malformed JSON: number overflow parsing '1e400'");
   EXPECT_EQ(
-      error_of(folder, "-1e3086locale5bje~000"),
+      read_error(folder, "-1e3086locale5bje~000"),
       folder.file("scene.json") + ": line 1: malformed JSON: number overflow parsing '-1e3086'");
 }
 
@@ -88,7 +88,7 @@ TEST(ReadJsonFile, KeyThatAppearsTwiceIsRefused) {
       {"{\"a\\nb\": 1, \"a\\nb\": 2}", "line 1: key \"a\\nb\" appears twice in the same object"},
   };
   for (const auto& [text, expected] : cases) {
-    EXPECT_EQ(error_of(folder, text), at + expected) << text;
+    EXPECT_EQ(read_error(folder, text), at + expected) << text;
   }
   // The same key in two different objects, or as a value, is fine.
   std::ofstream(folder.file("scene.json"), std::ios::trunc)
@@ -111,38 +111,38 @@ TEST(ReadJsonFile, LimitsAreCheckedWhileParsing) {
   std::ofstream(folder.file("scene.json")) << "{\"a\": " + list(items, "0") + "}";
   EXPECT_EQ(wobble::read_json_file(folder.file("scene.json")).at("a").size(),
             static_cast<std::size_t>(items));
-  EXPECT_EQ(error_of(folder, "{\"a\": " + list(items / 2, "1") +
-                                 ",\n\"b\": " + list(items / 2 + 1, "2") + "}"),
+  EXPECT_EQ(read_error(folder, "{\"a\": " + list(items / 2, "1") +
+                                   ",\n\"b\": " + list(items / 2 + 1, "2") + "}"),
             at + "line 2: more than 1,000,000 items in all lists, above Wobble's limit for a "
                  "scene (JSON)");
   // Empty lists inside a list count as its items.
-  EXPECT_NE(error_of(folder, list(items + 1, "[]")).find("more than 1,000,000 items"),
+  EXPECT_NE(read_error(folder, list(items + 1, "[]")).find("more than 1,000,000 items"),
             std::string::npos);
 
   std::string keys = "{";
   for (long i = 0; i <= wobble::max_json_keys; ++i)
     keys += (i ? ",\n\"k" : "\"k") + std::to_string(i) + "\": 0";
-  EXPECT_EQ(error_of(folder, keys + "}"),
+  EXPECT_EQ(read_error(folder, keys + "}"),
             at + "line 10001: more than 10,000 keys in all objects, above Wobble's limit for a "
                  "scene (JSON)");
 
   const std::string deep_ok =
       std::string(wobble::max_json_depth, '[') + std::string(wobble::max_json_depth, ']');
-  EXPECT_EQ(error_of(folder, deep_ok), "(no error)");
-  EXPECT_EQ(error_of(folder, "[" + deep_ok + "]"),
+  EXPECT_EQ(read_error(folder, deep_ok), "(no error)");
+  EXPECT_EQ(read_error(folder, "[" + deep_ok + "]"),
             at + "line 1: lists and objects nested more than 64 deep, above Wobble's limit for a "
                  "scene (JSON)");
 
   const std::string longest(wobble::max_json_string_bytes, 'x');
-  EXPECT_EQ(error_of(folder, "{\"name\": \"" + longest + "\"}"), "(no error)");
-  EXPECT_EQ(error_of(folder, "{\"name\":\n\"" + longest + "x\"}"),
+  EXPECT_EQ(read_error(folder, "{\"name\": \"" + longest + "\"}"), "(no error)");
+  EXPECT_EQ(read_error(folder, "{\"name\":\n\"" + longest + "x\"}"),
             at + "line 2: a string longer than 65,536 bytes, above Wobble's limit for a key or "
                  "string in a scene (JSON)");
   // Escapes count as written: a string of quotes and backslashes is still a string.
-  EXPECT_EQ(error_of(folder, "{\"name\": \"\\\"\\\\\", \"k\": \"" + longest + "y\"}"),
+  EXPECT_EQ(read_error(folder, "{\"name\": \"\\\"\\\\\", \"k\": \"" + longest + "y\"}"),
             at + "line 1: a string longer than 65,536 bytes, above Wobble's limit for a key or "
                  "string in a scene (JSON)");
-  EXPECT_NE(error_of(folder, "{\"" + longest + "z\": 1}").find("a string longer than"),
+  EXPECT_NE(read_error(folder, "{\"" + longest + "z\": 1}").find("a string longer than"),
             std::string::npos);
 }
 
@@ -150,9 +150,9 @@ TEST(ReadJsonFile, ByteOrderMarkIsSkippedAndLinesCountFromTheText) {
   TemporaryFolder folder;
   std::ofstream(folder.file("scene.json")) << "\xEF\xBB\xBF{\"k\": [1,\n 2]}";
   EXPECT_EQ(wobble::read_json_file(folder.file("scene.json")).at("k").size(), 2u);
-  EXPECT_EQ(error_of(folder, "\xEF\xBB\xBF{\n\n\"k\": 1,\n\"k\": 2}"),
+  EXPECT_EQ(read_error(folder, "\xEF\xBB\xBF{\n\n\"k\": 1,\n\"k\": 2}"),
             folder.file("scene.json") + ": line 4: key \"k\" appears twice in the same object");
-  EXPECT_EQ(error_of(folder, "\xEF\xBB\xBF"),
+  EXPECT_EQ(read_error(folder, "\xEF\xBB\xBF"),
             folder.file("scene.json") + ": the file is empty, expected a JSON object");
   // A document spread over more than one 64 KiB block reads whole, lines counted across blocks.
   std::string text = "{\"a\": [";
@@ -160,9 +160,9 @@ TEST(ReadJsonFile, ByteOrderMarkIsSkippedAndLinesCountFromTheText) {
     text += (i ? ",\n" : "") + std::to_string(i);
   std::ofstream(folder.file("scene.json"), std::ios::trunc) << text + "], \"b\": 1}";
   EXPECT_EQ(wobble::read_json_file(folder.file("scene.json")).at("a").at(39999), 39999);
-  EXPECT_EQ(error_of(folder, text + "], \"a\": 1}"),
+  EXPECT_EQ(read_error(folder, text + "], \"a\": 1}"),
             folder.file("scene.json") + ": line 40000: key \"a\" appears twice in the same object");
-  EXPECT_EQ(error_of(folder, text + "], oops}"),
+  EXPECT_EQ(read_error(folder, text + "], oops}"),
             folder.file("scene.json") +
                 ": line 40000: malformed JSON: syntax error while parsing "
                 "object key - invalid literal; last read: '39999], o'; "

@@ -21,7 +21,7 @@ std::string write_file(const wobble::testing::TemporaryFolder& folder, const std
 }
 
 // The lumped masses at density 1 add up to the total volume.
-double total_volume(const wobble::TetMeshFile& mesh) {
+double medit_volume(const wobble::TetMeshFile& mesh) {
   return wobble::tet_mesh_lumped_masses(mesh.V, mesh.T, 1.0).sum();
 }
 
@@ -64,7 +64,7 @@ TEST(ReadMeditMesh, KeywordsInAnyOrderRowsAcrossLinesAndOtherSectionsSkipped) {
   ASSERT_EQ(mesh.T.rows(), 5);
   EXPECT_EQ(mesh.T.row(1), Eigen::RowVector4i(3, 1, 2, 7));
   EXPECT_EQ(mesh.V.row(7), Eigen::RowVector3d(1, 1, 1));
-  EXPECT_NEAR(total_volume(mesh), 1.0, 1e-15);  // the five fill the cube exactly once
+  EXPECT_NEAR(medit_volume(mesh), 1.0, 1e-15);  // the five fill the cube exactly once
 }
 
 TEST(ReadMeditMesh, ShippedJellyCubeIsAFortyCentimetreCubeOnTheGround) {
@@ -74,7 +74,7 @@ TEST(ReadMeditMesh, ShippedJellyCubeIsAFortyCentimetreCubeOnTheGround) {
   EXPECT_EQ(mesh.T.rows(), 6 * 4 * 4 * 4);
   EXPECT_NEAR(mesh.V.col(1).minCoeff(), 0.0, 1e-12);
   EXPECT_NEAR(mesh.V.col(1).maxCoeff(), 0.4, 1e-12);
-  EXPECT_NEAR(total_volume(mesh), 0.4 * 0.4 * 0.4, 1e-12);
+  EXPECT_NEAR(medit_volume(mesh), 0.4 * 0.4 * 0.4, 1e-12);
 }
 
 struct BadFile {

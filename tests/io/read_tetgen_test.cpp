@@ -23,7 +23,7 @@ std::string write_pair(const wobble::testing::TemporaryFolder& folder, const std
 }
 
 // The lumped masses at density 1 add up to the total volume.
-double total_volume(const wobble::TetMeshFile& mesh) {
+double tetgen_volume(const wobble::TetMeshFile& mesh) {
   return wobble::tet_mesh_lumped_masses(mesh.V, mesh.T, 1.0).sum();
 }
 
@@ -60,7 +60,7 @@ TEST(ReadTetgen, ZeroBasedCubeWithAttributesAndMarkers) {
   ASSERT_EQ(mesh.T.rows(), 5);
   EXPECT_EQ(mesh.T.row(1), Eigen::RowVector4i(3, 1, 2, 7));
   EXPECT_EQ(mesh.V.row(6), Eigen::RowVector3d(0, 1, 1));
-  EXPECT_NEAR(total_volume(mesh), 1.0, 1e-15);  // the five fill the cube exactly once
+  EXPECT_NEAR(tetgen_volume(mesh), 1.0, 1e-15);  // the five fill the cube exactly once
 }
 
 TEST(ReadTetgen, TenNodeTetrahedronKeepsItsFourCorners) {
@@ -83,7 +83,7 @@ TEST(ReadTetgen, ShippedColumnStandsOnTheGround) {
   EXPECT_EQ(mesh.T.rows(), 6 * 2 * 6 * 2);
   EXPECT_NEAR(mesh.V.col(1).minCoeff(), 0.0, 1e-12);
   EXPECT_NEAR(mesh.V.col(1).maxCoeff(), 0.6, 1e-12);
-  EXPECT_NEAR(total_volume(mesh), 0.2 * 0.6 * 0.2, 1e-12);
+  EXPECT_NEAR(tetgen_volume(mesh), 0.2 * 0.6 * 0.2, 1e-12);
 }
 
 struct BadPair {

@@ -24,7 +24,7 @@ wobble::Scene load(const std::string& json) {
 }
 
 // The message with the temporary folder taken off, so the test can compare all of it.
-std::string error_of(const std::string& json) {
+std::string self_collision_error(const std::string& json) {
   TemporaryFolder folder;
   const std::string path = folder.file("scene.json");
   std::ofstream(path) << json;
@@ -59,29 +59,31 @@ TEST(SceneSelfCollision, ReadsTheThickness) {
 }
 
 TEST(SceneSelfCollision, ANonObjectIsAnErrorNamingTheFileAndKey) {
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": true})"),
+  EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": true})"),
             "scene.json: self_collision: expected an object, got true");
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": 0.01})"),
+  EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": 0.01})"),
             "scene.json: self_collision: expected an object, got 0.01");
 }
 
 TEST(SceneSelfCollision, AThicknessThatIsNotANumberWithinLimitsIsAnError) {
   const std::string expected = "scene.json: self_collision.thickness: expected " +
                                wobble::expected_in(wobble::limits::self_collision_thickness);
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": {"thickness": "1 cm"}})"),
-            expected + ", got \"1 cm\"");
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": {"thickness": 2}})"),
+  EXPECT_EQ(
+      self_collision_error(std::string(cloth) + R"(, "self_collision": {"thickness": "1 cm"}})"),
+      expected + ", got \"1 cm\"");
+  EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": {"thickness": 2}})"),
             expected + ", got 2");
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": {"thickness": 0}})"),
+  EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": {"thickness": 0}})"),
             expected + ", got 0");
 }
 
 TEST(SceneSelfCollision, AnUnknownKeyIsAnError) {
-  EXPECT_EQ(error_of(std::string(cloth) + R"(, "self_collision": {"thicknes": 0.02}})"),
+  EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": {"thicknes": 0.02}})"),
             "scene.json: self_collision.thicknes: unknown key, self_collision takes only "
             "\"thickness\" (m)");
   EXPECT_EQ(
-      error_of(std::string(cloth) + R"(, "self_collision": {"thickness": 0.02, "on": false}})"),
+      self_collision_error(std::string(cloth) +
+                           R"(, "self_collision": {"thickness": 0.02, "on": false}})"),
       "scene.json: self_collision.on: unknown key, self_collision takes only \"thickness\" (m)");
 }
 

@@ -21,7 +21,7 @@ wobble::Scene load(const TemporaryFolder& folder, const std::string& json) {
 }
 
 // The InputError message that loading `json` gives.
-std::string error_of(const std::string& json) {
+std::string scene_error(const std::string& json) {
   TemporaryFolder folder;
   try {
     load(folder, json);
@@ -159,7 +159,7 @@ TEST(WobbleScene, UnknownKeysAreRefusedAtEveryLevel) {
       {R"({"mesh": {"file": "none.obj"}, "Pins": "top"})", "scene.json: Pins: unknown key"},
   };
   for (const auto& [json, expected] : cases) {
-    const std::string message = error_of(json);
+    const std::string message = scene_error(json);
     EXPECT_NE(message.find(expected), std::string::npos) << json << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
@@ -198,7 +198,7 @@ TEST(WobbleScene, WholeNumbersInAnySpelling) {
        "pins: vertex index 3.25 is not a whole number (expected 0 to 1599)"},
   };
   for (const auto& [json, expected] : refused) {
-    const std::string message = error_of(json);
+    const std::string message = scene_error(json);
     EXPECT_NE(message.find("scene.json: " + expected), std::string::npos)
         << json << " -> " << message;
   }
@@ -318,7 +318,7 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
        "mesh.polygon_springs: expected true (false applies to an unfilled .obj only)"},
   };
   for (const auto& [json, expected] : cases) {
-    const std::string message = error_of(json);
+    const std::string message = scene_error(json);
     EXPECT_NE(message.find("scene.json"), std::string::npos) << json << " -> " << message;
     EXPECT_NE(message.find(expected), std::string::npos) << json << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
@@ -326,7 +326,7 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
 }
 
 TEST(WobbleScene, MalformedJsonGivesTheLine) {
-  const std::string message = error_of("{\n  \"mesh\": {\"generator\": \"cloth\"},\n  oops\n}");
+  const std::string message = scene_error("{\n  \"mesh\": {\"generator\": \"cloth\"},\n  oops\n}");
   EXPECT_NE(message.find("line 3: malformed JSON"), std::string::npos) << message;
 }
 
@@ -364,7 +364,7 @@ TEST(WobbleScene, LoadWobbleSceneRefusesWhatIsNotAWobbleScene) {
 TEST(WobbleScene, PinBandWithoutBelowOrAboveIsRefused) {
   for (const std::string band : {R"({"ab1e308ove": 0.1})", R"({"below": 0.1, "above": 0.2})",
                                  R"({"below": -1})", R"({"above": "high"})"}) {
-    const std::string message = error_of(
+    const std::string message = scene_error(
         R"({"mesh": {"generator": "cloth", "resolution": 3}, "pins": [0, "top", )" + band + "]}");
     EXPECT_NE(message.find("scene.json: pins: expected a vertex index, \"top\""), std::string::npos)
         << band << " -> " << message;

@@ -8,7 +8,7 @@ namespace wobble {
 
 namespace {
 
-constexpr float pi = 3.14159265358979f;
+constexpr float pi_float = 3.14159265358979f;
 
 // Two unit vectors u, v with u × v = axis (unit), so that (u, v, axis) is right-handed.
 void perpendicular_frame(const Eigen::Vector3f& axis, Eigen::Vector3f& u, Eigen::Vector3f& v) {
@@ -48,9 +48,9 @@ void add_swept_sphere(const Eigen::Vector3f& from, const Eigen::Vector3f& to, fl
     for (int r = 0; r <= per_half; ++r) {
       // Latitude from −90° to 0° around `from`, then 0° to 90° around `to`.
       const float latitude =
-          (end == 0 ? -1.0f + float(r) / per_half : float(r) / per_half) * 0.5f * pi;
+          (end == 0 ? -1.0f + float(r) / per_half : float(r) / per_half) * 0.5f * pi_float;
       for (int j = 0; j < around; ++j) {
-        const float longitude = 2.0f * pi * j / around;
+        const float longitude = 2.0f * pi_float * j / around;
         // The poles exactly on the axis, so their triangles collapse cleanly instead of
         // turning by a rounding error.
         const bool pole = (end == 0 && r == 0) || (end == 1 && r == per_half);

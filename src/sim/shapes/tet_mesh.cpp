@@ -18,12 +18,13 @@ double signed_volume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const E
   return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
 
-double signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
+
+}  // namespace
+
+double tet_signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
   return signed_volume(V.row(T(t, 0)).transpose(), V.row(T(t, 1)).transpose(),
                        V.row(T(t, 2)).transpose(), V.row(T(t, 3)).transpose());
 }
-
-}  // namespace
 
 Eigen::MatrixXi tet_mesh_edges(const Eigen::MatrixXi& T) {
   std::vector<std::pair<int, int>> edges;
@@ -52,7 +53,7 @@ Eigen::MatrixXi tet_mesh_boundary_faces(const Eigen::MatrixXd& V, const Eigen::M
   std::map<std::array<int, 3>, std::pair<std::array<int, 3>, int>> faces;
   for (Eigen::Index t = 0; t < T.rows(); ++t) {
     std::array<int, 4> corners = {T(t, 0), T(t, 1), T(t, 2), T(t, 3)};
-    if (signed_volume(V, T, t) < 0.0) std::swap(corners[2], corners[3]);
+    if (tet_signed_volume(V, T, t) < 0.0) std::swap(corners[2], corners[3]);
     for (const auto& face : kFaces) {
       const std::array<int, 3> oriented = {corners[face[0]], corners[face[1]], corners[face[2]]};
       std::array<int, 3> key = oriented;
@@ -76,7 +77,7 @@ Eigen::VectorXd tet_mesh_lumped_masses(const Eigen::MatrixXd& V, const Eigen::Ma
                                        double density) {
   Eigen::VectorXd m = Eigen::VectorXd::Zero(V.rows());
   for (Eigen::Index t = 0; t < T.rows(); ++t) {
-    const double quarter = density * std::abs(signed_volume(V, T, t)) / 4.0;
+    const double quarter = density * std::abs(tet_signed_volume(V, T, t)) / 4.0;
     for (int c = 0; c < 4; ++c)
       m(T(t, c)) += quarter;
   }

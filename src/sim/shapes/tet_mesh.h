@@ -5,6 +5,13 @@
 
 namespace wobble {
 
+// The signed volume of tetrahedron t (m³): positive when (b − a, c − a, d − a) is right-handed.
+//
+// Inputs:
+//   V  #V by 3 list of vertex positions
+//   T  #T by 4 list of tetrahedra (a, b, c, d)
+double tet_signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t);
+
 // Every distinct edge of a tetrahedral mesh, each once, with the smaller index first, sorted.
 //
 // Inputs:

@@ -107,12 +107,6 @@ Eigen::Vector3d closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen:
   return a + ab * (vb / sum) + ac * (vc / sum);
 }
 
-double signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
-  const Eigen::Vector3d a = V.row(T(t, 0)), b = V.row(T(t, 1)), c = V.row(T(t, 2)),
-                        d = V.row(T(t, 3));
-  return (b - a).dot((c - a).cross(d - a)) / 6.0;
-}
-
 // Move each boundary vertex of the tetrahedral mesh (TV, TT) towards its closest point on the
 // surface, as far as keeps every tetrahedron at min_volume or more. `corners` holds the
 // surface's triangles as consecutive column triples.
@@ -140,9 +134,9 @@ void snap_boundary_to_surface(const Eigen::Matrix3Xd& corners, double min_volume
     const Eigen::RowVector3d start = TV.row(v);
     double share = 1.0;
     for (int n = first[v]; n < first[v + 1]; ++n) {
-      const double before = signed_volume(TV, TT, incident[n]);
+      const double before = tet_signed_volume(TV, TT, incident[n]);
       TV.row(v) = target;
-      const double after = signed_volume(TV, TT, incident[n]);
+      const double after = tet_signed_volume(TV, TT, incident[n]);
       TV.row(v) = start;
       if (after < min_volume) share = std::min(share, (before - min_volume) / (before - after));
     }

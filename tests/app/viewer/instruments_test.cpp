@@ -11,11 +11,13 @@
 #include <memory>
 #include <string>
 
+#include "../../shared_constants.h"
+#include "../viewer_screen.h"
 #include "app/viewer/viewer.h"
 
 namespace {
 
-const Eigen::Vector2f window(1280.0f, 720.0f);
+using wobble::testing::window;
 
 std::unique_ptr<wobble::Viewer> split_viewer(const std::string& compare, bool plots) {
   wobble::ViewerSettings settings;
@@ -27,12 +29,7 @@ std::unique_ptr<wobble::Viewer> split_viewer(const std::string& compare, bool pl
   return viewer;
 }
 
-void press(wobble::Viewer& viewer, int key) {
-  wobble::InputEvent event;
-  event.type = wobble::InputEvent::Type::key_press;
-  event.code = key;
-  viewer.handle_events({event}, false, false, window);
-}
+using wobble::testing::press;
 
 // wobble cloth --compare solver=local-global,solver=lbfgs --plots: local-global on the left,
 // L-BFGS on the right, and both in each plot.

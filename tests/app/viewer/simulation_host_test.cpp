@@ -14,15 +14,15 @@
 
 namespace {
 
-std::unique_ptr<wobble::Simulation> cloth() {
+std::unique_ptr<wobble::Simulation> cloth_simulation() {
   const wobble::Scene scene = wobble::make_builtin_scene("cloth");
   return std::make_unique<wobble::Simulation>(scene.network, scene.pins, scene.params);
 }
 
 TEST(SimulationHost, ABatchOnTheThreadGivesTheCallersPositions) {
   wobble::SimulationHost on_caller, on_thread;
-  on_caller.replace(cloth());
-  on_thread.replace(cloth());
+  on_caller.replace(cloth_simulation());
+  on_thread.replace(cloth_simulation());
   on_thread.step_on_thread([] {});
   for (wobble::SimulationHost* host : {&on_caller, &on_thread}) {
     host->start_batch(5, false, false);
@@ -37,7 +37,7 @@ TEST(SimulationHost, ABatchOnTheThreadGivesTheCallersPositions) {
 
 TEST(SimulationHost, EditsDuringABatchWaitForItAndKeepTheirOrder) {
   wobble::SimulationHost host;
-  host.replace(cloth());
+  host.replace(cloth_simulation());
   // Between batches an edit is made at once.
   std::vector<std::string> done;
   EXPECT_TRUE(host.change([&] { done.push_back("now"); }));
@@ -67,7 +67,7 @@ TEST(SimulationHost, EditsDuringABatchWaitForItAndKeepTheirOrder) {
 
 TEST(SimulationHost, StepsToStartHonourPauseOneStepAndTheLimit) {
   wobble::SimulationHost host;
-  host.replace(cloth());
+  host.replace(cloth_simulation());
   const double frame = 1.0 / 60.0;
   EXPECT_EQ(host.steps_to_start(false, /*paused=*/true, true, std::nullopt, frame, 0.001), 0);
   EXPECT_EQ(host.steps_to_start(/*step_once=*/true, true, true, std::nullopt, frame, 0.001), 1);
@@ -84,7 +84,7 @@ TEST(SimulationHost, StepsToStartHonourPauseOneStepAndTheLimit) {
   host.pass_step_limit();
   EXPECT_FALSE(host.at_step_limit());
   EXPECT_EQ(host.steps_to_start(false, false, true, std::nullopt, frame, 0.001), 1);
-  host.replace(cloth());
+  host.replace(cloth_simulation());
   host.start_batch(2, false, false);
   host.finish_batch();
   EXPECT_TRUE(host.at_step_limit()) << "the next scene stops at the limit too";
@@ -93,7 +93,7 @@ TEST(SimulationHost, StepsToStartHonourPauseOneStepAndTheLimit) {
 
 TEST(SimulationHost, ObserversSeeEachGoodStepAfterTheSplitView) {
   wobble::SimulationHost host;
-  host.replace(cloth());
+  host.replace(cloth_simulation());
   std::vector<std::string> seen;
   host.set_after_step([&](const wobble::Simulation& s) {
     seen.push_back("after " + std::to_string(s.steps_taken()));
@@ -108,7 +108,7 @@ TEST(SimulationHost, ObserversSeeEachGoodStepAfterTheSplitView) {
 
 TEST(SimulationHost, AFailedStepEndsTheBatchAndSaysWhich) {
   wobble::SimulationHost host;
-  host.replace(cloth());
+  host.replace(cloth_simulation());
   // A pin target a thousand diagonals away: the step jumps and is rolled back.
   const int pin = host.simulation().pinned_vertices().front();
   host.simulation().set_pin_target(pin, Eigen::Vector3d(1e6, 0.0, 0.0));

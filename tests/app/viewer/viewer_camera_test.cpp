@@ -10,6 +10,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "../../shared_constants.h"
 #include "../headless_imgui.h"
 #include "../viewer_screen.h"
 #include "app/interaction/picking.h"
@@ -20,7 +21,7 @@ namespace {
 
 using wobble::InputEvent;
 
-const Eigen::Vector2f window(1280.0f, 720.0f);
+using wobble::testing::window;
 // The panel at ui_scale 2, a high-DPI laptop's, is 660 units wide and 20 in: its right edge.
 constexpr float ui_scale = 2.0f;
 constexpr float panel_right = 680.0f;

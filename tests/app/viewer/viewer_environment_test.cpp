@@ -5,6 +5,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include "../../shared_constants.h"
 #include "app/interaction/collider_picking.h"
 #include "app/interaction/picking.h"
 #include "app/viewer/viewer.h"
@@ -13,7 +14,7 @@ namespace {
 
 using wobble::InputEvent;
 
-const Eigen::Vector2f window(1280.0f, 720.0f);
+using wobble::testing::window;
 
 // The built-in cloth (flat at y = 1.2, pinned at two corners) with a sphere under its middle.
 wobble::Scene cloth_over_a_sphere() {

@@ -11,6 +11,7 @@
 #include <fstream>
 
 #include "../../io/temporary_folder.h"
+#include "../../shared_constants.h"
 #include "app/interaction/picking.h"
 #include "io/load_scene.h"
 
@@ -18,7 +19,7 @@ namespace {
 
 using wobble::InputEvent;
 
-const Eigen::Vector2f window(1280.0f, 720.0f);
+using wobble::testing::window;
 
 struct ViewerFixture {
   ViewerFixture()
@@ -232,12 +233,7 @@ std::vector<std::string> faceless_scene_files(const wobble::testing::TemporaryFo
   return {folder.file("course.json"), folder.file("lines.obj"), folder.file("wobble.json")};
 }
 
-void press(wobble::Viewer& viewer, int key) {
-  InputEvent event;
-  event.type = InputEvent::Type::key_press;
-  event.code = key;
-  viewer.handle_events({event}, false, false, window);
-}
+using wobble::testing::press;
 
 TEST(Viewer, AMeshWithoutFacesShowsItsSpringsAndVertices) {
   wobble::testing::TemporaryFolder folder;
