@@ -52,6 +52,7 @@ LoadedMesh volume_mesh(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T) {
   network.E = tet_mesh_edges(tets);
   network.F = tet_mesh_boundary_faces(network.V, tets);
   network.m = tet_mesh_lumped_masses(network.V, tets, 1.0);
+  network.T = std::move(tets);
   return mesh;
 }
 

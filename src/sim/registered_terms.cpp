@@ -2,12 +2,14 @@
 // TermFactory), one line here.
 #include "sim/forces/wind.h"
 #include "sim/terms/term_registry.h"
+#include "sim/volume/volume_term.h"
 
 namespace wobble {
 
 const std::vector<TermEntry>& built_in_terms() {
   static const std::vector<TermEntry> terms = {
       {"wind", make_wind_force},
+      {"volume", make_volume_term},
   };
   return terms;
 }

@@ -206,6 +206,10 @@ void Simulation::rebuild_terms() {
   list.push_back(&colliders_);
   list.push_back(&self_collision_);
   terms_.set(std::move(list));
+  // The made terms' fixed part of Q (the volume term's); the caller refactorizes. A pattern that
+  // had to grow is analyzed again (never in the constructor, which analyzes after this).
+  if (system_.set_terms_matrix(terms_.matrix(network_.V.rows())) && system_.symbolic_analyses() > 0)
+    system_.analyze();
 }
 
 void Simulation::apply_forces() {

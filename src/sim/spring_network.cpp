@@ -49,6 +49,7 @@ void validate_spring_network(const SpringNetwork& network) {
   }
   check_indices(network.E, 2, "spring", n);
   check_indices(network.F, 3, "face", n);
+  check_indices(network.T, 4, "tetrahedron", n);
   for (Eigen::Index e = 0; e < network.E.rows(); ++e) {
     if (network.E(e, 0) == network.E(e, 1)) {
       throw InputError("spring " + std::to_string(e) + " joins vertex " +

@@ -55,7 +55,8 @@ SpringNetwork make_jelly_block(const JellyBlockOptions& options, Eigen::MatrixXi
   jelly.E = tet_mesh_edges(T);
   jelly.F = tet_mesh_boundary_faces(jelly.V, T);
   jelly.m = tet_mesh_lumped_masses(jelly.V, T, options.density);
-  if (T_out) *T_out = std::move(T);
+  if (T_out) *T_out = T;
+  jelly.T = std::move(T);
   return jelly;
 }
 

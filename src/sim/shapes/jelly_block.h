@@ -18,7 +18,8 @@ struct JellyBlockOptions {
 // holds the first (res+1)² vertices.
 //
 // Springs are the tetrahedra's edges; render faces are the boundary triangles facing outward;
-// each tetrahedron gives a quarter of its mass (density × volume) to each corner.
+// each tetrahedron gives a quarter of its mass (density × volume) to each corner. The network's
+// T holds the tetrahedra.
 // Throws InputError for resolution < 1 or a non-positive size or density.
 //
 // Outputs (besides the returned network):

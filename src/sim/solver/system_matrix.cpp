@@ -57,6 +57,11 @@ Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::In
 
 SystemMatrix::SystemMatrix(const Eigen::MatrixXi& E, Eigen::Index n)
     : laplacian_(spring_laplacian(E, n)), Q_(laplacian_) {
+  find_diagonal();
+}
+
+void SystemMatrix::find_diagonal() {
+  const Eigen::Index n = Q_.rows();
   diagonal_slot_.resize(n);
   for (Eigen::Index i = 0; i < n; ++i) {
     const int* rows = Q_.innerIndexPtr();
@@ -66,6 +71,34 @@ SystemMatrix::SystemMatrix(const Eigen::MatrixXi& E, Eigen::Index n)
   }
 }
 
+bool SystemMatrix::set_terms_matrix(const Eigen::SparseMatrix<double>& K) {
+  terms_values_.clear();
+  if (K.nonZeros() == 0) return false;
+  // Widen the pattern by K's entries that AᵀA does not have (stored as zeros in AᵀA).
+  Eigen::SparseMatrix<double> pattern = K;
+  for (Eigen::Index s = 0; s < pattern.nonZeros(); ++s)
+    pattern.valuePtr()[s] = 0.0;
+  pattern += laplacian_;
+  pattern.makeCompressed();
+  const bool grew = pattern.nonZeros() != laplacian_.nonZeros();
+  if (grew) {
+    laplacian_ = pattern;
+    Q_ = laplacian_;
+    find_diagonal();
+  }
+  // K's values at Q's slots.
+  terms_values_.assign(Q_.nonZeros(), 0.0);
+  for (Eigen::Index column = 0; column < K.outerSize(); ++column) {
+    Eigen::Index s = Q_.outerIndexPtr()[column];
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, column); it; ++it) {
+      while (Q_.innerIndexPtr()[s] != it.row())
+        ++s;
+      terms_values_[s] += it.value();
+    }
+  }
+  return grew;
+}
+
 void SystemMatrix::analyze() {
   solver_.analyze(Q_);
   ++symbolic_analyses_;
@@ -73,11 +106,13 @@ void SystemMatrix::analyze() {
 
 void SystemMatrix::refactorize(double k, double dt, double damping, const Eigen::VectorXd& m,
                                const Eigen::VectorXd& terms_diagonal) {
-  // Q = k AᵀA + (1 + cΔt)M/Δt² + D, written into the fixed pattern.
+  // Q = k AᵀA + K + (1 + cΔt)M/Δt² + D, written into the fixed pattern.
   const double* laplacian = laplacian_.valuePtr();
   double* q = Q_.valuePtr();
   for (Eigen::Index s = 0; s < Q_.nonZeros(); ++s)
     q[s] = k * laplacian[s];
+  for (std::size_t s = 0; s < terms_values_.size(); ++s)
+    q[s] += terms_values_[s];
   // Damping scales the inertia term by (1 + cΔt).
   const double inertia = inertia_scale(dt, damping);
   const bool terms = terms_diagonal.size() == static_cast<Eigen::Index>(diagonal_slot_.size());

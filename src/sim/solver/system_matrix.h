@@ -15,14 +15,21 @@ namespace wobble {
 Eigen::SparseMatrix<double> spring_laplacian(const Eigen::MatrixXi& E, Eigen::Index n);
 
 // The global step's matrix, #V by #V, and its Cholesky factorization:
-//   Q = k AᵀA + (1 + cΔt)M/Δt² + D,  D the step's terms' diagonal (w CᵀC for the pins, ...)
-// in a pattern that never changes (AᵀA's, its diagonal always stored), so that k, Δt, damping,
-// masses and pins only ever change values: one symbolic analysis serves every factorization.
+//   Q = k AᵀA + (1 + cΔt)M/Δt² + K + D,  D the step's terms' diagonal (w CᵀC for the pins, ...),
+//   K the terms' fixed matrix (the volume term's; none for most scenes)
+// in a pattern that never changes (AᵀA's, its diagonal always stored; a K outside it widens it
+// once), so that k, Δt, damping, masses and pins only ever change values: one symbolic analysis
+// serves every factorization.
 class SystemMatrix {
  public:
   SystemMatrix() = default;
   // E  #E by 2 springs;  n  #V. Builds the pattern; analyze() before the first refactorize().
   SystemMatrix(const Eigen::MatrixXi& E, Eigen::Index n);
+
+  // The terms' fixed matrix K (#V by #V, symmetric), in Q from the next refactorize(); no entries
+  // for none, which leaves Q exactly as without it. Returns whether Q's pattern had to grow to
+  // hold K (then analyze() again before refactorizing).
+  bool set_terms_matrix(const Eigen::SparseMatrix<double>& K);
 
   // The symbolic analysis of Q's pattern (throws InputError for a factor too large).
   void analyze();
@@ -45,9 +52,12 @@ class SystemMatrix {
   int numeric_factorizations() const { return numeric_factorizations_; }
 
  private:
+  void find_diagonal();
+
   Eigen::SparseMatrix<double> laplacian_;    // AᵀA with every diagonal entry stored
   Eigen::SparseMatrix<double> Q_;            // same pattern as laplacian_
   std::vector<Eigen::Index> diagonal_slot_;  // index of Q(i,i) in Q_.valuePtr()
+  std::vector<double> terms_values_;         // K in Q_'s pattern; empty for none
   CholeskySolver solver_;
   int symbolic_analyses_ = 0;
   int numeric_factorizations_ = 0;

@@ -2,6 +2,7 @@
 #define WOBBLE_SIM_TERMS_STEP_TERM_H
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "sim/spring_network.h"
@@ -51,7 +52,9 @@ struct StepTiming {
 // term that keeps Q as it is, its whole force κ(T(p) − p) in the right-hand side. Either way
 // its gradient is D p − (what it adds to the right-hand side), D what it put on Q's diagonal,
 // which is what the convergence trace relies on; add_energy gives the same energy and gradient
-// directly (L-BFGS).
+// directly (L-BFGS). A term whose weight couples vertices (the volume term's (w/2)‖F − R‖² per
+// tetrahedron) puts a fixed matrix K on Q instead (add_matrix, read once when the term is
+// made); its gradient is then K p − (what it adds to the right-hand side).
 class StepTerm {
  public:
   virtual ~StepTerm() = default;
@@ -67,6 +70,9 @@ class StepTerm {
                                  const Eigen::VectorXd& /*inertia*/) {}
   // diagonal (#V) += its weights on Q's diagonal. Called when Q is refactorized.
   virtual void add_diagonal(Eigen::VectorXd& /*diagonal*/) const {}
+  // K += its fixed part of Q, a symmetric #V by #V matrix (both triangles listed; repeats are
+  // summed). Read once when the made terms are built; Q keeps it until they are built again.
+  virtual void add_matrix(std::vector<Eigen::Triplet<double>>& /*K*/) const {}
   // y (#V by 3, N) += what it adds to the right-hand side for the whole step (pin targets).
   virtual void add_fixed_rhs(Eigen::MatrixXd& /*y*/) const {}
   // Begins a step from its first iterate `first` (#V by 3): chooses its set. Returns whether its

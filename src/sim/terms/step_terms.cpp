@@ -40,6 +40,15 @@ const Eigen::VectorXd& StepTerms::diagonal(Eigen::Index vertices) {
   return diagonal_;
 }
 
+Eigen::SparseMatrix<double> StepTerms::matrix(Eigen::Index vertices) const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const StepTerm* term : terms_)
+    term->add_matrix(triplets);
+  Eigen::SparseMatrix<double> K(vertices, vertices);
+  K.setFromTriplets(triplets.begin(), triplets.end());
+  return K;
+}
+
 void StepTerms::add_fixed_rhs(Eigen::MatrixXd& y) const {
   for (const StepTerm* term : terms_)
     term->add_fixed_rhs(y);

@@ -22,6 +22,8 @@ class StepTerms {
   void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) const;
   // Every term's weights on Q's diagonal (#V), or empty when none has any.
   const Eigen::VectorXd& diagonal(Eigen::Index vertices);
+  // Every term's fixed part of Q (#V by #V), with no entries when none has one.
+  Eigen::SparseMatrix<double> matrix(Eigen::Index vertices) const;
   void add_fixed_rhs(Eigen::MatrixXd& y) const;
   // Whether any term's diagonal changed.
   bool begin_step(const StepContext& step, const Eigen::MatrixXd& first);

@@ -1,0 +1,83 @@
+#ifndef WOBBLE_SIM_VOLUME_VOLUME_TERM_H
+#define WOBBLE_SIM_VOLUME_VOLUME_TERM_H
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <memory>
+#include <vector>
+
+#include "sim/parallel/worker_pool.h"
+#include "sim/terms/step_term.h"
+
+namespace wobble {
+
+struct TermSetup;
+
+// The rotation nearest to F in the Frobenius norm, among proper rotations (det R = +1): the R
+// maximizing tr(RᵀF), U·diag(1, 1, det UVᵀ)·Vᵀ for F = UΣVᵀ. So an inverted F (det F < 0) gets
+// a right-handed R, and a term pulling F toward it turns the tetrahedron the right way out.
+// Found by Müller et al.'s iteration ("A Robust Method to Extract the Rotational Part of
+// Deformations", 2016) from `q`, the last answer (warm start), which receives the new one.
+// Stops when the update turns by less than `tolerance` (rad) or after `most` updates.
+Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q, int most = 20,
+                                 double tolerance = 1e-12);
+
+// The volume term of a solid (projective dynamics' strain term, Bouaziz et al. 2014, in the
+// same local-global iteration as the springs): for every tetrahedron t of volume vₜ and
+// deformation gradient Fₜ(p) = Ds(p)·Dm⁻¹,
+//   E(p) = (w/2) Σₜ vₜ ‖Fₜ(p) − Rₜ‖²_F,  Rₜ the proper rotation nearest Fₜ.
+// Fₜ is linear in p (Fₜ = Pₜᵀ Gₜ, Pₜ the 4 by 3 corners, Gₜ 4 by 3 from the rest shape), so
+// the quadratic part is a fixed matrix K = w Σₜ vₜ GₜGₜᵀ on Q (add_matrix) and the local step is
+// Rₜ, whose pull w vₜ GₜRₜᵀ joins the right-hand side: the springs' local step with a rotation
+// in place of a direction. Its gradient is w vₜ Gₜ(Fₜ − Rₜ)ᵀ per tetrahedron.
+class VolumeTerm : public StepTerm {
+ public:
+  // V  #V by 3 rest positions; T  #T by 4 tetrahedra (none flat); stiffness w (Pa);
+  // pool  the threads it may use for a large mesh.
+  VolumeTerm(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, double stiffness,
+             WorkerPool& pool = WorkerPool::shared());
+
+  const char* name() const override { return "volume"; }
+  void add_matrix(std::vector<Eigen::Triplet<double>>& K) const override;
+  bool in_solve() const override { return true; }
+  void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
+                   double* energy) override;
+  double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
+                    Eigen::MatrixXd* gradient) const override;
+  void project(const StepContext& step, Eigen::MatrixXd& next) override;
+  bool reset() override;
+  void report(std::vector<TermFigure>& figures) const override;
+
+  // The tetrahedra inverted (det F ≤ 0) at the end of the last step.
+  long inverted() const { return inverted_; }
+  // Below this many tetrahedra the local step runs on the calling thread alone.
+  static constexpr long min_tets_for_threads = 4096;
+
+ private:
+  // Each tetrahedron's pull (into pull_) and, if `energy`, its energy (into energy_); the
+  // rotations are found with `most` updates from the last ones.
+  void local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool energy) const;
+  Eigen::Matrix3d deformation(const Eigen::MatrixXd& p, Eigen::Index t) const;
+
+  Eigen::MatrixXi T_;
+  std::vector<Eigen::Matrix<double, 4, 3>> G_;  // #T: F = Pᵀ G
+  Eigen::VectorXd weight_;                      // #T: w vₜ (N·m)
+  // vertex → its (tetrahedron, corner) slots 4t + c, in increasing order, so each vertex sums
+  // its pulls in one fixed order whatever the threads.
+  std::vector<int> incident_start_, incident_;
+  mutable std::vector<Eigen::Quaterniond> rotation_;  // #T: the last Rₜ (warm start)
+  mutable Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> pull_;  // 4#T by 3
+  mutable Eigen::VectorXd energy_;                                          // #T (J)
+  WorkerPool* pool_;
+  mutable SharingPayoff payoff_;
+  long inverted_ = 0;
+};
+
+// The registered factory (sim/registered_terms.cpp): the volume term at the setting
+// "volume-stiffness" (Pa) for a network with tetrahedra, or nullptr when it is 0 or there are
+// none.
+std::unique_ptr<StepTerm> make_volume_term(const TermSetup& setup);
+
+}  // namespace wobble
+
+#endif
