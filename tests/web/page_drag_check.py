@@ -1,7 +1,9 @@
 """The page answers the mouse, a finger and the keys as the desktop does: in headless Chromium
 (page_check.py's driver, DevTools input events), the cloth's pinned corner is taken with the
 mouse and dragged, then with a finger on a phone-sized page, W turns the course's wind on, and
-the wheel zooms a notch at a time, the desktop's way (wheel_checks).
+the wheel zooms a notch at a time, the desktop's way (wheel_checks). The very first wheel, over
+the panel before the mouse has moved, scrolls the panel and leaves the camera alone (the page
+gives the wheel's own place to the panel first).
 
 The held vertex is drawn as a yellow dot (the desktop's mark): after each drag the yellow dot
 must be where the pointer let go, not where the corner was; before it, none there. W must tick
@@ -155,6 +157,18 @@ def main():
             if not page.open(url):
                 failures.append(f'{what}: the page drew no frames')
                 continue
+            if not finger:
+                # The first event the page gets: a wheel over the panel, the mouse never moved.
+                distance = page.browser.evaluate('Module.wobbleCameraDistance')
+                page.browser.call('Input.dispatchMouseEvent',
+                                  {'type': 'mouseWheel', 'x': 150, 'y': 300, 'deltaX': 0,
+                                   'deltaY': -100})
+                time.sleep(0.6)
+                after = page.browser.evaluate('Module.wobbleCameraDistance')
+                print(f'page_drag_check: the first wheel, over the panel: the camera '
+                      f'{distance:.4f} -> {after:.4f} m')
+                if after != distance:
+                    failures.append('the first wheel over the panel zoomed the camera')
             before = page.screenshot()
             if yellow_near(before, *end) > 0:
                 failures.append(f'{what}: a yellow mark where the drag ends before it started')

@@ -1,7 +1,10 @@
 """The page gives its files to the browser: in headless Chromium at 1280x720, the panel's PNG
 button downloads a PNG of what the canvas shows, OBJ the cloth's 1600 vertices, and Save scene
 the scene and its mesh, each under the desktop's name (wobble-cloth-0001.png, ...). (Before,
-they were written into the page's memory, where nobody could reach them.)
+they were written into the page's memory, where nobody could reach them.) After Save scene the
+notice on screen says what is true in a page (the download, and a drop to open it again), not
+the desktop's `wobble FILE` and scene picker. Ctrl+S saves the scene too, and the page keeps the
+key from the browser (its keydown's default prevented: no "Save page" dialog).
 
   page_files_check.py SITE
 
@@ -103,6 +106,32 @@ def main():
             failures.append(f'Save scene: no scene and mesh ({os.listdir(folder)})')
         else:
             print('page_files_check: the scene and its mesh downloaded')
+        notices = browser.evaluate('Module.wobbleNotices || ""')
+        print(f'page_files_check: after Save scene the page says: {notices!r}')
+        if ('downloaded wobble-cloth-scene-0001.json' not in notices or 'drop' not in notices
+                or 'wobble ./' in notices or 'picker' in notices):
+            failures.append(f'Save scene: the notice is not the page\'s: {notices!r}')
+        # Ctrl+S: a second scene downloads, and the browser's own Ctrl+S was prevented (read by a
+        # listener added after the page's, on the same phase: it sees the page's decision).
+        browser.evaluate('''window.wobbleKeyPrevented = null; window.addEventListener('keydown',
+            (e) => { if (e.key === 's') window.wobbleKeyPrevented = e.defaultPrevented; }, true)''')
+        for kind, key, code, number in [('rawKeyDown', 'Control', 'ControlLeft', 17),
+                                        ('rawKeyDown', 's', 'KeyS', 83),
+                                        ('keyUp', 's', 'KeyS', 83),
+                                        ('keyUp', 'Control', 'ControlLeft', 17)]:
+            browser.call('Input.dispatchKeyEvent',
+                         {'type': kind, 'key': key, 'code': code, 'modifiers': 2,
+                          'windowsVirtualKeyCode': number})
+            time.sleep(0.15)
+        second = os.path.join(folder, 'wobble-cloth-scene-0002.json')
+        prevented = browser.evaluate('window.wobbleKeyPrevented')
+        saved = wait_for(second)
+        print(f'page_files_check: Ctrl+S: downloaded {saved}, the browser\'s default prevented '
+              f'{prevented}')
+        if not saved:
+            failures.append(f'Ctrl+S: no scene downloaded ({os.listdir(folder)})')
+        if prevented is not True:
+            failures.append(f'Ctrl+S: the browser\'s own Ctrl+S was not prevented ({prevented})')
     finally:
         browser.close()
         server.shutdown()

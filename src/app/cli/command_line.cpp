@@ -90,7 +90,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
   std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, obj_sequence, damping, friction, color_by, self_collision_thickness,
+      record, yaw, pitch, zoom, obj_sequence, damping, friction, color_by, self_collision_thickness,
       threads, solver, expect, expect_tolerance;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
@@ -179,6 +179,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
   app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
   app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
+  app.add_option("--camera-zoom", zoom,
+                 "The camera this many times nearer than its framing of the scene (default 1)");
   app.add_flag("--list-scenes", list_scenes, "List the built-in scenes and exit");
   app.add_flag("--version", version, "Print the version and exit");
 
@@ -285,6 +287,10 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   for (const std::string& drag : drags)
     command.drags.push_back(parse_drag(drag, CommandLine::max_frames));
   if (yaw) command.camera_yaw = number_between("--camera-yaw", *yaw, -360.0, 360.0);
+  if (zoom) {
+    command.camera_zoom = number_between("--camera-zoom", *zoom, CommandLine::min_camera_zoom,
+                                         1.0 / CommandLine::min_camera_zoom);
+  }
   if (pitch) {
     command.camera_pitch = number_between("--camera-pitch", *pitch, -CommandLine::max_camera_pitch,
                                           CommandLine::max_camera_pitch);

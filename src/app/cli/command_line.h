@@ -57,6 +57,7 @@ struct CommandLine {
   bool plots = false;  // open the convergence and energy plots
   bool wireframe = false, springs = false, points = false;
   std::optional<double> camera_yaw, camera_pitch;    // degrees
+  std::optional<double> camera_zoom;                 // times nearer than the framing
   ColorQuantity color_by = ColorQuantity::material;  // else coloured, with a legend
 
   bool writes_images() const { return !screenshot.empty() || !record.empty() || !expect.empty(); }
@@ -68,6 +69,7 @@ struct CommandLine {
   static constexpr long max_image_side = 4096;
   static constexpr long max_image_pixels = 4096L * 2160L;
   static constexpr double max_camera_pitch = 89.0;
+  static constexpr double min_camera_zoom = 0.001;  // and at most its inverse
 };
 
 // Parse argv. Returns nothing when the request was fully answered here (--help, --version,

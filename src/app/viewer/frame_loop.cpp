@@ -5,6 +5,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/viewer/viewer.h"
@@ -25,6 +26,35 @@ RgbaImage read_shown_frame(int width, int height) {
   read_shown_frame(width, height, image);
   return image;
 }
+
+namespace {
+
+// The built-in font is drawn on a 13-pixel grid: at 13, 26 or 39 px its outlines fall on whole
+// pixels, but at a fractional scale (a pixel ratio of 1.25 or 1.5: Windows' scaling, a browser's
+// zoom) they fall between pixels and every stroke was drawn as two half-grey ones, the text blurred
+// (half its strong edges spread over two pixels, against all at whole ratios). Each glyph's
+// pixels are made either ink or none, as a pixel font is scaled, so that its edges stay sharp.
+void sharpen_glyphs(ImFontAtlas& atlas) {
+  unsigned char* pixels = nullptr;
+  int width = 0, height = 0;
+  atlas.GetTexDataAsAlpha8(&pixels, &width, &height);  // builds the atlas
+  for (const ImFont* font : atlas.Fonts) {
+    for (const ImFontGlyph& glyph : font->Glyphs) {
+      const int x0 = static_cast<int>(std::lround(glyph.U0 * width)),
+                x1 = static_cast<int>(std::lround(glyph.U1 * width)),
+                y0 = static_cast<int>(std::lround(glyph.V0 * height)),
+                y1 = static_cast<int>(std::lround(glyph.V1 * height));
+      for (int y = std::max(y0, 0); y < std::min(y1, height); ++y) {
+        for (int x = std::max(x0, 0); x < std::min(x1, width); ++x) {
+          unsigned char& alpha = pixels[y * width + x];
+          alpha = alpha >= 128 ? 255 : 0;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
 
 FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale) {
   FrameResult result;
@@ -66,7 +96,8 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   if (imgui) ImGui::Render();
   if (result.drawn) {
     host.bind_target();
-    viewer.render(width, height, window, window.x() > 0.0f ? width / window.x() : 1.0f);
+    const float pixel_ratio = window.x() > 0.0f ? width / window.x() : 1.0f;
+    viewer.render(width, height, window, pixel_ratio, host.mark_scale(pixel_ratio));
     if (imgui) {
       // A recording of the scene alone takes it before the panel goes over it.
       viewer.scene_drawn([width, height] { return read_shown_frame(width, height); });
@@ -108,6 +139,7 @@ void ImGuiSession::apply_scale(float scale) {
   font.SizePixels = std::round(13.0f * scale);
   io.Fonts->AddFontDefault(&font);
   io.FontGlobalScale = 1.0f;
+  if (font.SizePixels != 13.0f * std::round(scale)) sharpen_glyphs(*io.Fonts);
 }
 
 void ImGuiSession::rescale(float scale) {

@@ -34,6 +34,10 @@ class FrameHost {
   virtual double now() const = 0;
   // The picture's size in pixels and the window's in points (the page and headless: the same).
   virtual void sizes(int& width, int& height, Eigen::Vector2f& window) = 0;
+  // The picture's pixels per pixel of a mark's size (pin dots, the held vertex): `pixel_ratio`
+  // (the picture's pixels per window point) where points are the screen's own; the page, whose
+  // window units are device pixels, gives its device pixel ratio, so marks keep their CSS size.
+  virtual float mark_scale(float pixel_ratio) const { return pixel_ratio; }
   // Whether ImGui runs this frame (headless: only when the panel, the split view's labels or a
   // legend show), and whether the whole panel is built or only the overlays (headless --ui).
   virtual bool uses_imgui() const { return true; }

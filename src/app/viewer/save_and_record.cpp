@@ -45,8 +45,15 @@ SavedScene SaveAndRecord::save_scene(const Scene& scene, const Simulation& simul
     save_current_scene(path, scene, simulation,
                        std::make_pair(eye, Eigen::Vector3d(camera.target.cast<double>())));
     if (written_) {
-      written_(std::filesystem::path(path).replace_extension(".obj").string());  // its mesh
+      // The page: both files are downloads, which only a drop brings back into a page.
+      const std::string mesh = std::filesystem::path(path).replace_extension(".obj").string();
+      written_(mesh);
       written_(path);
+      const std::string name = std::filesystem::path(path).filename().string();
+      return SavedScene{"downloaded " + name + " and its mesh " +
+                            std::filesystem::path(mesh).filename().string() +
+                            "; drop both on the page to open the scene again",
+                        path};
     }
     return SavedScene{"saved the scene as " + path + " (wobble " + path +
                           " opens it; the scene picker lists it as " + scene_label(path) + ")",

@@ -27,7 +27,8 @@ void bounds(const float* positions, int count, Eigen::Vector3f& lower, Eigen::Ve
 
 }  // namespace
 
-ViewCamera::ViewCamera(std::optional<float> yaw, std::optional<float> pitch) : start_yaw_(yaw) {
+ViewCamera::ViewCamera(std::optional<float> yaw, std::optional<float> pitch, float zoom)
+    : start_yaw_(yaw), start_zoom_(zoom > 0.0f && std::isfinite(zoom) ? zoom : 1.0f) {
   if (pitch) start_pitch_ = std::clamp(*pitch, -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
   camera_.yaw = start_yaw_.value_or(default_yaw);
   camera_.pitch = start_pitch_.value_or(default_pitch);
@@ -35,7 +36,10 @@ ViewCamera::ViewCamera(std::optional<float> yaw, std::optional<float> pitch) : s
 
 void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float ground_height) {
   frame_pending_ = true;
+  zoom_framing_ = true;
   scene_camera_.reset();
+  scene_yaw_ = default_yaw;
+  scene_pitch_ = default_pitch;
   if (look.camera_position && look.camera_target) {
     // The scene's own view replaces the framing; --camera-yaw/--camera-pitch still turn it.
     const Eigen::Vector3f eye = look.camera_position->cast<float>();
@@ -47,6 +51,8 @@ void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float 
     camera_.pitch = std::clamp(std::asin(std::clamp(back.y() / camera_.distance, -1.0f, 1.0f)),
                                -OrbitCamera::max_pitch, OrbitCamera::max_pitch);
     camera_.lens_shift.setZero();
+    scene_yaw_ = camera_.yaw;
+    scene_pitch_ = camera_.pitch;
     if (start_yaw_) camera_.yaw = *start_yaw_;
     if (start_pitch_) camera_.pitch = *start_pitch_;
     scene_camera_ = camera_;
@@ -65,6 +71,7 @@ void ViewCamera::open(const SceneLook& look, const Eigen::MatrixXd& rest, float 
 }
 
 void ViewCamera::restore_opening_view() {
+  zoom_framing_ = true;
   if (scene_camera_) {
     camera_ = *scene_camera_;
     fit_scene_camera_ = true;
@@ -93,6 +100,7 @@ void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
       camera_.lens_shift =
           Eigen::Vector2f(region.left + region.right - 1.0f, 1.0f - (region.top + region.bottom));
     }
+    framed();
     return;
   }
   Eigen::Vector3f lower, upper;
@@ -103,6 +111,31 @@ void ViewCamera::frame(const std::vector<float>& positions, float ground_height,
   // holds the shape wherever it is now (thrown high, the frame only grows).
   add_room_to_move(lower, upper, ground_height);
   frame_box(camera_, lower, upper, aspect, region);
+  framed();
+}
+
+void ViewCamera::framed() {
+  framed_distance_ = camera_.distance;
+  framed_target_ = camera_.target;
+  // The opening view (and O's), framed again as the panel settles, keeps --camera-zoom; F does
+  // not.
+  if (zoom_framing_) {
+    camera_.distance = std::clamp(camera_.distance / start_zoom_, OrbitCamera::min_distance,
+                                  OrbitCamera::max_distance);
+  }
+}
+
+ViewCamera::Angles ViewCamera::angles() const {
+  constexpr double to_degrees = 180.0 / 3.14159265358979323846;
+  Angles angles;
+  angles.yaw_degrees = std::remainder(static_cast<double>(camera_.yaw) * to_degrees, 360.0);
+  if (angles.yaw_degrees <= -180.0) angles.yaw_degrees += 360.0;
+  angles.pitch_degrees = camera_.pitch * to_degrees;
+  angles.zoom = camera_.distance > 0.0f ? framed_distance_ / camera_.distance : 1.0;
+  angles.scene_yaw_degrees = scene_yaw_ * to_degrees;
+  angles.scene_pitch_degrees = scene_pitch_ * to_degrees;
+  angles.panned = (camera_.target - framed_target_).norm() > 1e-4f * framed_distance_;
+  return angles;
 }
 
 void ViewCamera::orbit(float dx, float dy, float view_height) {

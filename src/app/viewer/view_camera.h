@@ -17,8 +17,9 @@ namespace wobble {
 class ViewCamera {
  public:
   // The angles every scene opens from (radians), from --camera-yaw and --camera-pitch; unset,
-  // from the front right, a little above.
-  ViewCamera(std::optional<float> yaw, std::optional<float> pitch);
+  // from the front right, a little above; and `zoom` times nearer than its framing
+  // (--camera-zoom).
+  ViewCamera(std::optional<float> yaw, std::optional<float> pitch, float zoom = 1.0f);
 
   // A scene opens: its own view if it has one (the angles above still turn it), fitted at the
   // next frame() into the region left free (from farther away, as the region is narrower than
@@ -31,6 +32,11 @@ class ViewCamera {
   void frame_next() {
     frame_pending_ = true;
     fit_scene_camera_ = false;
+  }
+  // F: a framing of the shape as it is now, without --camera-zoom.
+  void frame_shape() {
+    frame_next();
+    zoom_framing_ = false;
   }
   // A framing (or the scene's own view) waits for the next frame().
   bool framing_pending() const { return frame_pending_; }
@@ -47,11 +53,28 @@ class ViewCamera {
   void zoom(float wheel);
 
   const OrbitCamera& camera() const { return camera_; }
+
+  // The view as the command line's angles and zoom give it back (the page's Copy link): the
+  // angles (degrees, yaw in (-180, 180]), how many times nearer than the last framing the camera
+  // is, and the scene's own angles, as it opens without --camera-yaw and --camera-pitch.
+  // `panned`: the target moved since the framing, which the angles and zoom do not carry.
+  struct Angles {
+    double yaw_degrees = 0.0, pitch_degrees = 0.0, zoom = 1.0;
+    double scene_yaw_degrees = 0.0, scene_pitch_degrees = 0.0;
+    bool panned = false;
+  };
+  Angles angles() const;
   const CameraLimits& limits() const { return limits_; }
 
  private:
+  void framed();  // after a framing: remembered, and the opening view's zoom
   OrbitCamera camera_;
   std::optional<float> start_yaw_, start_pitch_;  // radians, from the command line
+  float start_zoom_ = 1.0f;                       // times nearer than the framing
+  bool zoom_framing_ = true;      // the next framings are the opening view's: start_zoom_ nearer
+  float framed_distance_ = 0.0f;  // the last framing's distance and target, before the zoom
+  Eigen::Vector3f framed_target_ = Eigen::Vector3f::Zero();
+  float scene_yaw_ = 0.0f, scene_pitch_ = 0.0f;  // the scene's own angles (radians)
   bool frame_pending_ = true;
   bool fit_scene_camera_ = false;  // the pending framing is the scene's own view, fitted
   // The view the scene opened with: its own camera, or the angles it was framed from.

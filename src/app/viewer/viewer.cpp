@@ -52,13 +52,15 @@ ViewerSettings viewer_settings(const CommandLine& command) {
   if (command.camera_pitch) {
     settings.camera_pitch_degrees = static_cast<float>(*command.camera_pitch);
   }
+  if (command.camera_zoom) settings.camera_zoom = static_cast<float>(*command.camera_zoom);
   return settings;
 }
 
 Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::string> scene_sources)
     : scene_sources_(std::move(scene_sources)),
       scene_source_(settings.scene_source),
-      view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees)),
+      view_camera_(radians(settings.camera_yaw_degrees), radians(settings.camera_pitch_degrees),
+                   settings.camera_zoom),
       right_(settings.student_server) {
   for (const std::string& source : scene_sources_) {
     scene_labels_.push_back(scene_label(source));
@@ -85,20 +87,30 @@ Viewer::Viewer(Scene scene, const ViewerSettings& settings, std::vector<std::str
 Viewer::~Viewer() = default;
 
 bool Viewer::open_file(const std::string& path, const std::string& hidden_folder) {
+  // What is said of a dropped file names it without the folder the page put the dropped files
+  // in: the user dropped "banner.json", not "/opened/2/a/b/c/banner.json".
+  const auto as_dropped = [&hidden_folder](std::string text) {
+    const std::string folder = hidden_folder + "/";
+    for (std::size_t at = hidden_folder.empty() ? std::string::npos : text.find(folder);
+         at != std::string::npos; at = text.find(folder, at))
+      text.erase(at, folder.size());
+    return text;
+  };
   try {
-    load(load_scene(path, false, missing_texture_));
+    Scene scene = load_scene(path, false, missing_texture_);
+    for (std::string& note : scene.notes)
+      note = as_dropped(note);
+    const std::vector<std::string> notes = scene.notes;
+    load(std::move(scene));
     scene_source_ = path;
+    // A file's notes (a texture that did not come with it, drawn untextured) on screen too, as
+    // the command line prints them: the panel's notes are out of sight below its sections.
+    for (const std::string& note : notes)
+      notices_.post(note, notice_clock());
     return true;
   } catch (const std::exception& error) {
-    // In the notes, and on screen (a dropped file's reason would otherwise go unseen), without
-    // the folder the page put the dropped files in: the user dropped "banner.json", not
-    // "/opened/2/a/b/c/banner.json".
-    std::string why = error.what();
-    const std::string folder = hidden_folder + "/";
-    for (std::size_t at = hidden_folder.empty() ? std::string::npos : why.find(folder);
-         at != std::string::npos; at = why.find(folder, at))
-      why.erase(at, folder.size());
-    tell(why);
+    // In the notes, and on screen (a dropped file's reason would otherwise go unseen).
+    tell(as_dropped(error.what()));
     return false;
   }
 }

@@ -41,6 +41,7 @@ struct ViewerSettings {
   SettingsOverrides settings;
   ViewLayers layers;
   std::optional<float> camera_yaw_degrees, camera_pitch_degrees;
+  float camera_zoom = 1.0f;         // times nearer than the framing (--camera-zoom)
   std::vector<ScriptedDrag> drags;  // applied to the first scene, from frame 1
   ColorQuantity color_by = ColorQuantity::material;
   std::optional<CompareSettings> compare;  // open in the split view with this right side
@@ -188,9 +189,12 @@ class Viewer {
   // The colours the last advance() computed (empty while coloured by material).
   const QuantityColors& quantity_colors() const { return quantity_colors_; }
   // Draw into the bound framebuffer. `window_size` is in the units of the mouse events;
-  // `pixel_ratio` is framebuffer pixels per window unit.
+  // `pixel_ratio` is framebuffer pixels per window unit; `mark_scale` is framebuffer pixels per
+  // pixel of a mark's size (pin dots, the held vertex, bands of springs): the pixel ratio where
+  // window units are the screen's points (unset: `pixel_ratio`), the page's device pixel ratio
+  // in the page.
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
-              float pixel_ratio);
+              float pixel_ratio, std::optional<float> mark_scale = std::nullopt);
 
   // Keep the simulation recording its convergence whether or not the plot shows it (for
   // --convergence-csv), through scene changes too.
@@ -219,6 +223,8 @@ class Viewer {
   bool panel_shown() const { return show_panel_; }
   // Shown and not folded to its title bar, when it was last drawn.
   bool panel_open() const { return show_panel_ && panel_place_.shown; }
+  // Where build_ui last drew the panel (window units); not shown when hidden or folded.
+  PanelPlace panel_place() const { return show_panel_ ? panel_place_ : PanelPlace(); }
   // #V by 3 positions as the last render() drew them (a paused drag draws the held vertex at its
   // target).
   const std::vector<float>& drawn_positions() const { return positions_; }
@@ -237,6 +243,11 @@ class Viewer {
   // picker's sources name them, or a file opened or dropped); empty when not known.
   const std::string& scene_source() const { return scene_source_; }
   const OrbitCamera& camera() const { return view_camera_.camera(); }
+  // The camera as the command line's angles and zoom give it back (the page's Copy link).
+  ViewCamera::Angles camera_angles() const { return view_camera_.angles(); }
+  // A scene without faces, which shows its springs and points unasked; the plots open.
+  bool faceless() const { return faceless_; }
+  bool plots_open() const { return instruments_.column_open(); }
   // How far the mouse may take the camera, for this scene's shape and ground.
   const CameraLimits& camera_limits() const { return view_camera_.limits(); }
   // Panel figures that do not come from the wall clock, as of the state drawn.

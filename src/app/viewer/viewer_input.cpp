@@ -112,7 +112,7 @@ void Viewer::apply(ViewerCommand command) {
       panel_.show_help = !panel_.show_help;
       break;
     case ViewerCommand::frame_mesh:
-      view_camera_.frame_next();
+      view_camera_.frame_shape();
       break;
     case ViewerCommand::default_view:
       view_camera_.restore_opening_view();

@@ -77,7 +77,9 @@ void Viewer::update_vertex_arrays() {
 }
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
-                    const Eigen::Vector2f& window_size, float pixel_ratio) {
+                    const Eigen::Vector2f& window_size, float pixel_ratio,
+                    std::optional<float> mark_scale_given) {
+  const float mark_scale = mark_scale_given.value_or(pixel_ratio);
   // Split, each side gets half of what the panel and the plots leave, under the same camera.
   const SplitArea area = split_area(window_size.x());
   const int left_x =
@@ -142,10 +144,10 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
     // The strips the two sides leave (under the panel and the plots) get the background alone.
     renderer_->draw(view_, projection_, camera_eye(camera),
                     ViewLayers{false, false, false, false, false, false}, framebuffer_width,
-                    framebuffer_height, pixel_ratio);
+                    framebuffer_height, mark_scale);
   }
   renderer_->draw(view_, projection_, camera_eye(camera), layers(), left_width, framebuffer_height,
-                  pixel_ratio, left_x);
+                  mark_scale, left_x);
   if (!right_.simulation()) return;
   frame.positions = twin_positions_.data();
   frame.normals = twin_normals_.data();
@@ -156,7 +158,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   renderer_->update(frame);
   renderer_->draw(view_, projection_, camera_eye(camera), layers(),
                   std::min(left_width, framebuffer_width - left_x - left_width), framebuffer_height,
-                  pixel_ratio, left_x + left_width);
+                  mark_scale, left_x + left_width);
 }
 
 ViewLayers Viewer::layers() const {

@@ -36,9 +36,9 @@ std::string decode(const std::string& text) {
 // The command line's options an address may give: settings and the view, never an option that
 // writes files or starts a process.
 const std::vector<std::string> address_value_options = {
-    "k",          "dt",           "iterations", "frames",
-    "solver",     "damping",      "friction",   "self-collision-thickness",
-    "camera-yaw", "camera-pitch", "color-by"};
+    "k",          "dt",           "iterations",  "frames",
+    "solver",     "damping",      "friction",    "self-collision-thickness",
+    "camera-yaw", "camera-pitch", "camera-zoom", "color-by"};
 const std::vector<std::string> address_switches = {
     "plots", "chebyshev", "wind", "self-collision", "wireframe", "springs", "points"};
 
@@ -75,6 +75,17 @@ std::string exact_number(double value) {
   return text.str();
 }
 
+// An angle to a hundredth of a degree, without trailing zeros: "47.35", "-20", "0".
+std::string hundredths(double value) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(2) << value;
+  std::string shown = text.str();
+  while (shown.back() == '0')
+    shown.pop_back();
+  if (shown.back() == '.') shown.pop_back();
+  return shown == "-0" ? "0" : shown;
+}
+
 std::string encode(const std::string& text) {
   static const char hex[] = "0123456789ABCDEF";
   std::string encoded;
@@ -93,7 +104,7 @@ std::string encode(const std::string& text) {
 }  // namespace
 
 std::string page_link_query(const std::string& scene_label, const SimulationParams& opened,
-                            const SimulationParams& current) {
+                            const SimulationParams& current, const PageView& view) {
   std::string query = "?scene=" + encode(scene_label);
   const auto number = [&](const char* key, double was, double is) {
     if (is != was) query += std::string("&") + key + "=" + exact_number(is);
@@ -115,12 +126,43 @@ std::string page_link_query(const std::string& scene_label, const SimulationPara
   for (const SettingSpec& spec : added_settings()) {
     number(spec.name.c_str(), setting_value(opened, spec.name), setting_value(current, spec.name));
   }
+  // The view: the colour, the switches on, the camera.
+  if (view.color_by != ColorQuantity::material) {
+    query += std::string("&color-by=") + color_quantity_name(view.color_by);
+  }
+  on("wireframe", false, view.wireframe);
+  on("springs", view.faceless, view.springs);
+  on("points", view.faceless, view.points);
+  on("plots", false, view.plots);
+  const std::string yaw = hundredths(view.yaw_degrees), pitch = hundredths(view.pitch_degrees);
+  if (yaw != hundredths(view.scene_yaw_degrees)) query += "&camera-yaw=" + yaw;
+  if (pitch != hundredths(view.scene_pitch_degrees)) query += "&camera-pitch=" + pitch;
+  std::ostringstream zoom;
+  zoom << std::setprecision(4) << view.zoom;
+  if (std::isfinite(view.zoom) && view.zoom > 0.0 && zoom.str() != "1")
+    query += "&camera-zoom=" + zoom.str();
   return query;
 }
 
+std::string page_link_keys(const std::string& query) {
+  std::string keys;
+  std::size_t start = !query.empty() && query[0] == '?' ? 1 : 0;
+  while (start < query.size()) {
+    std::size_t end = query.find('&', start);
+    if (end == std::string::npos) end = query.size();
+    const std::string pair = query.substr(start, end - start);
+    if (!pair.empty()) keys += (keys.empty() ? "" : ", ") + pair.substr(0, pair.find('='));
+    start = end + 1;
+  }
+  return keys;
+}
+
 std::vector<std::string> page_link_losses(const SimulationParams& opened,
-                                          const SimulationParams& current) {
+                                          const SimulationParams& current, const PageView& view) {
   std::vector<std::string> lost;
+  if (view.faceless && !view.springs) lost.push_back("the springs off");
+  if (view.faceless && !view.points) lost.push_back("the points off");
+  if (view.panned) lost.push_back("the camera's pan");
   if (opened.chebyshev && !current.chebyshev) lost.push_back("Chebyshev off");
   if (opened.wind.on && !current.wind.on) lost.push_back("the wind off");
   if (opened.self_collision.on && !current.self_collision.on) lost.push_back("self-collision off");

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/color_quantity.h"
 #include "sim/simulation_params.h"
 
 namespace wobble {
@@ -40,15 +41,36 @@ PageRequest read_page_address(const std::string& query, const std::vector<std::s
 // of a notch), lines (3 a notch) or pages (one a notch), by `delta_mode` 0, 1 or 2.
 double page_wheel_notches(double delta_y, unsigned long delta_mode);
 
+// The view a link carries besides the settings: the colour, the layers and plots switched on,
+// and the camera, as ViewCamera::angles gives it (angles in degrees; the scene's own angles, as
+// an address without camera keys opens it; times nearer than the framing; whether it was
+// panned). The defaults are the view every scene opens with. `faceless`: a scene without faces,
+// which shows its springs and points unasked.
+struct PageView {
+  ColorQuantity color_by = ColorQuantity::material;
+  bool wireframe = false, springs = false, points = false, plots = false;
+  bool faceless = false;
+  double yaw_degrees = 0.0, pitch_degrees = 0.0, zoom = 1.0;
+  double scene_yaw_degrees = 0.0, scene_pitch_degrees = 0.0;
+  bool panned = false;
+};
+
 // The page's "Copy link": the query that opens the scene picker's `scene_label` with `current`'s
 // settings, each that differs from `opened` (the scene's own, as an address without keys opens
-// it), in the keys read_page_address reads; numbers in the fewest digits that read back exactly.
+// it), and `view`'s colour, switches and camera where they differ from the scene's own view
+// (color-by, wireframe, springs, points, plots, camera-yaw, camera-pitch and camera-zoom), in the
+// keys read_page_address reads; settings in the fewest digits that read back exactly, angles to
+// a hundredth of a degree, the zoom to four digits.
 std::string page_link_query(const std::string& scene_label, const SimulationParams& opened,
-                            const SimulationParams& current);
-// What such a link cannot carry (an address only turns switches on; gravity has no key), in
-// words, for the page to say: empty when the link reproduces `current` whole.
+                            const SimulationParams& current, const PageView& view = {});
+// What such a link cannot carry (an address only turns switches on; gravity has no key; the
+// camera's pan), in words, for the page to say: empty when the link reproduces `current` and
+// `view` whole.
 std::vector<std::string> page_link_losses(const SimulationParams& opened,
-                                          const SimulationParams& current);
+                                          const SimulationParams& current,
+                                          const PageView& view = {});
+// The keys of a link's query, in words for the page's notice: "scene, k, color-by, springs".
+std::string page_link_keys(const std::string& query);
 
 // Whether the address asks for the step benchmark (`bench` among its keys): the page then first
 // takes `frames` steps of the scene without drawing (step_positions.h) and leaves their median

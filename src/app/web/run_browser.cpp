@@ -7,6 +7,7 @@
 #include <emscripten.h>
 #include <emscripten/html5.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the hovered window, which a finger's swipe scrolls
 
 #include <algorithm>
 #include <cmath>
@@ -76,6 +77,7 @@ class PageHost : public FrameHost {
     ui_.rescale(page_pixel_ratio());
     follow_page_size(window_, ui_.scale());
     std::vector<InputEvent> events = window_.poll_events();
+    scroll_under_finger();
     // The wheel, read by on_wheel from the browser's own event, in notches: to the camera and
     // to ImGui's panel (before its new frame) alike.
     for (const double notches : wheel_) {
@@ -98,6 +100,10 @@ class PageHost : public FrameHost {
   void wheel(double notches) {
     if (notches != 0.0) wheel_.push_back(notches);
   }
+  // A finger's swipe on the panel, `pixels` (CSS) up: its list scrolls as far, under the finger.
+  void swipe_panel(double pixels) {
+    if (std::isfinite(pixels)) panel_swipe_ += static_cast<float>(pixels) * scale();
+  }
   // Two fingers' spread grown `ratio` times: the camera that much nearer, as the wheel zooms
   // (1.15 times a notch, ViewCamera), but not over the panel.
   void pinch(double ratio) {
@@ -119,6 +125,8 @@ class PageHost : public FrameHost {
     return paths;
   }
   float scale() const { return ui_.scale(); }
+  // The window's units are device pixels here: marks are scaled by the device pixel ratio.
+  float mark_scale(float /*pixel_ratio*/) const override { return ui_.scale(); }
   double now() const override { return seconds_now(); }
   void sizes(int& width, int& height, Eigen::Vector2f& window) override {
     window_.window_size(width, height);
@@ -165,13 +173,46 @@ class PageHost : public FrameHost {
         },
         static_cast<double>(viewer.camera().distance), static_cast<double>(viewer.camera().yaw),
         static_cast<double>(scale()), viewer.scene().name.c_str(), viewer.panel_open() ? 1 : 0);
+    // The notices on screen, one a line, as the user reads them over the view.
+    std::string shown;
+    for (const std::string& notice : viewer.notices().shown(notice_clock()))
+      shown += (shown.empty() ? "" : "\n") + notice;
+    EM_ASM({ Module.wobbleNotices = UTF8ToString($0); }, shown.c_str());
+    // Where the open panel is, in CSS pixels, for index.html's fingers (null while folded).
+    const PanelPlace place = viewer.panel_open() ? viewer.panel_place() : PanelPlace();
+    EM_ASM(
+        {
+          Module.wobblePanelRect = $0 ? Array($1, $2, $3, $4) : null;
+          Module.wobblePanelScroll = $5;
+        },
+        place.shown ? 1 : 0, place.x / scale(), place.y / scale(), place.width / scale(),
+        place.height / scale(), static_cast<double>(panel_list_scroll()));
   }
   long frames_drawn() const { return frames_drawn_; }
+  // How far the window under the pointer that scrolls is scrolled (window units), for the tests.
+  static float panel_list_scroll() {
+    ImGuiWindow* window = ImGui::GetCurrentContext()->HoveredWindow;
+    while (window != nullptr && window->ScrollMax.y <= 0.0f)
+      window = window->ParentWindow;
+    return window != nullptr ? window->Scroll.y : 0.0f;
+  }
 
  private:
+  // The swipe since the last frame, to the window under the finger (the panel's list, or the
+  // panel), before ImGui's new frame; the first that scrolls, from the innermost out.
+  void scroll_under_finger() {
+    if (panel_swipe_ == 0.0f) return;
+    ImGuiWindow* window = ImGui::GetCurrentContext()->HoveredWindow;
+    while (window != nullptr && window->ScrollMax.y <= 0.0f)
+      window = window->ParentWindow;
+    if (window != nullptr) ImGui::SetScrollY(window, window->Scroll.y + panel_swipe_);
+    panel_swipe_ = 0.0f;
+  }
+
   GlfwWindow& window_;
   ImGuiSession& ui_;
   double pinch_notches_ = 0.0;
+  float panel_swipe_ = 0.0f;  // window units
   std::string title_;
   int width_ = 0, height_ = 0;
   long frames_drawn_ = 0;
@@ -279,14 +320,29 @@ void copy_link(BrowserApp& app) {
   }
   const SimulationParams opened = load_scene(source).params;
   const SimulationParams& current = app.viewer.simulation().params();
-  const std::string query = page_link_query(scene_label(source), opened, current);
+  PageView view;
+  view.color_by = app.viewer.color_by();
+  const ViewLayers layers = app.viewer.layers();
+  view.wireframe = layers.wireframe;
+  view.springs = layers.springs;
+  view.points = layers.points;
+  view.plots = app.viewer.plots_open();
+  view.faceless = app.viewer.faceless();
+  const ViewCamera::Angles angles = app.viewer.camera_angles();
+  view.yaw_degrees = angles.yaw_degrees;
+  view.pitch_degrees = angles.pitch_degrees;
+  view.zoom = angles.zoom;
+  view.scene_yaw_degrees = angles.scene_yaw_degrees;
+  view.scene_pitch_degrees = angles.scene_pitch_degrees;
+  view.panned = angles.panned;
+  const std::string query = page_link_query(scene_label(source), opened, current, view);
   // The query is percent-encoded: no quote or backslash reaches the script.
   const char* link =
       emscripten_run_script_string(("Module.wobbleCopyLink('" + query + "')").c_str());
   const bool copied = EM_ASM_INT({ return navigator.clipboard && window.isSecureContext ? 1 : 0; });
   std::string told = std::string(copied ? "link copied: " : "link (this page cannot copy): ") +
-                     (link != nullptr ? link : query);
-  const std::vector<std::string> lost = page_link_losses(opened, current);
+                     (link != nullptr ? link : query) + "; it keeps " + page_link_keys(query);
+  const std::vector<std::string> lost = page_link_losses(opened, current, view);
   for (std::size_t i = 0; i < lost.size(); ++i)
     told += (i == 0 ? " (an address cannot carry " : ", ") + lost[i] +
             (i + 1 == lost.size() ? ")" : "");
@@ -310,6 +366,9 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
   fill_missing_gl_functions();
   app->ui = std::make_unique<ImGuiSession>(app->window->handle(), page_pixel_ratio());
   app->host = std::make_unique<PageHost>(*app->window, *app->ui);
+  // The panel moves by its title bar only: a finger's sideways drag on it (index.html) drags a
+  // slider, never the panel.
+  ImGui::GetIO().ConfigWindowsMoveFromTitleBarOnly = true;
   // The wheel from the browser's event, which says its unit; GLFW's path (ImGui's and the
   // window's callbacks) is turned off.
   glfwSetScrollCallback(app->window->handle(), nullptr);
@@ -355,6 +414,12 @@ extern "C" EMSCRIPTEN_KEEPALIVE void wobble_report_positions() {
   }
   out << "]}";
   EM_ASM({ Module.wobblePositions = UTF8ToString($0); }, out.str().c_str());
+}
+
+// The page's swipe on the panel (index.html): the finger `pixels` (CSS) farther up.
+extern "C" EMSCRIPTEN_KEEPALIVE void wobble_scroll_panel(double pixels) {
+  if (wobble::the_app != nullptr && wobble::the_app->host)
+    wobble::the_app->host->swipe_panel(pixels);
 }
 
 // The page's pinch (index.html): the fingers' spread grown `ratio` times since the last call.
