@@ -33,8 +33,9 @@ void refuse_unknown_scene_keys(const std::string& path, const nlohmann::json& ob
     } else if (generator == "jelly") {
       mesh->allow_only({"generator", "resolution", "size", "offset"}, "a jelly generator's mesh");
     } else if (generator.is_null() && mesh->has("file")) {
-      mesh->allow_only({"file", "fill", "fill_resolution", "polygon_springs", "scale", "offset"},
-                       "a mesh read from a file");
+      mesh->allow_only(
+          {"file", "fill", "fill_resolution", "polygon_springs", "tetrahedra", "scale", "offset"},
+          "a mesh read from a file");
     }
   }
   if (std::optional<JsonFields> material = child(top, "material")) {

@@ -18,6 +18,7 @@
 #include "sim/settings/setting_registry.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/shapes/jelly_block.h"
+#include "sim/shapes/tet_mesh.h"
 #include "sim/solver/solver_registry.h"
 #include "sim/value_limits.h"
 
@@ -128,6 +129,31 @@ std::string scene_solver(JsonFields& simulation) {
   simulation.fail("solver", expected);
 }
 
+// "tetrahedra": [[a, b, c, d], ...], 0-based indices into the mesh's vertices V, none flat (as a
+// saved scene writes a solid's, beside its OBJ).
+Eigen::MatrixXi tetrahedra_of(JsonFields& mesh, const Eigen::MatrixXd& V) {
+  const nlohmann::json& list = mesh.raw("tetrahedra");
+  const std::string expected = "a list of [a, b, c, d]: four distinct vertex indices from 0 to " +
+                               std::to_string(V.rows() - 1) + ", not flat";
+  if (!list.is_array() || list.empty()) mesh.fail("tetrahedra", expected);
+  Eigen::MatrixXi T(static_cast<Eigen::Index>(list.size()), 4);
+  for (std::size_t t = 0; t < list.size(); ++t) {
+    const nlohmann::json& row = list[t];
+    const std::string key = "tetrahedra[" + std::to_string(t) + "]";
+    if (!row.is_array() || row.size() != 4) mesh.fail(key, expected);
+    for (int c = 0; c < 4; ++c) {
+      if (!row[c].is_number_integer() || row[c].get<long long>() < 0 ||
+          row[c].get<long long>() >= V.rows()) {
+        mesh.fail(key, expected);
+      }
+      T(static_cast<Eigen::Index>(t), c) = row[c].get<int>();
+    }
+    const auto corner = [&](int c) -> Eigen::Vector3d { return V.row(T(t, c)).transpose(); };
+    if (tetrahedron_is_flat(corner(0), corner(1), corner(2), corner(3))) mesh.fail(key, expected);
+  }
+  return T;
+}
+
 Shape file_shape(const std::string& path, JsonFields& mesh) {
   const std::string file = relative_to(path, *mesh.text("file"));
   const std::string problem = mesh_file_problem(file);
@@ -145,6 +171,10 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   const Eigen::Vector3d offset =
       mesh.vector3_in("offset", limits::coordinate).value_or(Eigen::Vector3d::Zero());
   SpringNetwork& network = shape.mesh.network;
+  if (mesh.has("tetrahedra")) {
+    if (polygon_springs) mesh.fail("tetrahedra", "to come with \"polygon_springs\": false");
+    network.T = tetrahedra_of(mesh, network.V);
+  }
   network.V = ((network.V * scale).rowwise() + offset.transpose()).eval();
   if (shape.mesh.kind == LoadedMesh::Kind::surface) network.m *= scale * scale;
   if (shape.mesh.kind == LoadedMesh::Kind::volume) network.m *= scale * scale * scale;

@@ -151,6 +151,15 @@ nlohmann::json wobble_scene_json(const Scene& scene, const std::string& mesh_fil
                  {"pins", std::set<int>(scene.pins.begin(), scene.pins.end())},
                  {"material", std::move(material)},
                  {"simulation", simulation_json(params)}};
+  // A solid's tetrahedra (its volume term's), which the OBJ does not hold.
+  if (scene.network.T.rows() > 0) {
+    json tetrahedra = json::array();
+    for (Eigen::Index t = 0; t < scene.network.T.rows(); ++t) {
+      tetrahedra.push_back({scene.network.T(t, 0), scene.network.T(t, 1), scene.network.T(t, 2),
+                            scene.network.T(t, 3)});
+    }
+    object["mesh"]["tetrahedra"] = std::move(tetrahedra);
+  }
   json colliders = json::array();
   for (const Collider& collider : params.contact.colliders)
     colliders.push_back(collider_json(collider));

@@ -223,6 +223,7 @@ constexpr float drag_speed_iterations = 0.2f;
 // The added settings' sliders, each label followed by `suffix` (" right" for the right side).
 void draw_added_sliders(std::vector<AddedSlider>& sliders, const char* suffix) {
   for (AddedSlider& slider : sliders) {
+    if (!slider.shown) continue;
     const std::string label =
         slider.label + (slider.unit.empty() ? "" : " (" + slider.unit + ")") + suffix;
     if (slider.log_scale) {

@@ -81,6 +81,7 @@ struct AddedSlider {
   float low = 0.0f, high = 1.0f;
   bool log_scale = false;  // moves by a factor a pixel (low > 0)
   float value = 0.0f;
+  bool shown = true;  // false: it does nothing for the scene shown (a solid's setting on cloth)
 };
 
 // What one side of the view steps with: the left side's in SimulationSettings, the right side's

@@ -21,6 +21,7 @@
 #include "sim/simulation.h"
 #include "solve_cost.h"
 #include "solver_race.h"
+#include "volume_cost.h"
 
 namespace {
 
@@ -192,6 +193,7 @@ int main(int argc, char** argv) {
   };
   static constexpr Part parts[] = {
       {"--contact", wobble::benchmark::print_contact_cost},
+      {"--volume", wobble::benchmark::print_volume_cost},
       {"--solvers", wobble::benchmark::print_solver_race},
       {"--self-collision-settling", wobble::benchmark::print_self_collision_settling},
       {"--self-collision-landing", wobble::benchmark::print_self_collision_landing},
@@ -232,6 +234,7 @@ int main(int argc, char** argv) {
   wobble::benchmark::print_solve_cost();
   wobble::benchmark::print_chebyshev_curve(wobble::benchmark::benchmark_scenes().front());
   wobble::benchmark::print_contact_cost();
+  wobble::benchmark::print_volume_cost();
   wobble::benchmark::print_self_collision_cost();
   wobble::benchmark::print_instruments_cost();
   wobble::benchmark::print_quantity_colors_cost();

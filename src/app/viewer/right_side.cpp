@@ -46,7 +46,7 @@ void RightSide::start_compare(const Scene& scene, const Simulation& left,
   samples_ = RightSideSamples();
   sync(left);
   panel_.split = true;
-  show_settings(simulation_->params(), panel_.right);
+  show_settings(simulation_->params(), panel_.right, scene.network.T.rows() > 0);
 }
 
 void RightSide::start_student(const Scene& scene, const Simulation& left) {

@@ -17,7 +17,7 @@ double taken(double value, float shown) {
 
 }  // namespace
 
-void show_settings(const SimulationParams& params, SideSliders& sliders) {
+void show_settings(const SimulationParams& params, SideSliders& sliders, bool solid) {
   sliders.k = static_cast<float>(params.k);
   sliders.dt = static_cast<float>(params.dt);
   sliders.iterations = params.iterations;
@@ -32,6 +32,7 @@ void show_settings(const SimulationParams& params, SideSliders& sliders) {
     slider.high = static_cast<float>(spec.range.high);
     slider.log_scale = spec.log_scale;
     slider.value = static_cast<float>(setting_value(params, spec.name));
+    slider.shown = solid || !spec.solids_only;
     sliders.added.push_back(slider);
   }
 }

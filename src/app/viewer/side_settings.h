@@ -11,8 +11,9 @@ namespace wobble {
 // left side and the split view's right side alike. No GL.
 
 // The sliders showing `params`: each built-in value, and one AddedSlider per added setting
-// (sim/settings/setting_registry.h), in their order.
-void show_settings(const SimulationParams& params, SideSliders& sliders);
+// (sim/settings/setting_registry.h), in their order; a setting for solids alone is hidden unless
+// `solid` (the scene's network has tetrahedra).
+void show_settings(const SimulationParams& params, SideSliders& sliders, bool solid = false);
 
 // `params` with the sliders' values in place of its own, ready for Simulation::apply. A value
 // whose float the slider still shows is kept as it is (the slider holds 1/60 s as the float

@@ -183,7 +183,7 @@ void Viewer::load(Scene scene) {
   }
   panel_.scene = static_cast<int>(
       std::find(scene_labels_.begin(), scene_labels_.end(), scene_.name) - scene_labels_.begin());
-  show_settings(scene_.params, panel_);
+  show_settings(scene_.params, panel_, scene_.network.T.rows() > 0);
   panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
   show_environment_in_panel();
 

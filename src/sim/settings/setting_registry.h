@@ -35,6 +35,8 @@ struct SettingSpec {
   double default_value = 0.0;
   SettingCost cost = SettingCost::terms;
   bool log_scale = false;  // the panel's slider moves on a logarithmic scale (range.low > 0)
+  // It acts only on a network with tetrahedra (SpringNetwork::T): the panel shows it only there.
+  bool solids_only = false;
 };
 
 // Registers a setting, as one line at namespace scope of its own file:

@@ -19,7 +19,9 @@ const SettingRegistration volume_stiffness{
      "rest shape (0: off)",
      {0.0, 1e7, "Pa"},
      0.0,
-     SettingCost::refactorize}};
+     SettingCost::refactorize,
+     false,
+     true}};
 
 // A fixed count of pieces, so that the order of every sum is the same for any thread count.
 constexpr int pieces = 16;
@@ -136,8 +138,8 @@ Eigen::Matrix3d VolumeTerm::deformation(const Eigen::MatrixXd& p, Eigen::Index t
   return X * G;
 }
 
-void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance,
-                            bool gradient) const {
+void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool gradient,
+                            bool energy) const {
   const auto tets = [&](Eigen::Index begin, Eigen::Index end) {
     for (Eigen::Index t = begin; t < end; ++t) {
       const Eigen::Matrix3d F = deformation(p, t);
@@ -146,7 +148,7 @@ void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance
       for (int update = 0; update < most; ++update) {
         if (!(turn_toward(F, R, q) > tolerance)) break;
       }
-      energy_(t) = 0.5 * weight_(t) * (F - R).squaredNorm();
+      if (energy) energy_(t) = 0.5 * weight_(t) * (F - R).squaredNorm();
       // The pull w v G Rᵀ of the right-hand side, or the gradient w v G (F − R)ᵀ.
       const Eigen::Matrix3d toward = gradient ? Eigen::Matrix3d(F - R) : R;
       const Eigen::Matrix<double, 4, 3> pull = weight_(t) * (G_[t] * toward.transpose());
@@ -171,7 +173,7 @@ void VolumeTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd&
                              Eigen::MatrixXd& rhs, double* energy) {
   // One update of each rotation an iteration: warm-started from the last iteration's, the
   // rotations converge along with the iterations.
-  local_step(p, 1, 0.0, /*gradient=*/false);
+  local_step(p, 1, 0.0, /*gradient=*/false, /*energy=*/energy != nullptr);
   const Eigen::Index n = rhs.rows();
   for (Eigen::Index i = 0; i < n; ++i) {
     for (int s = incident_start_[i]; s < incident_start_[i + 1]; ++s) {
@@ -186,7 +188,7 @@ void VolumeTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd&
 
 double VolumeTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                               Eigen::MatrixXd* gradient) const {
-  local_step(p, 20, 1e-12, /*gradient=*/true);
+  local_step(p, 20, 1e-12, /*gradient=*/true, /*energy=*/true);
   if (gradient) {
     for (Eigen::Index i = 0; i < gradient->rows(); ++i) {
       for (int s = incident_start_[i]; s < incident_start_[i + 1]; ++s) {

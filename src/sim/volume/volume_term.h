@@ -51,12 +51,15 @@ class VolumeTerm : public StepTerm {
   // The tetrahedra inverted (det F ≤ 0) at the end of the last step.
   long inverted() const { return inverted_; }
   // Below this many tetrahedra the local step runs on the calling thread alone.
-  static constexpr long min_tets_for_threads = 4096;
+  // (A tetrahedron's update costs about as much as a dozen springs' local step: the pool's
+  // payoff measure decides from there whether sharing pays.)
+  static constexpr long min_tets_for_threads = 256;
 
  private:
-  // Each tetrahedron's pull (into pull_) and, if `energy`, its energy (into energy_); the
-  // rotations are found with `most` updates from the last ones.
-  void local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool energy) const;
+  // Each tetrahedron's pull (into pull_), or its gradient if `gradient`, and, if `energy`, its
+  // energy (into energy_); the rotations are found with `most` updates from the last ones.
+  void local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool gradient,
+                  bool energy) const;
   Eigen::Matrix3d deformation(const Eigen::MatrixXd& p, Eigen::Index t) const;
 
   Eigen::MatrixXi T_;
