@@ -316,6 +316,10 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
       {R"({"mesh": {"file": ")" + std::string(WOBBLE_ASSETS_DIR) +
            R"(/meshes/jelly_cube.mesh", "polygon_springs": false}})",
        "mesh.polygon_springs: expected true (false applies to an unfilled .obj only)"},
+      // A saved solid's tetrahedra: with the saved form of an OBJ only, each in range, none flat.
+      {R"({"mesh": {"file": ")" + std::string(WOBBLE_ASSETS_DIR) +
+           R"(/meshes/blob.obj", "tetrahedra": [[0, 1, 2, 3]]}})",
+       "mesh.tetrahedra: expected to come with \"polygon_springs\": false"},
   };
   for (const auto& [json, expected] : cases) {
     const std::string message = scene_error(json);
@@ -323,6 +327,43 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
     EXPECT_NE(message.find(expected), std::string::npos) << json << " -> " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
+}
+
+// A saved solid's tetrahedra (mesh.tetrahedra, beside an OBJ of its springs): kept as written,
+// and each refused by its index when out of range or flat.
+TEST(WobbleScene, TetrahedraBesideASavedObj) {
+  TemporaryFolder folder;
+  std::ofstream(folder.file("solid.obj"))
+      << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 1 1 1\n"
+         "f 1 2\nf 1 3\nf 1 4\nf 2 3\nf 2 4\nf 3 4\nf 2 5\nf 3 5\nf 4 5\n";
+  const auto scene_with = [](const std::string& tetrahedra) {
+    return R"({"mesh": {"file": "solid.obj", "polygon_springs": false, "tetrahedra": )" +
+           tetrahedra + "}}";
+  };
+  const wobble::Scene solid = load(folder, scene_with("[[0, 1, 2, 3], [1, 2, 3, 4]]"));
+  ASSERT_EQ(solid.network.T.rows(), 2);
+  EXPECT_EQ(solid.network.T(1, 3), 4);
+  const std::pair<std::string, std::string> cases[] = {
+      {"[[0, 1, 2, 5]]",
+       "mesh.tetrahedra[0]: expected a list of [a, b, c, d]: four distinct "
+       "vertex indices from 0 to 4, not flat"},
+      {"[[0, 1, 2, 3], [1, 1, 2, 3]]", "mesh.tetrahedra[1]: expected"},
+      {"[[0, 1, 2, -1]]", "mesh.tetrahedra[0]: expected"},
+      {"3", "mesh.tetrahedra: expected"},
+  };
+  for (const auto& [tetrahedra, expected] : cases) {
+    std::string message = "(no error)";
+    try {
+      load(folder, scene_with(tetrahedra));
+    } catch (const wobble::InputError& error) {
+      message = error.what();
+    }
+    EXPECT_NE(message.find("scene.json: " + expected), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  std::ofstream(folder.file("scene.json"))
+      << R"({"mesh": {"file": "solid.obj", "tetrahedra": [[0, 1, 2, 3]]}})";
+  EXPECT_THROW(wobble::load_scene(folder.file("scene.json")), wobble::InputError);
 }
 
 TEST(WobbleScene, MalformedJsonGivesTheLine) {
