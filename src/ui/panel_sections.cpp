@@ -311,7 +311,7 @@ void draw_view_section(ViewSettings& settings) {
   ImGui::Checkbox("springs", &settings.springs);
   ImGui::SameLine();
   ImGui::Checkbox("points", &settings.points);
-  const char* const color_names[] = {"material", "strain", "speed", "contacts"};
+  const char* const color_names[] = {"material", "strain", "speed", "contacts", "volume"};
   ImGui::Combo("colour by", &settings.color_by, color_names, IM_ARRAYSIZE(color_names));
   // Dragged like every other number, 0.01 a pixel: a slider jumped to where the click landed.
   ImGui::DragFloat("UI scale", &settings.ui_scale, 0.01f, ViewSettings::min_ui_scale,

@@ -64,6 +64,36 @@ TEST(ColorByRender, StrainReplacesTheMaterialAndTheLegendSitsAtTheBottomRight) {
   EXPECT_EQ(differences(material, strain, 0, image_height - 100, image_width / 2, image_height), 0);
 }
 
+// The jelly coloured by volume change while its top is pushed in: where the drag squashes it the
+// block shows the diverging map's blue, which neither its green material nor the neutral colour
+// has (counted above the legend, whose own scale holds blue).
+TEST(ColorByRender, VolumeShowsASquashedJellyBlue) {
+  TemporaryFolder folder;
+  const auto jelly = [&](const std::string& name, const std::string& options) {
+    const std::string image = folder.file(name);
+    const auto run = run_wobble(
+        "jelly --headless --frames 30 --width 640 --height 400 "
+        "--drag 688:0,-0.25,0@5-35 " +
+            options + " --screenshot '" + image + "'",
+        "DISPLAY= WAYLAND_DISPLAY=");
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return wobble::read_png(image);
+  };
+  const auto blue_above_legend = [](const wobble::RgbaImage& image) {
+    long count = 0;
+    for (int y = 0; y < image.height - 110; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        const unsigned char* p = image.pixel(x, y);
+        count += p[2] > p[0] + 60 && p[2] > p[1] + 30;
+      }
+    }
+    return count;
+  };
+  const long in_material = blue_above_legend(jelly("material.png", ""));
+  const long in_volume = blue_above_legend(jelly("volume.png", "--color-by volume"));
+  EXPECT_GT(in_volume, in_material + 300) << in_volume << " blue pixels against " << in_material;
+}
+
 TEST(ColorByRender, SpeedAndStrainDifferAndThePanelKeepsTheLegend) {
   TemporaryFolder folder;
   const wobble::RgbaImage material = render(folder, "material.png", "");

@@ -9,7 +9,7 @@ namespace wobble {
 // What the surface and springs are coloured by, in the order the V key cycles through and the
 // panel's combo lists them (PanelSettings::color_by is this as an int). A choice the command line
 // (--color-by) and the viewer share; the colours themselves are app/viewer/quantity_colors.h's.
-enum class ColorQuantity { material, strain, speed, contacts };
+enum class ColorQuantity { material, strain, speed, contacts, volume };
 
 inline ColorQuantity next_color_quantity(ColorQuantity quantity) {
   switch (quantity) {
@@ -20,12 +20,14 @@ inline ColorQuantity next_color_quantity(ColorQuantity quantity) {
     case ColorQuantity::speed:
       return ColorQuantity::contacts;
     case ColorQuantity::contacts:
+      return ColorQuantity::volume;
+    case ColorQuantity::volume:
       return ColorQuantity::material;
   }
   return ColorQuantity::material;
 }
 
-// "material", "strain", "speed", "contacts".
+// "material", "strain", "speed", "contacts", "volume".
 inline const char* color_quantity_name(ColorQuantity quantity) {
   switch (quantity) {
     case ColorQuantity::material:
@@ -36,14 +38,17 @@ inline const char* color_quantity_name(ColorQuantity quantity) {
       return "speed";
     case ColorQuantity::contacts:
       return "contacts";
+    case ColorQuantity::volume:
+      return "volume";
   }
   return "material";
 }
 
 // The quantity with that name, or nothing.
 inline std::optional<ColorQuantity> color_quantity_named(const std::string& name) {
-  for (ColorQuantity quantity : {ColorQuantity::material, ColorQuantity::strain,
-                                 ColorQuantity::speed, ColorQuantity::contacts}) {
+  for (ColorQuantity quantity :
+       {ColorQuantity::material, ColorQuantity::strain, ColorQuantity::speed,
+        ColorQuantity::contacts, ColorQuantity::volume}) {
     if (name == color_quantity_name(quantity)) return quantity;
   }
   return std::nullopt;

@@ -163,8 +163,9 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_flag("--springs", command.springs, "Start with the springs shown as lines");
   app.add_flag("--points", command.points, "Start with every vertex shown as a point");
   app.add_option("--color-by", color_by,
-                 "Colour the shape by spring strain, vertex speed or contacts, with a legend: "
-                 "material, strain, speed or contacts (default material; the V key cycles)");
+                 "Colour the shape by spring strain, vertex speed, contacts or a solid's volume "
+                 "change, with a legend: material, strain, speed, contacts or volume (default "
+                 "material; the V key cycles)");
   // Each added setting (sim/settings/setting_registry.h) as --NAME VALUE.
   std::vector<std::pair<std::string, std::optional<std::string>>> added;
   for (const SettingSpec& spec : added_settings())
@@ -298,7 +299,7 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (color_by) {
     const std::optional<ColorQuantity> quantity = color_quantity_named(*color_by);
     if (!quantity) {
-      throw InputError("--color-by: expected material, strain, speed or contacts, got '" +
+      throw InputError("--color-by: expected material, strain, speed, contacts or volume, got '" +
                        *color_by + "'");
     }
     command.color_by = *quantity;

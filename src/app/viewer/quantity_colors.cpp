@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/shapes/tet_mesh.h"
 #include "sim/simulation.h"
 
 namespace wobble {
@@ -119,6 +120,25 @@ Eigen::Vector3f sequential_color(float t) {
          3.0f * u * s * s * sequential_points[2] + s * s * s * sequential_points[3];
 }
 
+void vertex_volume_changes(const Eigen::MatrixXd& V, const Eigen::MatrixXd& rest,
+                           const Eigen::MatrixXi& T, Eigen::VectorXf& vertex_values,
+                           Eigen::VectorXf& counts) {
+  vertex_values.setZero(V.rows());
+  counts.setZero(V.rows());
+  for (Eigen::Index t = 0; t < T.rows(); ++t) {
+    const double before = tet_signed_volume(rest, T, t);
+    if (before == 0.0) continue;
+    const auto change = static_cast<float>(tet_signed_volume(V, T, t) / before - 1.0);
+    for (int c = 0; c < 4; ++c) {
+      vertex_values[T(t, c)] += change;
+      counts[T(t, c)] += 1.0f;
+    }
+  }
+  for (Eigen::Index i = 0; i < V.rows(); ++i) {
+    if (counts[i] > 0.0f) vertex_values[i] /= counts[i];
+  }
+}
+
 float SmoothedRange::update(float maximum) {
   const float target = std::isfinite(maximum) ? std::max(maximum, floor_) : floor_;
   if (value_ <= 0.0f) {
@@ -135,6 +155,8 @@ float QuantityColors::measured_range() const {
       return strain_range_.value();
     case ColorQuantity::speed:
       return speed_range_.value();
+    case ColorQuantity::volume:
+      return volume_range_.value();
     case ColorQuantity::material:
     case ColorQuantity::contacts:
       break;
@@ -153,6 +175,7 @@ void QuantityColors::measure(ColorQuantity quantity, const Simulation& simulatio
   if (quantity != quantity_) {
     strain_range_.restart();
     speed_range_.restart();
+    volume_range_.restart();
   }
   quantity_ = quantity;
   const Eigen::MatrixXi& E = simulation.rest().E;
@@ -165,6 +188,10 @@ void QuantityColors::measure(ColorQuantity quantity, const Simulation& simulatio
     vertex_speeds(simulation.positions(), simulation.previous_positions(), simulation.params().dt,
                   vertex_values_);
     speed_range_.update(robust_maximum(vertex_values_, scratch_));
+  } else if (quantity == ColorQuantity::volume) {
+    vertex_volume_changes(simulation.positions(), simulation.rest().V, simulation.rest().T,
+                          vertex_values_, counts_);
+    volume_range_.update(robust_maximum(vertex_values_, scratch_));
   } else if (quantity == ColorQuantity::contacts) {
     // Nothing to measure; paint takes the vertex count from these values' length.
     vertex_values_.resize(simulation.positions().rows());
@@ -189,6 +216,15 @@ void QuantityColors::paint(const Simulation& simulation, float range, bool with_
       put(spring_colors_, e, diverging_color(spring_values_[e] / range));
     for (Eigen::Index i = 0; i < vertex_count; ++i)
       put(vertex_colors_, i, diverging_color(vertex_values_[i] / range));
+    return;
+  }
+  if (quantity_ == ColorQuantity::volume) {
+    for (Eigen::Index i = 0; i < vertex_count; ++i)
+      put(vertex_colors_, i, diverging_color(vertex_values_[i] / range));
+    for (Eigen::Index e = 0; e < colored_springs; ++e) {
+      const float mean = 0.5f * (vertex_values_[E(e, 0)] + vertex_values_[E(e, 1)]);
+      put(spring_colors_, e, diverging_color(mean / range));
+    }
     return;
   }
   if (quantity_ == ColorQuantity::contacts) {

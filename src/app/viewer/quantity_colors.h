@@ -41,6 +41,16 @@ void vertex_mean_of_springs(const Eigen::MatrixXi& E, const Eigen::VectorXf& spr
 void vertex_speeds(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous, double dt,
                    Eigen::VectorXf& speed);
 
+// The volume change of every tetrahedron, volume/rest volume − 1 (det F − 1): > 0 swollen, < 0
+// squashed, below −1 turned inside out; each vertex gets the mean of its tetrahedra's (0 where it
+// has none, and everywhere for a network without tetrahedra).
+//   V, rest  #V by 3 positions now and at rest (m)
+//   T        #T by 4 tetrahedra, indices into rows of V
+//   vertex_values  #V, resized; `counts` is scratch of the same length
+void vertex_volume_changes(const Eigen::MatrixXd& V, const Eigen::MatrixXd& rest,
+                           const Eigen::MatrixXi& T, Eigen::VectorXf& vertex_values,
+                           Eigen::VectorXf& counts);
+
 // Colouring by contacts: linear RGB of a vertex the last step's self-collision moved, of one on a
 // collider, and of one in neither.
 Eigen::Vector3f self_contact_color();
@@ -104,6 +114,7 @@ class QuantityColors {
  public:
   static constexpr float strain_floor = 1e-4f;  // 0.01%
   static constexpr float speed_floor = 0.01f;   // m/s
+  static constexpr float volume_floor = 1e-4f;  // 0.01%
 
   // Recompute from the simulation's current state. material clears the colours and the range.
   // Without `with_springs` (the springs are not drawn) spring_colors() stays empty: on the
@@ -119,7 +130,8 @@ class QuantityColors {
   float measured_range() const;
 
   ColorQuantity quantity() const { return quantity_; }
-  // The range of the colours: strain −range … +range (dimensionless), speed 0 … range (m/s);
+  // The range of the colours: strain and volume −range … +range (dimensionless), speed 0 …
+  // range (m/s);
   // 0 for material and contacts.
   float range() const { return painted_range_; }
   // #V by 3 and #E by 3 linear RGB, row-major; empty for material (and the springs' without
@@ -129,7 +141,7 @@ class QuantityColors {
 
  private:
   ColorQuantity quantity_ = ColorQuantity::material;
-  SmoothedRange strain_range_{strain_floor}, speed_range_{speed_floor};
+  SmoothedRange strain_range_{strain_floor}, speed_range_{speed_floor}, volume_range_{volume_floor};
   float painted_range_ = 0.0f;
   Eigen::VectorXf spring_values_, vertex_values_, counts_;
   std::vector<float> scratch_, vertex_colors_, spring_colors_;

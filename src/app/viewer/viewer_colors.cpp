@@ -1,4 +1,5 @@
-// The viewer's colouring by a quantity (spring strain, vertex speed, contacts) and its legend.
+// The viewer's colouring by a quantity (spring strain, vertex speed, contacts, volume change) and
+// its legend.
 #include <algorithm>
 
 #include "app/viewer/viewer.h"
@@ -78,7 +79,7 @@ void Viewer::build_legend(float ui_scale) {
   for (int i = 0; i < legend_samples; ++i) {
     const float t = static_cast<float>(i) / (legend_samples - 1);
     const Eigen::Vector3f color =
-        quantity == ColorQuantity::strain ? diverging_color(2.0f * t - 1.0f) : sequential_color(t);
+        quantity == ColorQuantity::speed ? sequential_color(t) : diverging_color(2.0f * t - 1.0f);
     legend.colors.insert(legend.colors.end(), color.data(), color.data() + 3);
   }
   if (quantity == ColorQuantity::strain) {
@@ -87,6 +88,14 @@ void Viewer::build_legend(float ui_scale) {
     legend.middle = "0";
     legend.high = "+" + two_significant_digits(100.0f * range) + "%";
     legend.note = "compression blue, stretch red\nrange: 99th percentile, smoothed";
+  } else if (quantity == ColorQuantity::volume) {
+    legend.title = "volume change (volume - rest) / rest";
+    legend.low = "-" + two_significant_digits(100.0f * range) + "%";
+    legend.middle = "0";
+    legend.high = "+" + two_significant_digits(100.0f * range) + "%";
+    legend.note = simulation().rest().T.rows() > 0
+                      ? "each tetrahedron's, averaged at its corners\nsquashed blue, swollen red"
+                      : "no tetrahedra: a solid's quantity";
   } else {
     legend.title = "speed (m/s)";
     legend.low = "0";

@@ -128,12 +128,38 @@ TEST(QuantityColors, NamesCycleAndParse) {
   EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::material), ColorQuantity::strain);
   EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::strain), ColorQuantity::speed);
   EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::speed), ColorQuantity::contacts);
-  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::contacts), ColorQuantity::material);
+  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::contacts), ColorQuantity::volume);
+  EXPECT_EQ(wobble::next_color_quantity(ColorQuantity::volume), ColorQuantity::material);
   for (ColorQuantity q : {ColorQuantity::material, ColorQuantity::strain, ColorQuantity::speed,
-                          ColorQuantity::contacts})
+                          ColorQuantity::contacts, ColorQuantity::volume})
     EXPECT_EQ(wobble::color_quantity_named(wobble::color_quantity_name(q)), q);
   EXPECT_FALSE(wobble::color_quantity_named("stress"));
   EXPECT_FALSE(wobble::color_quantity_named("Strain"));
+}
+
+// Two tetrahedra sharing a face: the first doubled in size (volume × 8), the second turned inside
+// out through that face (its apex mirrored); a vertex of both takes the mean of the two changes.
+TEST(QuantityColors, VolumeChangeIsEachTetrahedronsAtItsCorners) {
+  Eigen::MatrixXd rest(5, 3);
+  rest << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1;
+  Eigen::MatrixXi T(2, 4);
+  T << 0, 1, 2, 3, 0, 2, 1, 4;
+  Eigen::MatrixXd now = rest;
+  now.row(3) = Eigen::RowVector3d(0, 0, 2);
+  now.row(1) = Eigen::RowVector3d(2, 0, 0);
+  now.row(2) = Eigen::RowVector3d(0, 2, 0);
+  now.row(4) = Eigen::RowVector3d(0, 0, 1);  // the second's apex through the face: inverted
+  Eigen::VectorXf change, counts;
+  wobble::vertex_volume_changes(now, rest, T, change, counts);
+  ASSERT_EQ(change.size(), 5);
+  EXPECT_NEAR(change[3], 7.0f, 1e-5f);  // only in the first: 8 times its volume
+  // The second: corners 0, 2·e₁, 2·e₂ and +e₃ where −e₃ was: −4 times its rest volume.
+  EXPECT_NEAR(change[4], -5.0f, 1e-5f);
+  EXPECT_NEAR(change[0], 1.0f, 1e-5f);  // (7 − 5)/2
+  // Without tetrahedra every vertex is neutral.
+  wobble::vertex_volume_changes(now, rest, Eigen::MatrixXi(0, 4), change, counts);
+  EXPECT_EQ(change.size(), 5);
+  EXPECT_EQ(change.cwiseAbs().maxCoeff(), 0.0f);
 }
 
 TEST(QuantityColors, LegendNumbersHaveTwoSignificantDigits) {
