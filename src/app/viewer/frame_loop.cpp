@@ -137,9 +137,13 @@ void ImGuiSession::apply_scale(float scale) {
   io.Fonts->Clear();
   ImFontConfig font;
   font.SizePixels = std::round(13.0f * scale);
+  const bool fractional = font.SizePixels != 13.0f * std::round(scale);
+  // At a fractional scale each glyph's advance is rounded to whole pixels, so that every glyph
+  // starts on a pixel boundary instead of a fraction into one.
+  font.PixelSnapH = fractional;
   io.Fonts->AddFontDefault(&font);
   io.FontGlobalScale = 1.0f;
-  if (font.SizePixels != 13.0f * std::round(scale)) sharpen_glyphs(*io.Fonts);
+  if (fractional) sharpen_glyphs(*io.Fonts);
 }
 
 void ImGuiSession::rescale(float scale) {
