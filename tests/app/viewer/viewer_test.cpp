@@ -320,6 +320,13 @@ TEST(Viewer, VCyclesTheColouringAndMaterialComputesNoColours) {
   EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
   EXPECT_EQ(viewer.quantity_colors().range(), 0.0f);
 
+  // The cloth has no tetrahedra: coloured by volume it is neutral, at the range's floor.
+  fixture.press_key(GLFW_KEY_V);
+  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::volume);
+  fixture.frame();
+  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
+  EXPECT_EQ(viewer.quantity_colors().range(), wobble::QuantityColors::volume_floor);
+
   fixture.press_key(GLFW_KEY_V);
   EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
   fixture.frame();
