@@ -20,15 +20,11 @@ const SettingRegistration volume_stiffness{
      {0.0, 1e7, "Pa"},
      0.0,
      SettingCost::refactorize,
-     false,
-     true}};
+     /*log_scale=*/false,
+     /*solids_only=*/true}};
 
 // A fixed count of pieces, so that the order of every sum is the same for any thread count.
 constexpr int pieces = 16;
-
-}  // namespace
-
-namespace {
 
 // One update of q toward the rotation nearest F, from R = q's matrix: returns the angle turned.
 // Turning R by θ (R ← exp([θ])R) changes tr(RᵀF) by θ·τ − ½θᵀHθ to second order, with the
