@@ -145,6 +145,49 @@ TEST(PageLink, TheLinkOpensTheSceneWithItsCurrentSettings) {
   EXPECT_EQ(checked, 3) << "the built-in cloth, the flag and the course's banner";
 }
 
+// The view a link carries (issue 53: Copy link dropped the colour, the springs and the camera):
+// every part of it that differs from the scene's own reaches the command line the page starts.
+TEST(PageLink, TheLinkCarriesTheColourTheSwitchesAndTheCamera) {
+  const std::vector<std::string> scenes = wobble::scene_catalog();
+  const wobble::SimulationParams params;
+  wobble::PageView view;
+  view.color_by = wobble::ColorQuantity::volume;
+  view.springs = true;
+  view.plots = true;
+  view.scene_yaw_degrees = 10.0;
+  view.yaw_degrees = 42.5;
+  view.scene_pitch_degrees = 20.0;
+  view.pitch_degrees = 20.0;  // the scene's own: left out
+  view.zoom = 1.5;
+  const std::string query = wobble::page_link_query("cloth", params, params, view);
+  for (const char* key :
+       {"color-by=volume", "springs", "plots", "camera-yaw=42.5", "camera-zoom=1.5"}) {
+    EXPECT_NE(query.find(key), std::string::npos) << key << " in " << query;
+  }
+  EXPECT_EQ(query.find("camera-pitch"), std::string::npos) << query;
+  const std::string keys = wobble::page_link_keys(query);
+  EXPECT_NE(keys.find("color-by, "), std::string::npos) << keys;
+  EXPECT_NE(keys.find("camera-zoom"), std::string::npos) << keys;
+  const wobble::PageRequest request = wobble::read_page_address(query, scenes);
+  ASSERT_TRUE(request.refusals.empty()) << query << ": " << request.refusals[0];
+  std::vector<const char*> argv;
+  for (const std::string& argument : request.arguments)
+    argv.push_back(argument.c_str());
+  std::ostringstream out;
+  const std::optional<wobble::CommandLine> command =
+      wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+  ASSERT_TRUE(command) << query;
+  EXPECT_EQ(command->color_by, wobble::ColorQuantity::volume);
+  EXPECT_TRUE(command->springs);
+  EXPECT_TRUE(command->plots);
+  EXPECT_EQ(command->camera_yaw, 42.5);
+  EXPECT_FALSE(command->camera_pitch);
+  EXPECT_EQ(command->camera_zoom, 1.5);
+  EXPECT_TRUE(wobble::page_link_losses(params, params, view).empty());
+  view.panned = true;
+  EXPECT_FALSE(wobble::page_link_losses(params, params, view).empty()) << "the pan is said";
+}
+
 // What an address cannot say is said instead of dropped in silence.
 TEST(PageLink, WhatTheLinkCannotCarryIsSaid) {
   wobble::SimulationParams opened;
