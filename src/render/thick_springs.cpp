@@ -6,8 +6,7 @@ namespace wobble {
 
 namespace {
 
-constexpr GLuint spring_from_location = 0, spring_to_location = 1,
-                 spring_color_location = 2;
+constexpr GLuint spring_from_location = 0, spring_to_location = 1, spring_color_location = 2;
 // Each spring's four corners carry the same row: its two ends and its colour.
 constexpr int floats_per_corner = 9, floats_per_spring = 4 * floats_per_corner;
 

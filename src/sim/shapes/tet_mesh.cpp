@@ -18,7 +18,6 @@ double signed_volume(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const E
   return (b - a).dot((c - a).cross(d - a)) / 6.0;
 }
 
-
 }  // namespace
 
 double tet_signed_volume(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, Eigen::Index t) {
