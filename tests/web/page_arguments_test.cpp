@@ -94,6 +94,20 @@ TEST(PageArguments, TheAddressTakesTheCommandLinesSettings) {
 
 // "Copy link" gives an address that opens the scene with the settings it has now: read back as
 // the page reads it, the scene opens with the same values, to the last bit.
+// The command line the page starts for a link's `query`; nothing when the address refuses part of
+// it (the refusal is reported as a failure) or the command line refuses it.
+std::optional<wobble::CommandLine> command_of_link(const std::string& query,
+                                                   const std::vector<std::string>& scenes) {
+  const wobble::PageRequest request = wobble::read_page_address(query, scenes);
+  EXPECT_TRUE(request.refusals.empty()) << query << ": " << request.refusals[0];
+  if (!request.refusals.empty()) return std::nullopt;
+  std::vector<const char*> argv;
+  for (const std::string& argument : request.arguments)
+    argv.push_back(argument.c_str());
+  std::ostringstream out;
+  return wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+}
+
 TEST(PageLink, TheLinkOpensTheSceneWithItsCurrentSettings) {
   const std::vector<std::string> scenes = wobble::scene_catalog();
   int checked = 0;
@@ -115,14 +129,7 @@ TEST(PageLink, TheLinkOpensTheSceneWithItsCurrentSettings) {
       now.self_collision.thickness = 0.004;
     }
     const std::string query = wobble::page_link_query(label, opened, now);
-    const wobble::PageRequest request = wobble::read_page_address(query, scenes);
-    ASSERT_TRUE(request.refusals.empty()) << query << ": " << request.refusals[0];
-    std::vector<const char*> argv;
-    for (const std::string& argument : request.arguments)
-      argv.push_back(argument.c_str());
-    std::ostringstream out;
-    const std::optional<wobble::CommandLine> command =
-        wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+    const std::optional<wobble::CommandLine> command = command_of_link(query, scenes);
     ASSERT_TRUE(command) << query;
     EXPECT_EQ(command->scene, source) << query;
     // As the viewer starts it: the scene's own overrides, then --k, --dt and the rest.
@@ -168,14 +175,7 @@ TEST(PageLink, TheLinkCarriesTheColourTheSwitchesAndTheCamera) {
   const std::string keys = wobble::page_link_keys(query);
   EXPECT_NE(keys.find("color-by, "), std::string::npos) << keys;
   EXPECT_NE(keys.find("camera-zoom"), std::string::npos) << keys;
-  const wobble::PageRequest request = wobble::read_page_address(query, scenes);
-  ASSERT_TRUE(request.refusals.empty()) << query << ": " << request.refusals[0];
-  std::vector<const char*> argv;
-  for (const std::string& argument : request.arguments)
-    argv.push_back(argument.c_str());
-  std::ostringstream out;
-  const std::optional<wobble::CommandLine> command =
-      wobble::parse_command_line(static_cast<int>(argv.size()), argv.data(), out);
+  const std::optional<wobble::CommandLine> command = command_of_link(query, scenes);
   ASSERT_TRUE(command) << query;
   EXPECT_EQ(command->color_by, wobble::ColorQuantity::volume);
   EXPECT_TRUE(command->springs);
