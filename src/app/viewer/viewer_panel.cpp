@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/cli/solver_choice.h"
 #include "app/interaction/environment_controls.h"
@@ -30,11 +31,14 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
                                                         static_cast<float>(figure.value)});
   }
 
-  // The panel's UI scale (for projectors) multiplies the screen's. The font may already be drawn
-  // at the screen's scale (ImGuiSession: 13 px times it), so only what is left magnifies it.
-  const float font_drawn_at =
-      ImGui::GetIO().Fonts->Fonts.empty() ? 1.0f : ImGui::GetIO().Fonts->Fonts[0]->FontSize / 13.0f;
-  ImGui::GetIO().FontGlobalScale = ui_scale * panel_.ui_scale / font_drawn_at;
+  // The panel's UI scale (for projectors) multiplies the screen's. Text is a whole number of
+  // pixels high, 13 times the scale rounded, as ImGuiSession draws the font at the screen's scale:
+  // at that scale the font is drawn as it was made, each glyph on whole pixels (at a pixel ratio
+  // of 1.25 a 16 px font magnified to 16.25 put every glyph's edge between two pixels), and only
+  // a UI scale above it magnifies it.
+  const float font_drawn =
+      ImGui::GetIO().Fonts->Fonts.empty() ? 13.0f : ImGui::GetIO().Fonts->Fonts[0]->FontSize;
+  ImGui::GetIO().FontGlobalScale = std::round(13.0f * ui_scale * panel_.ui_scale) / font_drawn;
   ui_scale *= panel_.ui_scale;
   // Each part of the panel is drawn by what owns its settings; what was pressed is carried out
   // below, in this order, once the panel is drawn.
