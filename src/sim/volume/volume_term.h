@@ -2,25 +2,16 @@
 #define WOBBLE_SIM_VOLUME_VOLUME_TERM_H
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <memory>
 #include <vector>
 
 #include "sim/parallel/worker_pool.h"
 #include "sim/terms/step_term.h"
+#include "sim/volume/tet_rotations.h"
 
 namespace wobble {
 
 struct TermSetup;
-
-// The rotation nearest to F in the Frobenius norm, among proper rotations (det R = +1): the R
-// maximizing tr(RᵀF), U·diag(1, 1, det UVᵀ)·Vᵀ for F = UΣVᵀ. So an inverted F (det F < 0) gets
-// a right-handed R, and a term pulling F toward it turns the tetrahedron the right way out.
-// Found by Müller et al.'s iteration ("A Robust Method to Extract the Rotational Part of
-// Deformations", 2016) from `q`, the last answer (warm start), which receives the new one.
-// Stops when the update turns by less than `tolerance` (rad) or after `most` updates.
-Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q, int most = 20,
-                                 double tolerance = 1e-12);
 
 // The volume term of a solid (projective dynamics' strain term, Bouaziz et al. 2014, in the
 // same local-global iteration as the springs): for every tetrahedron t of volume vₜ and
@@ -51,28 +42,28 @@ class VolumeTerm : public StepTerm {
   // The tetrahedra inverted (det F ≤ 0) at the end of the last step.
   long inverted() const { return inverted_; }
   // Below this many tetrahedra the local step runs on the calling thread alone.
-  // (A tetrahedron's update costs about as much as a dozen springs' local step: the pool's
+  // (A tetrahedron's update costs about as much as a few springs' local step: the pool's
   // payoff measure decides from there whether sharing pays.)
-  static constexpr long min_tets_for_threads = 256;
+  static constexpr long min_tets_for_threads = 1024;
 
  private:
-  // Each tetrahedron's pull (into pull_), or its gradient if `gradient`, and, if `energy`, its
-  // energy (into energy_); the rotations are found with `most` updates from the last ones.
+  // Each tetrahedron's pull, or its gradient if `gradient`, and, if `energy`, its energy (into
+  // rotations_); the rotations are turned up to `most` times from the last ones.
   void local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool gradient,
                   bool energy) const;
+  // out (#V by 3) += each vertex's pulls, summed in the order of its slots.
+  void gather(Eigen::MatrixXd& out) const;
   Eigen::Matrix3d deformation(const Eigen::MatrixXd& p, Eigen::Index t) const;
 
   Eigen::MatrixXi T_;
   std::vector<Eigen::Matrix<double, 4, 3>> G_;  // #T: F = Pᵀ G
   Eigen::VectorXd weight_;                      // #T: w vₜ (N·m)
-  // vertex → its (tetrahedron, corner) slots 4t + c, in increasing order, so each vertex sums
-  // its pulls in one fixed order whatever the threads.
+  // vertex → where its (tetrahedron, corner) pulls are in rotations_.out(), in the order of
+  // (t, c), so each vertex sums its pulls in one fixed order whatever the threads.
   std::vector<int> incident_start_, incident_;
-  mutable std::vector<Eigen::Quaterniond> rotation_;  // #T: the last Rₜ (warm start)
-  mutable Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> pull_;  // 4#T by 3
-  mutable Eigen::VectorXd energy_;                                          // #T (J)
+  mutable TetRotations rotations_;  // the last Rₜ (warm start), the pulls, the energies
   WorkerPool* pool_;
-  mutable SharingPayoff payoff_;
+  mutable SharingPayoff tet_payoff_, vertex_payoff_;
   long inverted_ = 0;
 };
 

@@ -1,0 +1,71 @@
+#ifndef WOBBLE_SIM_VOLUME_TET_ROTATIONS_H
+#define WOBBLE_SIM_VOLUME_TET_ROTATIONS_H
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace wobble {
+
+// The rotation nearest to F in the Frobenius norm, among proper rotations (det R = +1): the R
+// maximizing tr(RᵀF), U·diag(1, 1, det UVᵀ)·Vᵀ for F = UΣVᵀ. So an inverted F (det F < 0) gets
+// a right-handed R, and a term pulling F toward it turns the tetrahedron the right way out.
+// Turned toward it from `q`, the last answer (warm start), which receives the new one: Newton's
+// update of tr(RᵀF) where it is concave, else Müller et al.'s ("A Robust Method to Extract the
+// Rotational Part of Deformations", 2016). Stops after a Newton update that turned by less than
+// `tolerance` (rad) or after `most` updates.
+Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q, int most = 20,
+                                 double tolerance = 1e-12);
+
+// Every tetrahedron's rotation Rₜ nearest its deformation gradient Fₜ = Ds·Dm⁻¹, kept from one
+// call to the next as a warm start, and what it adds to the step: the pull w vₜ Gₜ Rₜᵀ, or the
+// gradient w vₜ Gₜ (Fₜ − Rₜ)ᵀ, and the energy (w vₜ/2)‖Fₜ − Rₜ‖²_F (volume_term.h has the math).
+// The tetrahedra are kept four to a pack, one in each lane of the processor's vector registers
+// (AVX2 where the processor has it, the same bits without), so that a tetrahedron's update, some
+// two hundred multiplications and additions, runs on four at once. A tetrahedron's results do
+// not depend on its pack's other lanes, nor on how the packs are shared out.
+class TetRotations {
+ public:
+  // V  #V by 3 rest positions; T  #T by 4 tetrahedra (none flat); weight  #T w vₜ (N·m).
+  TetRotations(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Eigen::VectorXd& weight);
+
+  long packs() const { return static_cast<long>(packs_.size()); }
+  // Packs [begin, end) at the positions p (#V by 3): each rotation turned `most` times toward
+  // its Fₜ (fewer once a Newton update turns by less than `tolerance` rad), then for each
+  // tetrahedron t and corner c the pull, or with `gradient` the gradient, at out()[at(t, c) + 4i]
+  // for coordinate i (N), and with `energy` its energy for energy().
+  void update(const Eigen::MatrixXd& p, long begin, long end, int most, double tolerance,
+              bool gradient, bool energy);
+  const double* out() const { return reinterpret_cast<const double*>(out_.data()); }
+  static long at(long t, int c) {
+    return static_cast<long>(sizeof(Out) / sizeof(double)) * (t / 4) + 12 * c + t % 4;
+  }
+  // Σₜ of the energies of the last update that asked for them, in the order of t (J).
+  double energy() const;
+  // Every rotation back to the identity (the rest shape's).
+  void reset();
+
+  // The packed data of 4 tetrahedra, lane l the tetrahedron 4·pack + l (the last pack padded
+  // with copies of the last tetrahedron, whose results are not written).
+  typedef double Lane __attribute__((vector_size(32), aligned(32)));
+  struct Pack {
+    Lane inverse_rest[9];  // Dm⁻¹, row by row
+    Lane weight;           // w vₜ
+    Lane q[4];             // Rₜ as a unit quaternion (w, x, y, z)
+  };
+  // What the last update gave for a pack.
+  struct Out {
+    Lane pull[12];  // corner c's coordinate i at 3c + i (N)
+    Lane energy;    // J
+  };
+
+ private:
+  std::vector<Pack> packs_;
+  std::vector<Out> out_;
+  std::vector<int> corners_;  // 16 a pack: corner c of lane l at 16·pack + 4c + l
+  long tets_;
+};
+
+}  // namespace wobble
+
+#endif
