@@ -193,7 +193,11 @@ int main(int argc, char** argv) {
   };
   static constexpr Part parts[] = {
       {"--contact", wobble::benchmark::print_contact_cost},
-      {"--volume", wobble::benchmark::print_volume_cost},
+      {"--volume",
+       [] {
+         wobble::benchmark::print_volume_cost();
+         wobble::benchmark::print_volume_iterations();
+       }},
       {"--solvers", wobble::benchmark::print_solver_race},
       {"--self-collision-settling", wobble::benchmark::print_self_collision_settling},
       {"--self-collision-landing", wobble::benchmark::print_self_collision_landing},

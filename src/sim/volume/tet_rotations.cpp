@@ -100,6 +100,57 @@ WOBBLE_TET_INLINE void turn_toward(const Lane* F, Lane* q, Lane* R, int most, do
   }
 }
 
+// One pack (see TetRotations::update). `pull_only`: one update and the pull alone, the
+// local-global iterations' case, compiled apart so that F is dropped once M is formed.
+template <bool pull_only>
+WOBBLE_TET_INLINE void update_pack(TetRotations::Pack& pack, const int* corner, const double* p,
+                                   long rows, int most, double tolerance, bool gradient,
+                                   TetRotations::Out& out, bool energy) {
+  // The edges from corner 0, d[3c + i] = (x_{c+1} − x₀)ᵢ.
+  Lane d[9];
+  for (int i = 0; i < 3; ++i) {
+    const double* column = p + i * rows;
+    const Lane x0{column[corner[0]], column[corner[1]], column[corner[2]], column[corner[3]]};
+    for (int c = 0; c < 3; ++c) {
+      const int* at = corner + 4 * (c + 1);
+      d[3 * c + i] = Lane{column[at[0]], column[at[1]], column[at[2]], column[at[3]]} - x0;
+    }
+  }
+  // F = Ds Dm⁻¹: Fᵢⱼ = Σ_c d_c,ᵢ (Dm⁻¹)_c,ⱼ.
+  const Lane* B = pack.inverse_rest;
+  Lane F[9];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j)
+      F[3 * i + j] = d[i] * B[j] + d[3 + i] * B[3 + j] + d[6 + i] * B[6 + j];
+  }
+  Lane R[9];
+  for (int e = 0; e < 9; ++e)
+    R[e] = pack.R[e];
+  turn_toward(F, pack.q, R, pull_only ? 1 : most, tolerance);
+  for (int e = 0; e < 9; ++e)
+    pack.R[e] = R[e];
+  Lane toward[9];
+  for (int e = 0; e < 9; ++e)
+    toward[e] = !pull_only && gradient ? F[e] - R[e] : R[e];
+  if (!pull_only && energy) {
+    Lane e2 = splat(0.0);
+    for (int e = 0; e < 9; ++e)
+      e2 += (F[e] - R[e]) * (F[e] - R[e]);
+    out.energy = 0.5 * pack.weight * e2;
+  }
+  // Corner c ≥ 1 of w G towardᵀ: w Σⱼ (Dm⁻¹)_c,ⱼ toward_ᵢⱼ; corner 0 the negated sum of those,
+  // as G's rows sum to zero.
+  Lane* pull = out.pull;
+  for (int c = 0; c < 3; ++c) {
+    for (int i = 0; i < 3; ++i)
+      pull[3 * (c + 1) + i] =
+          pack.weight * (B[3 * c] * toward[3 * i] + B[3 * c + 1] * toward[3 * i + 1] +
+                         B[3 * c + 2] * toward[3 * i + 2]);
+  }
+  for (int i = 0; i < 3; ++i)
+    pull[i] = -(pull[3 + i] + pull[6 + i] + pull[9 + i]);
+}
+
 }  // namespace
 
 // Packs [begin, end) (see TetRotations::update); out of the class so that it can be cloned for
@@ -108,54 +159,13 @@ WOBBLE_TET_CLONES void update_tet_packs(TetRotations::Pack* packs, const int* co
                                         const double* p, long rows, long begin, long end, int most,
                                         double tolerance, bool gradient, TetRotations::Out* out,
                                         bool energy) {
-  for (long k = begin; k < end; ++k) {
-    TetRotations::Pack& pack = packs[k];
-    const int* corner = corners + 16 * k;
-    // The edges from corner 0, d[3c + i] = (x_{c+1} − x₀)ᵢ.
-    Lane d[9];
-    for (int i = 0; i < 3; ++i) {
-      const double* column = p + i * rows;
-      const Lane x0{column[corner[0]], column[corner[1]], column[corner[2]], column[corner[3]]};
-      for (int c = 0; c < 3; ++c) {
-        const int* at = corner + 4 * (c + 1);
-        d[3 * c + i] = Lane{column[at[0]], column[at[1]], column[at[2]], column[at[3]]} - x0;
-      }
-    }
-    // F = Ds Dm⁻¹: Fᵢⱼ = Σ_c d_c,ᵢ (Dm⁻¹)_c,ⱼ.
-    const Lane* B = pack.inverse_rest;
-    Lane F[9];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j)
-        F[3 * i + j] = d[i] * B[j] + d[3 + i] * B[3 + j] + d[6 + i] * B[6 + j];
-    }
-    Lane R[9];
-    rotation_of(pack.q, R);
-    // One update, the local-global iterations' case, without the bookkeeping of several.
-    if (most == 1) {
-      turn_toward(F, pack.q, R, 1, tolerance);
-    } else {
-      turn_toward(F, pack.q, R, most, tolerance);
-    }
-    Lane toward[9];
-    for (int e = 0; e < 9; ++e)
-      toward[e] = gradient ? F[e] - R[e] : R[e];
-    if (energy) {
-      Lane e2 = splat(0.0);
-      for (int e = 0; e < 9; ++e)
-        e2 += (F[e] - R[e]) * (F[e] - R[e]);
-      out[k].energy = 0.5 * pack.weight * e2;
-    }
-    // Corner c ≥ 1 of w G towardᵀ: w Σⱼ (Dm⁻¹)_c,ⱼ toward_ᵢⱼ; corner 0 the negated sum of those,
-    // as G's rows sum to zero.
-    Lane* pull = out[k].pull;
-    for (int c = 0; c < 3; ++c) {
-      for (int i = 0; i < 3; ++i)
-        pull[3 * (c + 1) + i] =
-            pack.weight * (B[3 * c] * toward[3 * i] + B[3 * c + 1] * toward[3 * i + 1] +
-                           B[3 * c + 2] * toward[3 * i + 2]);
-    }
-    for (int i = 0; i < 3; ++i)
-      pull[i] = -(pull[3 + i] + pull[6 + i] + pull[9 + i]);
+  if (most == 1 && !gradient && !energy) {
+    for (long k = begin; k < end; ++k)
+      update_pack<true>(packs[k], corners + 16 * k, p, rows, 1, tolerance, false, out[k], false);
+  } else {
+    for (long k = begin; k < end; ++k)
+      update_pack<false>(packs[k], corners + 16 * k, p, rows, most, tolerance, gradient, out[k],
+                         energy);
   }
 }
 
@@ -200,6 +210,8 @@ void TetRotations::reset() {
     pack.q[0] = splat(1.0);
     for (int c = 1; c < 4; ++c)
       pack.q[c] = splat(0.0);
+    for (int e = 0; e < 9; ++e)
+      pack.R[e] = splat(e % 4 == 0 ? 1.0 : 0.0);
   }
 }
 

@@ -52,6 +52,7 @@ class TetRotations {
     Lane inverse_rest[9];  // Dm⁻¹, row by row
     Lane weight;           // w vₜ
     Lane q[4];             // Rₜ as a unit quaternion (w, x, y, z)
+    Lane R[9];             // and as a matrix, row by row
   };
   // What the last update gave for a pack.
   struct Out {
