@@ -37,7 +37,9 @@ struct GlfwCallbacks {
     InputEvent event;
     event.type = InputEvent::Type::key_press;
     event.code = key;
-    push(window, event, mods);
+    // Cmd on a Mac is what Ctrl is elsewhere: Cmd+S saves the scene (in the page too, which keeps
+    // the key from the browser), and Cmd+O is not O, the scene's opening view.
+    push(window, event, (mods & GLFW_MOD_SUPER) != 0 ? mods | GLFW_MOD_CONTROL : mods);
   }
   static void button(GLFWwindow* window, int button, int action, int mods) {
     InputEvent event;

@@ -4,7 +4,8 @@ the scene and its mesh, each under the desktop's name (wobble-cloth-0001.png, ..
 they were written into the page's memory, where nobody could reach them.) After Save scene the
 notice on screen says what is true in a page (the download, and a drop to open it again), not
 the desktop's `wobble FILE` and scene picker. Ctrl+S saves the scene too, and the page keeps the
-key from the browser (its keydown's default prevented: no "Save page" dialog).
+key from the browser (its keydown's default prevented: no "Save page" dialog); so does Cmd+S, a
+Mac's Ctrl+S, without taking a step as S does; Ctrl+O opens the browser's file chooser.
 
   page_files_check.py SITE
 
@@ -40,6 +41,20 @@ def wait_for(path, timeout=20.0):
             return True
         time.sleep(0.2)
     return False
+
+
+def press_with(browser, modifier, key):
+    """`key` (a letter) pressed with `modifier` (Control or Meta) held, as DevTools types it."""
+    held = {'Control': ('ControlLeft', 17, 2), 'Meta': ('MetaLeft', 91, 4)}
+    code, number, bit = held[modifier]
+    letter = (key, f'Key{key.upper()}', ord(key.upper()))
+    for kind, (name, key_code, key_number) in [('rawKeyDown', (modifier, code, number)),
+                                               ('rawKeyDown', letter), ('keyUp', letter),
+                                               ('keyUp', (modifier, code, number))]:
+        browser.call('Input.dispatchKeyEvent',
+                     {'type': kind, 'key': name, 'code': key_code, 'modifiers': bit,
+                      'windowsVirtualKeyCode': key_number})
+        time.sleep(0.15)
 
 
 def main():
@@ -115,14 +130,7 @@ def main():
         # listener added after the page's, on the same phase: it sees the page's decision).
         browser.evaluate('''window.wobbleKeyPrevented = null; window.addEventListener('keydown',
             (e) => { if (e.key === 's') window.wobbleKeyPrevented = e.defaultPrevented; }, true)''')
-        for kind, key, code, number in [('rawKeyDown', 'Control', 'ControlLeft', 17),
-                                        ('rawKeyDown', 's', 'KeyS', 83),
-                                        ('keyUp', 's', 'KeyS', 83),
-                                        ('keyUp', 'Control', 'ControlLeft', 17)]:
-            browser.call('Input.dispatchKeyEvent',
-                         {'type': kind, 'key': key, 'code': code, 'modifiers': 2,
-                          'windowsVirtualKeyCode': number})
-            time.sleep(0.15)
+        press_with(browser, 'Control', 's')
         second = os.path.join(folder, 'wobble-cloth-scene-0002.json')
         prevented = browser.evaluate('window.wobbleKeyPrevented')
         saved = wait_for(second)
@@ -132,6 +140,35 @@ def main():
             failures.append(f'Ctrl+S: no scene downloaded ({os.listdir(folder)})')
         if prevented is not True:
             failures.append(f'Ctrl+S: the browser\'s own Ctrl+S was not prevented ({prevented})')
+        # Cmd+S, a Mac's Ctrl+S, saves a third scene, and is not S, a step (the page stopped at
+        # its 30 steps).
+        steps = browser.evaluate('Module.wobbleSteps')
+        press_with(browser, 'Meta', 's')
+        third = os.path.join(folder, 'wobble-cloth-scene-0003.json')
+        saved = wait_for(third)
+        time.sleep(0.5)
+        stepped = browser.evaluate('Module.wobbleSteps') - steps
+        print(f'page_files_check: Cmd+S: downloaded {saved}, {stepped} steps taken')
+        if not saved:
+            failures.append(f'Cmd+S: no scene downloaded ({os.listdir(folder)})')
+        if stepped:
+            failures.append(f'Cmd+S: the page took {stepped} steps, as S does')
+        # Ctrl+O opens the browser's file chooser, as "Open file..." does, and the view stays
+        # (O alone is the scene's opening view).
+        browser.call('Page.enable')  # its events: the chooser opened
+        browser.call('Page.setInterceptFileChooserDialog', {'enabled': True})
+        browser.events.clear()
+        press_with(browser, 'Control', 'o')
+        deadline = time.monotonic() + 10
+        chooser = None
+        while chooser is None and time.monotonic() < deadline:
+            browser.evaluate('1')  # reads what arrived
+            chooser = next((event for event in browser.events
+                            if event.get('method') == 'Page.fileChooserOpened'), None)
+            time.sleep(0.2)
+        print(f'page_files_check: Ctrl+O: a file chooser opened: {chooser is not None}')
+        if chooser is None:
+            failures.append('Ctrl+O: no file chooser opened')
     finally:
         browser.close()
         server.shutdown()

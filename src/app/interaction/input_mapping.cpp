@@ -112,14 +112,21 @@ std::vector<Binding> page_bindings() {
   std::vector<Binding> bindings;
   for (const Binding& binding : viewer_bindings()) {
     const std::string& input = binding.input;
-    if (input == "F12" || input == "F11" || input == "F9" || input == "Ctrl+S" ||
-        input == "Ctrl+Q") {
-      continue;
-    }
+    if (input == "F12" || input == "F11" || input == "F9" || input == "Ctrl+Q") continue;
     if (input == "H") {
       bindings.push_back({"PNG, OBJ, Save scene",
                           "the panel's buttons: downloads of the picture, "
                           "the positions, the scene and its mesh"});
+    }
+    if (input == "Ctrl+S") {
+      // The page keeps both keys from the browser (index.html): no "Save page" nor "Open file".
+      bindings.push_back({"Ctrl+S / Cmd+S",
+                          "save the scene, its pins and settings: a download of "
+                          "wobble-SCENE-scene-0001.json and its mesh"});
+      bindings.push_back({"Ctrl+O / Cmd+O",
+                          "open a scene, mesh or texture: the browser's file chooser (or drop "
+                          "the files on the page)"});
+      continue;
     }
     bindings.push_back(binding);
   }

@@ -62,8 +62,9 @@ struct Binding {
 };
 const std::vector<Binding>& viewer_bindings();
 // What of them works in a page (the help a page shows): the desktop's keys but those the browser
-// keeps for itself (F12, F11, Ctrl+S, Ctrl+Q) and recording (F9, no folder to write into), and
-// the panel's buttons that download files in their place.
+// keeps for itself (F12, F11, Ctrl+Q) and recording (F9, no folder to write into), the panel's
+// buttons that download files in their place, Ctrl+S as a download and Ctrl+O, the browser's
+// file chooser (the page keeps both from the browser).
 std::vector<Binding> page_bindings();
 
 }  // namespace wobble

@@ -121,24 +121,27 @@ TEST(InputMapping, RightAndMiddlePan) {
 
 }  // namespace
 
-// A page's help lists only what works there: not the keys the browser keeps (F12, F11, Ctrl+S,
-// Ctrl+Q) nor recording, and the panel's download buttons in their place; everything else as
+// A page's help lists only what works there: not the keys the browser keeps (F12, F11, Ctrl+Q)
+// nor recording, and the panel's download buttons in their place; Ctrl+S as the download it is
+// there and Ctrl+O, the file chooser (the page keeps both from the browser); everything else as
 // the desktop's.
 TEST(InputMapping, APagesHelpListsOnlyWhatWorksThere) {
   const std::vector<wobble::Binding> page = wobble::page_bindings();
-  const auto lists = [&](const std::string& input) {
+  const auto action = [&](const std::string& input) -> std::string {
     for (const wobble::Binding& binding : page)
-      if (binding.input == input) return true;
-    return false;
+      if (binding.input == input) return binding.action;
+    return "";
   };
-  for (const char* taken : {"F12", "F11", "F9", "Ctrl+S", "Ctrl+Q"})
-    EXPECT_FALSE(lists(taken)) << taken;
-  EXPECT_TRUE(lists("PNG, OBJ, Save scene"));
+  for (const char* taken : {"F12", "F11", "F9", "Ctrl+Q"})
+    EXPECT_EQ(action(taken), "") << taken;
+  EXPECT_NE(action("PNG, OBJ, Save scene"), "");
+  EXPECT_NE(action("Ctrl+S / Cmd+S").find("download"), std::string::npos);
+  EXPECT_NE(action("Ctrl+O / Cmd+O").find("file chooser"), std::string::npos);
   for (const wobble::Binding& binding : wobble::viewer_bindings()) {
     const std::string& input = binding.input;
-    if (input != "F12" && input != "F11" && input != "F9" && input != "Ctrl+S" &&
-        input != "Ctrl+Q") {
-      EXPECT_TRUE(lists(input)) << input;
+    if (input != "F12" && input != "F11" && input != "F9" && input != "Ctrl+Q" &&
+        input != "Ctrl+S") {
+      EXPECT_EQ(action(input), binding.action) << input;
     }
   }
 }
