@@ -98,8 +98,6 @@ build_launcher() {
 # so an index out of range in a student's code stops with a message instead of corrupting
 # memory. -w: a student's warnings are not this script's business.
 flags=(-std=c++17 -O2 -w)
-renames=()
-for function in "${functions[@]}"; do renames+=("-D$function=reference_$function"); done
 
 # key_of SOURCE TAG INCLUDE_DIR...: the cache key of compiling SOURCE with the flags named by
 # TAG: a hash of the source, and of every header the include folders offer, each name taken
@@ -166,7 +164,26 @@ grouped() {
   "$launcher" --name "the compiler" -- "$@"
 }
 
-# compile NAME SOURCE TAG INCLUDE_DIR... -- EXTRA_FLAG...: compile what is not cached yet.
+# wobble_side_key: one hash of everything Wobble's side is compiled from (the seed, the checker,
+# the sandbox and the step server, sources and headers), the toolchain and the flags, in
+# $wobble_side_id. Wobble's objects are keyed by it and their name, so a run hashes these
+# files once instead of once per object; a change to any of them compiles Wobble's side again.
+wobble_side_key() {
+  [ -z "${wobble_side_id:-}" ] || return 0
+  local file
+  wobble_side_id=$({
+    printf '%s\n' "$toolchain_id" "${flags[*]}"
+    while IFS= read -r file; do
+      printf '\n--- %s\n' "${file#"$root/"}"
+      cat "$file"
+    done < <(find "$seed" "$check_sources" "$sandbox_sources" "$server_sources" -maxdepth 1 \
+               -type f \( -name '*.cpp' -o -name '*.h' \) | LC_ALL=C sort)
+  } | sha256sum | cut -c1-32)
+}
+
+# compile NAME SOURCE TAG INCLUDE_DIR... -- EXTRA_FLAG...: compile what is not cached yet. A
+# student's file is keyed by its contents and the headers it can see (key_of); Wobble's own by
+# $wobble_side_id, and with the precompiled prelude when $wobble_prelude is set.
 declare -A object
 compile() {
   local name=$1 source=$2 tag=$3
@@ -174,15 +191,22 @@ compile() {
   local dirs=()
   while [ "$1" != "--" ]; do dirs+=("$1"); shift; done
   shift
-  local key
-  key=$(key_of "$source" "$tag ${flags[*]} $*" "${dirs[@]}")
+  local key runner=(grouped) prelude=()
+  if [[ "$name" == student.* ]]; then
+    key=$(key_of "$source" "$tag ${flags[*]} $*" "${dirs[@]}")
+    runner=(bounded "the compiler")
+  else
+    wobble_side_key
+    [ -z "${wobble_prelude:-}" ] || prelude=(-include "$wobble_prelude")
+    key=$(printf '%s\n' "$wobble_side_id" "$name ${source#"$root/"}" "$tag $*" "${#prelude[@]}" |
+          sha256sum | cut -c1-32)
+  fi
   object[$name]="$cache/obj/$key.o"
   local includes=()
   for dir in "${dirs[@]}"; do includes+=(-I "$dir"); done
-  local runner=(grouped)
-  [[ "$name" == student.* ]] && runner=(bounded "the compiler")
   start_job "${object[$name]}" "$work/$name.log" \
-    "${runner[@]}" "$cxx" "${flags[@]}" "$@" "${includes[@]}" -I "$eigen" -c "$source"
+    "${runner[@]}" "$cxx" "${flags[@]}" "${prelude[@]}" "$@" "${includes[@]}" -I "$eigen" \
+    -c "$source"
 }
 
 # first_error LOG: the line of LOG that says why it failed: a limit the launcher enforced, else
@@ -254,24 +278,65 @@ start_prelude() {
     grouped "$cxx" "${flags[@]}" -I "$eigen" -x c++-header "$prelude_folder/check_prelude.h"
 }
 
-# Wobble's side: its six functions plain (into an archive the linker takes what it lacks from)
-# and renamed (the oracle), and the checker's own objects. Compiled once, then cached.
+# Wobble's side: its six functions plain (into an archive the linker takes what it lacks from),
+# the checker's own objects and the step server's; compiled once, then cached. The oracle, the
+# six renamed, is made from the plain objects afterwards (rename_wobble_side).
 compile_wobble_side() {
   local function source
+  wobble_prelude=""
   start_prelude
+  # The launcher's code first, which needs no Eigen; then, once the prelude is ready, the rest
+  # starts from it (-include), as a student's file does: Eigen's headers are parsed once.
+  for source in "${sandbox_linked[@]}"; do
+    compile "checker.$source" "$sandbox_sources/$source.cpp" checker "$sandbox_sources" --
+  done
+  finish_jobs
+  wobble_prelude=$prelude_folder/check_prelude.h
   for function in "${functions[@]}"; do
     compile "plain.$function" "$seed/$function.cpp" plain "$seed" --
-    compile "renamed.$function" "$seed/$function.cpp" renamed "$seed" -- "${renames[@]}"
   done
   for source in "${checker_sources[@]}"; do
     compile "checker.$source" "$check_sources/$source.cpp" checker "$check_sources" \
       "$sandbox_sources" "$seed" --
   done
-  for source in "${sandbox_linked[@]}"; do
-    compile "checker.$source" "$sandbox_sources/$source.cpp" checker "$sandbox_sources" --
-  done
   compile server "$server_sources/step_server_main.cpp" checker "$server_sources" \
     "$check_sources" "$seed" --
+}
+
+# rename_wobble_side: the oracle, once the plain objects are compiled: each of them with every
+# symbol of the six functions renamed, signed_incidence_matrix_dense to
+# reference_signed_incidence_matrix_dense and so on (in C++'s mangled names the name is preceded
+# by its length: _Z29signed_incidence_matrix_dense... becomes _Z39reference_signed_...), what
+# compiling them with -Dsigned_incidence_matrix_dense=reference_signed_incidence_matrix_dense
+# gave, without compiling them twice. In the cache beside the plain objects.
+rename_wobble_side() {
+  local function names="$work/renames.txt"
+  # A plain object that did not compile is said by the caller, as any of Wobble's own.
+  for function in "${functions[@]}"; do
+    [ -f "${object[plain.$function]}" ] || return 0
+  done
+  [ -f "$names" ] || {
+    # "OLD NEW" a line, for every symbol (defined or used) of the six functions.
+    for function in "${functions[@]}"; do nm -P "${object[plain.$function]}"; done |
+      awk -v names="${functions[*]}" '
+        BEGIN {
+          n = split(names, f, " ")
+          for (i = 1; i <= n; i++) prefix[i] = "_Z" length(f[i]) f[i]
+        }
+        {
+          for (i = 1; i <= n; i++)
+            if (index($1, prefix[i]) == 1 && !seen[$1]++)
+              print $1, "_Z" (length(f[i]) + 10) "reference_" f[i] substr($1, length(prefix[i]) + 1)
+        }' >"$names"
+  }
+  for function in "${functions[@]}"; do
+    object[renamed.$function]="$cache/obj/$(printf '%s\n' "${object[plain.$function]}" renamed |
+                                            sha256sum | cut -c1-32).o"
+    [ -f "${object[renamed.$function]}" ] && continue
+    objcopy --redefine-syms="$names" "${object[plain.$function]}" \
+      "${object[renamed.$function]}.tmp.$$" >>"$work/renamed.$function.log" 2>&1 &&
+      mv -f "${object[renamed.$function]}.tmp.$$" "${object[renamed.$function]}"
+  done
 }
 
 # compile_student FUNCTION SOURCE FOLDER: the student's file for FUNCTION with the course's call

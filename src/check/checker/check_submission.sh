@@ -28,6 +28,7 @@ check_submission() {
     compile_student "$function" "${source_of[$function]}" "$folder"
   done
   finish_jobs
+  rename_wobble_side
 
   local name
   for name in "${!object[@]}"; do

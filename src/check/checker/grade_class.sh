@@ -37,6 +37,7 @@ grade_class() {
   check_toolchain
   compile_wobble_side
   finish_jobs
+  rename_wobble_side
   local warmed
   warmed=$(date +%s.%N)
 
