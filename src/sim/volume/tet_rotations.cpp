@@ -14,7 +14,8 @@ namespace wobble {
 #define WOBBLE_TET_INLINE __attribute__((always_inline)) inline
 
 using Lane = TetRotations::Lane;
-typedef long Mask __attribute__((vector_size(32), aligned(32)));
+// Lanes of 64-bit integers, as a comparison of Lanes gives (`long` is 32 bits on wasm32).
+typedef long long Mask __attribute__((vector_size(32), aligned(32)));
 
 namespace {
 
