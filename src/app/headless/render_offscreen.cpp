@@ -60,17 +60,21 @@ class OffscreenHost : public FrameHost {
     }
     return true;
   }
-  void bind_target() override {
+  // Only the frames an output reads are drawn: the last, and those --record or
+  // --screenshot-every take. The others are laid out all the same (the camera frames the shape
+  // as it would have), so the pictures drawn are the same pixels.
+  bool bind_target() override {
+    const bool last = frame_ == options_.frames;
+    pictured_ = last || (outputs_ != nullptr && outputs_->wants(last));
+    if (!pictured_) return false;
     render_start_ = std::chrono::steady_clock::now();
     target_.bind();
+    return true;
   }
   void present(Viewer& viewer, bool /*drawn*/) override {
+    if (!pictured_) return;
     const bool last = frame_ == options_.frames;
-    if (last || (outputs_ != nullptr && outputs_->wants(last))) {
-      target_.read_rgba(image_.pixels);
-    } else {
-      target_.finish();
-    }
+    target_.read_rgba(image_.pixels);
     if (report_) {
       report_->render_ms.push_back(std::chrono::duration<double, std::milli>(
                                        std::chrono::steady_clock::now() - render_start_)
@@ -92,6 +96,7 @@ class OffscreenHost : public FrameHost {
   ImageOutputs* outputs_;
   OffscreenReport* report_;
   long frame_ = 0;
+  bool pictured_ = false;  // this frame is drawn and read back
   RgbaImage image_;
   std::chrono::steady_clock::time_point render_start_;
 };

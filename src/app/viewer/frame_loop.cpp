@@ -97,10 +97,10 @@ FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, flo
   host.set_title("Wobble: " + viewer.scene().name);
   if (imgui) ImGui::Render();
   if (result.drawn) {
-    host.bind_target();
+    const bool draw = host.bind_target();
     const float pixel_ratio = window.x() > 0.0f ? width / window.x() : 1.0f;
-    viewer.render(width, height, window, pixel_ratio, host.mark_scale(pixel_ratio));
-    if (imgui) {
+    viewer.render(width, height, window, pixel_ratio, host.mark_scale(pixel_ratio), draw);
+    if (imgui && draw) {
       // A recording of the scene alone takes it before the panel goes over it.
       viewer.scene_drawn([width, height] { return read_shown_frame(width, height); });
       // The current ImGui context's renderer (ImGuiSession's), as ImGui's own backends keep it.

@@ -55,8 +55,10 @@ class FrameHost {
   virtual bool advance(Viewer& viewer, double now) = 0;
   // The window's title, whenever the scene on show changes.
   virtual void set_title(const std::string& /*title*/) {}
-  // 5. Where the frame is drawn: the default framebuffer, or an offscreen target.
-  virtual void bind_target() = 0;
+  // 5. Where the frame is drawn: the default framebuffer, or an offscreen target. Returns whether
+  // the frame is drawn at all: headless, a frame whose picture no output reads is laid out (the
+  // camera's framing, the panel) but not drawn, which is most of a headless run's time.
+  virtual bool bind_target() = 0;
   // 6. The picture drawn: read back what is wanted (files, images), then show it (swap) or not.
   virtual void present(Viewer& viewer, bool drawn) = 0;
 };

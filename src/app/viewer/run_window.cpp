@@ -83,7 +83,10 @@ class WindowHost : public FrameHost {
     // The title names the scene on show, also after the picker changed it.
     if (title != title_) window_.set_title(title_ = title);
   }
-  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+  bool bind_target() override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+  }
   void present(Viewer& viewer, bool drawn) override {
     const int width = width_, height = height_;
     // F12 and the panel's record toggle (F9), from what the window shows, panel included.

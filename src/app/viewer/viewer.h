@@ -192,9 +192,11 @@ class Viewer {
   // `pixel_ratio` is framebuffer pixels per window unit; `mark_scale` is framebuffer pixels per
   // pixel of a mark's size (pin dots, the held vertex, bands of springs): the pixel ratio where
   // window units are the screen's points (unset: `pixel_ratio`), the page's device pixel ratio
-  // in the page.
+  // in the page. Without `draw`, only what drawing would change besides the pixels: the camera's
+  // framing, the drawn positions and marks (a frame no one sees still frames the shape as one seen
+  // would).
   void render(int framebuffer_width, int framebuffer_height, const Eigen::Vector2f& window_size,
-              float pixel_ratio, std::optional<float> mark_scale = std::nullopt);
+              float pixel_ratio, std::optional<float> mark_scale = std::nullopt, bool draw = true);
 
   // Keep the simulation recording its convergence whether or not the plot shows it (for
   // --convergence-csv), through scene changes too.

@@ -78,7 +78,7 @@ void Viewer::update_vertex_arrays() {
 
 void Viewer::render(int framebuffer_width, int framebuffer_height,
                     const Eigen::Vector2f& window_size, float pixel_ratio,
-                    std::optional<float> mark_scale_given) {
+                    std::optional<float> mark_scale_given, bool draw) {
   const float mark_scale = mark_scale_given.value_or(pixel_ratio);
   // Split, each side gets half of what the panel and the plots leave, under the same camera.
   const SplitArea area = split_area(window_size.x());
@@ -126,7 +126,7 @@ void Viewer::render(int framebuffer_width, int framebuffer_height,
   pick_and_drag_.mark(pointer_view(window_size), marks_);
 
   update_collider_mesh();
-  if (!renderer_) return;
+  if (!renderer_ || !draw) return;
   SolidMesh solids;
   solids.positions = collider_mesh_.positions.data();
   solids.normals = collider_mesh_.normals.data();

@@ -148,7 +148,10 @@ class PageHost : public FrameHost {
   void set_title(const std::string& title) override {
     if (title != title_) window_.set_title(title_ = title);
   }
-  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+  bool bind_target() override {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return true;
+  }
   void present(Viewer& viewer, bool drawn) override {
     // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
     // its back buffer; the file is then offered as a download (offer_download).
