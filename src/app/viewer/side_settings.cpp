@@ -87,27 +87,31 @@ SimulationParams settings_from_sliders(const SimulationParams& params, SideSlide
   for (SettingControl& control : sliders.controls) {
     const SettingSpec* spec = find_setting(control.name);
     if (!spec) continue;
+    // Only what a control changed is set: an added setting left alone stays unset.
     const SettingValue value = spec->get(params);
+    const auto set = [&](const SettingValue& shown) {
+      if (shown != value) spec->set(wanted, shown);
+    };
     switch (spec->type) {
       case SettingType::number: {
         const double now = setting_number(value), shown = taken(now, control.value);
         // A float's rounding can fall just outside the range.
-        if (shown != now) spec->set(wanted, std::clamp(shown, spec->range.low, spec->range.high));
+        if (shown != now) set(std::clamp(shown, spec->range.low, spec->range.high));
         break;
       }
       case SettingType::integer:
         // The work of a step is bounded by the mesh (Simulation::max_iterations_for_mesh).
         if (costs(spec->cost, SettingCost::step_work))
           control.whole = std::min(control.whole, most_iterations);
-        spec->set(wanted, static_cast<double>(control.whole));
+        set(static_cast<double>(control.whole));
         break;
       case SettingType::toggle:
-        spec->set(wanted, control.on);
+        set(control.on);
         break;
       case SettingType::choice: {
         const std::vector<std::string> names = spec->choices();
         if (control.whole >= 0 && control.whole < static_cast<int>(names.size()))
-          spec->set(wanted, names[control.whole]);
+          set(names[control.whole]);
         break;
       }
       case SettingType::vector:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 
@@ -93,8 +94,12 @@ const std::vector<SettingSpec>& added_settings() {
 }
 
 const std::vector<SettingSpec>& all_settings() {
-  // Registrations only append, all at start-up: the list is made again when one came after.
+  // Registrations only append, all at start-up (static initialization): the list is made again
+  // when one came after, so that a call during start-up sees those registered so far. Two
+  // threads' first calls are one after the other.
+  static std::mutex making;
   static std::vector<SettingSpec> all;
+  const std::lock_guard<std::mutex> lock(making);
   const std::vector<SettingSpec>& built_in = built_in_settings();
   if (all.size() != built_in.size() + registry().size()) {
     all = built_in;
