@@ -42,19 +42,13 @@ void refuse_unknown_scene_keys(const std::string& path, const nlohmann::json& ob
     material->allow_only({"k", "density", "mass", "vertex_masses", "friction"}, "material");
   }
   if (std::optional<JsonFields> simulation = child(top, "simulation")) {
-    std::vector<std::string> keys = {"dt",
-                                     "iterations",
-                                     "solver",
-                                     "chebyshev",
-                                     "gravity",
-                                     "gravity_model",
-                                     "first_iterate",
-                                     "damping",
-                                     "contact_offset",
-                                     "wind"};
-    // And each added setting (sim/settings/setting_registry.h) by its key.
-    for (const SettingSpec& spec : added_settings())
-      keys.push_back(setting_key(spec));
+    // Every setting a scene keeps here (sim/settings/setting_registry.h) by its key, and those
+    // read by their own readers.
+    std::vector<std::string> keys;
+    for (const SettingSpec& spec : all_settings()) {
+      if (spec.places & in_scene) keys.push_back(setting_key(spec));
+    }
+    keys.insert(keys.end(), {"gravity", "contact_offset", "wind"});
     simulation->allow_only(keys, "simulation");
     if (std::optional<JsonFields> wind = child(*simulation, "wind")) {
       wind->allow_only({"velocity", "drag", "lift", "gusts", "air_density", "on", "model"},

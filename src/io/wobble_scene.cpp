@@ -115,18 +115,33 @@ Shape jelly_shape(JsonFields& mesh) {
   return shape;
 }
 
-// `simulation.solver`: a registered solver's name (sim/solver/solver_registry.h), refused as
-// gravity_model's values are, with the names to choose from.
-std::string scene_solver(JsonFields& simulation) {
-  const std::string solver = *simulation.text("solver");
-  std::string expected;
-  const std::vector<StepSolverEntry>& solvers = registered_step_solvers();
-  for (std::size_t i = 0; i < solvers.size(); ++i) {
-    if (solver == solvers[i].name) return solver;
-    expected += (i == 0 ? "" : i + 1 == solvers.size() ? " or " : ", ");
-    expected += "\"" + std::string(solvers[i].name) + "\"";
+// A setting's value at its key of `simulation` (sim/settings/setting_registry.h), read by its
+// type: a choice refused with the names to choose from ("solver": a registered solver's).
+SettingValue scene_setting(JsonFields& simulation, const SettingSpec& spec) {
+  const std::string key = setting_key(spec);
+  switch (spec.type) {
+    case SettingType::integer:
+      return static_cast<double>(*simulation.whole(key, static_cast<int>(spec.range.low),
+                                                   static_cast<int>(spec.range.high)));
+    case SettingType::toggle:
+      return *simulation.flag(key);
+    case SettingType::choice: {
+      const std::string choice = *simulation.text(key);
+      const std::vector<std::string> names = spec.choices();
+      std::string expected;
+      for (std::size_t i = 0; i < names.size(); ++i) {
+        if (choice == names[i]) return choice;
+        expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ");
+        expected += "\"" + names[i] + "\"";
+      }
+      simulation.fail(key, expected);
+    }
+    case SettingType::vector:
+      return *simulation.vector3_in(key, spec.range);
+    case SettingType::number:
+      break;
   }
-  simulation.fail("solver", expected);
+  return *simulation.number_in(key, spec.range);
 }
 
 // "tetrahedra": [[a, b, c, d], ...], 0-based indices into the mesh's vertices V, none flat (as a
@@ -234,11 +249,13 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
 
   if (top.has("simulation")) {
     JsonFields simulation = top.object("simulation");
-    scene.params.dt = simulation.number_in("dt", limits::time_step).value_or(scene.params.dt);
-    scene.params.iterations =
-        simulation.whole("iterations", 1, limits::max_iterations).value_or(50);
-    scene.params.chebyshev = simulation.flag("chebyshev").value_or(false);
-    if (simulation.has("solver")) scene.params.solver = scene_solver(simulation);
+    // Every setting a scene keeps here (SettingPlace::in_scene: dt, iterations, the solver,
+    // Chebyshev, damping, gravity_model, first_iterate and each added setting), by its key; one
+    // left out keeps its default.
+    for (const SettingSpec& spec : all_settings()) {
+      if ((spec.places & in_scene) && simulation.has(setting_key(spec)))
+        spec.set(scene.params, scene_setting(simulation, spec));
+    }
     if (simulation.has("gravity")) {
       // A number is the downward acceleration; a vector may point anywhere (a sideways part
       // acts as a steady wind).
@@ -250,28 +267,9 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
         scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
       }
     }
-    if (const std::optional<std::string> model = simulation.text("gravity_model")) {
-      if (*model == "force_per_vertex") {
-        scene.params.gravity_model = GravityModel::force_per_vertex;
-      } else if (*model != "acceleration") {
-        simulation.fail("gravity_model", "\"acceleration\" or \"force_per_vertex\"");
-      }
-    }
-    if (const std::optional<std::string> first = simulation.text("first_iterate")) {
-      if (*first == "current_positions") {
-        scene.params.first_iterate = FirstIterate::current_positions;
-      } else if (*first != "inertial_prediction") {
-        simulation.fail("first_iterate", "\"inertial_prediction\" or \"current_positions\"");
-      }
-    }
-    scene.params.damping = simulation.number_in("damping", limits::damping).value_or(0.0);
     scene.params.contact.offset =
         simulation.number_in("contact_offset", limits::contact_offset).value_or(-1.0);
     if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind");
-    for (const SettingSpec& spec : added_settings()) {
-      if (const std::optional<double> value = simulation.number_in(setting_key(spec), spec.range))
-        scene.params.added_settings[spec.name] = *value;
-    }
   }
   if (top.has("colliders"))
     scene.params.contact.colliders = scene_colliders(path, top, "colliders");

@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "io/atomic_file.h"
+#include "io/setting_json.h"
 #include "sim/input_error.h"
 #include "sim/settings/setting_registry.h"
 #include "sim/solver/solver_registry.h"
@@ -68,27 +69,20 @@ json wind_json(const WindParams& wind) {
 }
 
 json simulation_json(const SimulationParams& params) {
-  json object = {{"dt", params.dt},
-                 {"iterations", params.iterations},
-                 {"chebyshev", params.chebyshev},
-                 {"gravity", vector_json(params.gravity)},
-                 {"damping", params.damping},
-                 {"wind", wind_json(params.wind)}};
-  // Only another solver than the default is written, so scenes saved before there was a choice
-  // and scenes that keep the default read and write the same.
-  if (params.solver != registered_step_solvers().front().name) object["solver"] = params.solver;
-  if (params.gravity_model == GravityModel::force_per_vertex) {
-    object["gravity_model"] = "force_per_vertex";
-  }
-  if (params.first_iterate == FirstIterate::current_positions) {
-    object["first_iterate"] = "current_positions";
+  json object = {{"gravity", vector_json(params.gravity)}, {"wind", wind_json(params.wind)}};
+  // Every setting a scene keeps here (SettingPlace::in_scene), by its key. A choice or an added
+  // setting only when not its default, so that scenes saved before it was there and scenes that
+  // keep the default read and write the same; the rest always, to be read and changed.
+  const SimulationParams defaults;
+  for (const SettingSpec& spec : all_settings()) {
+    if (!(spec.places & in_scene)) continue;
+    const SettingValue value = spec.get(params);
+    const bool quiet = spec.type == SettingType::choice || find_added_setting(spec.name);
+    if (!quiet || value != spec.get(defaults))
+      object[setting_key(spec)] = setting_json(spec, value);
   }
   // Negative is the automatic offset, which is what leaving the key out gives.
   if (params.contact.offset >= 0.0) object["contact_offset"] = params.contact.offset;
-  // Added settings given a value (one left at its default reads back the same without it).
-  for (const auto& [name, value] : params.added_settings) {
-    if (const SettingSpec* spec = find_added_setting(name)) object[setting_key(*spec)] = value;
-  }
   return object;
 }
 

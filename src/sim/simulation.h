@@ -15,6 +15,7 @@
 #include "sim/instruments/iteration_callback.h"
 #include "sim/instruments/step_objective.h"
 #include "sim/instruments/step_observer.h"
+#include "sim/settings/setting_registry.h"
 #include "sim/simulation_params.h"
 #include "sim/solver/local_global_solver.h"
 #include "sim/solver/local_step.h"
@@ -65,17 +66,17 @@ enum class StepStatus {
 //   project     each term's last guard after the solve, in list order
 //   report      each term's figures into last_step_timing().figures
 //
-// Cost of each change:
+// Cost of each change (a setting's is its declaration's, sim/settings/built_in_settings.cpp):
 //   set_pin_target           right-hand side only: no factorization
-//   set_k, set_dt, pin,      numeric re-factorization of Q, reusing the symbolic analysis
+//   k, dt, damping, pin,     numeric re-factorization of Q, reusing the symbolic analysis
 //   unpin, reset,              (Q's sparsity pattern never changes: its diagonal is always stored)
-//   set_damping, a step whose
-//   term changed its weights
+//   a step whose term
+//   changed its weights
 //   (collider contact: at most
 //   once in lag_steps steps)
-//   set_iterations, gravity, nothing precomputed
-//   set_state, set_wind,
-//   set_friction, colliders
+//   iterations, gravity,     nothing precomputed
+//   set_state, wind,
+//   friction, colliders
 class Simulation {
  public:
   static constexpr double pin_weight = Pins::weight;  // w
@@ -111,37 +112,24 @@ class Simulation {
   // non-finite value, leaving the state as it was.
   void set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous);
 
-  // Takes a whole settings value and does only the work the difference from the settings in force
-  // needs: k, dt, damping (and an added setting whose cost is refactorize) a numeric
-  // re-factorization; the solver or Chebyshev the solver's preparation; wind and added settings
-  // the made terms anew; gravity, friction, self-collision, iterations a value. A new dt keeps
-  // every vertex's velocity. The colliders (moved by translate_collider), the contact offset and
-  // single_precision_solve_above stay as the simulation started. Throws InputError, changing
-  // nothing, for a value out of its limits, an unknown solver or too many iterations for the mesh.
+  // The one way to change settings: takes a whole settings value and does only the work the
+  // difference from the settings in force needs, the costs of the settings that changed (their
+  // declarations, sim/settings/setting_registry.h): k, dt, damping (and an added setting whose
+  // cost is refactorize) a numeric re-factorization; the solver or Chebyshev the solver's
+  // preparation; the wind and added settings the made terms anew; gravity, friction,
+  // self-collision, iterations a value. A new dt keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt
+  // by rescaling the previous positions. Chebyshev turned on for the first time estimates ρ with
+  // a short run of plain iterations from the current state (which it leaves unchanged). The
+  // colliders (moved by translate_collider), the contact offset and single_precision_solve_above
+  // stay as the simulation started. Throws InputError, changing nothing, for a value out of its
+  // limits, an unknown solver or too many iterations for the mesh.
+  //   simulation.apply(with_setting(simulation.params(), "k", 2000.0));
   void apply(const SimulationParams& params);
-  // Each one field changed and applied.
-  void set_k(double k);
-  // Keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.
-  void set_dt(double dt);
-  void set_iterations(int iterations);
-  // Chebyshev acceleration on or off. Turning it on for the first time estimates ρ with a short
-  // run of plain iterations from the current state (which it leaves unchanged).
-  void set_chebyshev(bool on);
-  // The plain iterations of that run; ρ comes from the second half.
+  // The plain iterations of the run that estimates Chebyshev's ρ; ρ comes from the second half.
   static constexpr int chebyshev_calibration_iterations =
       LocalGlobalSolver::chebyshev_calibration_iterations;
   // The spectral radius the acceleration uses; 0 until estimated.
   double chebyshev_spectral_radius() const { return solver_->spectral_radius(); }
-  // The step solver by its registered name (solver/solver_registry.h), taking over from the
-  // next step; the state is kept. Throws InputError for an unknown name.
-  void set_solver(const std::string& name);
-  void set_gravity(const Eigen::Vector3d& gravity, GravityModel model);
-  // Damping c (1/s), within limits::damping: a numeric re-factorization.
-  void set_damping(double damping);
-  // Wind on, off or changed; nothing precomputed. Throws InputError for values out of limits.
-  void set_wind(const WindParams& wind);
-  // The material's friction coefficient against every collider without its own.
-  void set_friction(double friction);
 
   // The colliders where they are now (reset() puts them back where the scene placed them).
   const std::vector<Collider>& colliders() const { return colliders_.colliders().colliders(); }
@@ -155,9 +143,6 @@ class Simulation {
   const std::vector<char>& collider_contact_vertices() const {
     return colliders_.colliders().contact_vertices();
   }
-  // Self-collision on or off, or a new thickness; nothing precomputed. Throws InputError for a
-  // thickness out of limits::self_collision_thickness.
-  void set_self_collision(const SelfCollisionParams& self_collision);
   // Vertices a layer of the same surface pressed on in the last step (self-contact's force on
   // them), and the same as #V flags.
   int self_contact_count() const;

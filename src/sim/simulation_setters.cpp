@@ -1,9 +1,7 @@
 // Simulation::apply, the one place a change of settings is turned into work: it compares the
-// whole settings value with the one in force and does what the difference needs and no more (see
-// docs/method.md's table of costs): k, dt and damping re-factorize numerically, the solver and
-// Chebyshev prepare the solver, wind and added settings rebuild the made terms, the rest changes
-// a value. The setters of one field are each that field changed and applied. Pins re-factorize,
-// targets do not.
+// whole settings value with the one in force, setting by setting over their declarations
+// (sim/settings/setting_registry.h), and does what the costs of those that changed need and no
+// more (see docs/method.md's table of costs). Pins re-factorize, targets do not.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -18,15 +16,6 @@
 
 namespace wobble {
 
-namespace {
-
-bool same_wind(const WindParams& a, const WindParams& b) {
-  return a.on == b.on && a.model == b.model && a.velocity == b.velocity && a.drag == b.drag &&
-         a.lift == b.lift && a.gusts == b.gusts && a.air_density == b.air_density;
-}
-
-}  // namespace
-
 void Simulation::apply(const SimulationParams& wanted) {
   // Everything that can refuse does so before anything changes.
   validate_simulation_params(wanted);
@@ -36,62 +25,36 @@ void Simulation::apply(const SimulationParams& wanted) {
   next.contact.colliders = params_.contact.colliders;
   next.contact.offset = params_.contact.offset;
   next.single_precision_solve_above = params_.single_precision_solve_above;
-  if (next.iterations != params_.iterations) check_step_work(next.iterations, /*analyzed=*/true);
-  std::unique_ptr<StepSolver> solver;
-  if (next.solver != params_.solver) solver = make_step_solver(next.solver, network_.V.rows());
 
-  // What the difference needs, and nothing more (the table of costs in simulation.h).
-  bool refactor = next.k != params_.k || next.dt != params_.dt || next.damping != params_.damping;
-  bool terms = !same_wind(next.wind, params_.wind);
-  if (next.added_settings != params_.added_settings) {
-    for (const SettingSpec& spec : added_settings()) {
-      if (setting_value(next, spec.name) == setting_value(params_, spec.name)) continue;
-      terms = true;
-      if (spec.cost == SettingCost::refactorize) refactor = true;
-    }
+  // What the difference costs: the costs of every setting whose value changed.
+  SettingCost cost = SettingCost::value;
+  for (const SettingSpec& spec : all_settings()) {
+    if (spec.get(next) != spec.get(params_)) cost = cost | spec.cost;
   }
-  const bool gravity =
-      next.gravity != params_.gravity || next.gravity_model != params_.gravity_model;
-  const bool friction = next.contact.friction != params_.contact.friction;
-  const bool self = next.self_collision.on != params_.self_collision.on ||
-                    next.self_collision.thickness != params_.self_collision.thickness;
-  const bool prepare = solver || next.chebyshev != params_.chebyshev;
+  const auto needs = [cost](SettingCost what) { return costs(cost, what); };
+  if (needs(SettingCost::step_work)) check_step_work(next.iterations, /*analyzed=*/true);
+  std::unique_ptr<StepSolver> solver;
+  if (needs(SettingCost::solver)) solver = make_step_solver(next.solver, network_.V.rows());
   // v = (pᵗ − pᵗ⁻ᐞᵗ)/Δt must not change with Δt, so pᵗ⁻ᐞᵗ' = pᵗ − v Δt'.
-  if (next.dt != params_.dt) previous_ = current_ - (current_ - previous_) * (next.dt / params_.dt);
+  if (needs(SettingCost::time_step)) {
+    previous_ = current_ - (current_ - previous_) * (next.dt / params_.dt);
+  }
 
   params_ = std::move(next);
   if (solver) solver_ = std::move(solver);
-  if (gravity) {
+  if (needs(SettingCost::gravity)) {
     gravity_fext_ = wobble::gravity_forces(network_.m, params_.gravity, params_.gravity_model);
     fext_ = gravity_fext_;
   }
-  if (terms) {
+  if (needs(SettingCost::terms)) {
     rebuild_terms();
     if (made_terms_.empty()) fext_ = gravity_fext_;
   }
-  if (friction) colliders_.colliders().set_friction(params_.contact.friction);
-  if (self) self_collision_.set(params_.self_collision);
-  if (refactor) refactorize();
+  if (needs(SettingCost::friction)) colliders_.colliders().set_friction(params_.contact.friction);
+  if (needs(SettingCost::self_collision)) self_collision_.set(params_.self_collision);
+  if (needs(SettingCost::factorization)) refactorize();
   // Chebyshev's ρ and L-BFGS's history start from the state as it now is.
-  if (prepare) prepare_solver();
-}
-
-void Simulation::set_k(double k) {
-  SimulationParams changed = params_;
-  changed.k = k;
-  apply(changed);
-}
-
-void Simulation::set_dt(double dt) {
-  SimulationParams changed = params_;
-  changed.dt = dt;
-  apply(changed);
-}
-
-void Simulation::set_iterations(int iterations) {
-  SimulationParams changed = params_;
-  changed.iterations = iterations;
-  apply(changed);
+  if (needs(SettingCost::solver_state)) prepare_solver();
 }
 
 namespace {
@@ -128,25 +91,6 @@ void Simulation::check_step_work(int iterations, bool analyzed) const {
   throw InputError(message.str());
 }
 
-void Simulation::set_chebyshev(bool on) {
-  SimulationParams changed = params_;
-  changed.chebyshev = on;
-  apply(changed);
-}
-
-void Simulation::set_solver(const std::string& name) {
-  SimulationParams changed = params_;
-  changed.solver = name;
-  apply(changed);
-}
-
-void Simulation::set_gravity(const Eigen::Vector3d& gravity, GravityModel model) {
-  SimulationParams changed = params_;
-  changed.gravity = gravity;
-  changed.gravity_model = model;
-  apply(changed);
-}
-
 void Simulation::pin(int i) {
   pins_.check_vertex(i, "pin");
   if (pins_.pin(i, current_.row(i))) refactorize();
@@ -160,33 +104,9 @@ void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
   pins_.set_target(i, target);
 }
 
-void Simulation::set_damping(double damping) {
-  SimulationParams changed = params_;
-  changed.damping = damping;
-  apply(changed);
-}
-
-void Simulation::set_wind(const WindParams& wind) {
-  SimulationParams changed = params_;
-  changed.wind = wind;
-  apply(changed);
-}
-
-void Simulation::set_friction(double friction) {
-  SimulationParams changed = params_;
-  changed.contact.friction = friction;
-  apply(changed);
-}
-
 void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
   if (!offset.allFinite()) throw std::invalid_argument("translate_collider: offset is not finite");
   colliders_.colliders().translate(index, offset);
-}
-
-void Simulation::set_self_collision(const SelfCollisionParams& self_collision) {
-  SimulationParams changed = params_;
-  changed.self_collision = self_collision;
-  apply(changed);
 }
 
 double Simulation::self_collision_thickness_kept() const {

@@ -136,13 +136,12 @@ PanelRequests draw_control_panel(PanelSettings& settings, const PanelStats& stat
     static_cast<PlayRequests&>(requests) = draw_play_rows(settings, stats.warning);
   };
   parts.simulation = [&] {
-    requests.restore_defaults =
-        draw_simulation_section(settings, stats.solvers, stats.course_scene);
+    requests.restore_defaults = draw_simulation_section(settings, stats.course_scene);
   };
   parts.environment = [&] { draw_environment_section(settings, environment_offer(stats)); };
   parts.view = [&] { draw_view_section(settings); };
   parts.instruments = [&] { draw_instruments_section(settings); };
-  parts.compare = [&] { draw_split_section(settings, stats.solvers, stats.student_side); };
+  parts.compare = [&] { draw_split_section(settings, stats.student_side); };
   requests.place = draw_control_panel(parts, stats, settings.paused, ui_scale);
   return requests;
 }

@@ -34,9 +34,7 @@ struct PanelStats {
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
   std::string recording;           // while recording: "DIR/ (N frames)"
-  // What the simulation and compare sections' solver combos offer, and the label of the solver
-  // stepping the simulation ("L-BFGS"), which the stats name.
-  std::vector<SolverOption> solvers;
+  // The label of the solver stepping the simulation ("L-BFGS"), which the stats name.
   std::string solver;
   // Self-collision on (its row shows only then), and the vertices the last step's self-collision
   // held or moved.

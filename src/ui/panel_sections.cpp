@@ -31,37 +31,6 @@ void log_drag_tooltip() {
   }
 }
 
-// The solver's combo (`label`) over `solvers`, and whether Chebyshev applies to the one chosen.
-bool solver_combo(const char* label, int& solver, const std::vector<SolverOption>& solvers) {
-  if (solvers.empty()) return true;
-  if (solver < 0 || solver >= static_cast<int>(solvers.size())) solver = 0;
-  if (ImGui::BeginCombo(label, solvers[solver].label.c_str())) {
-    for (int i = 0; i < static_cast<int>(solvers.size()); ++i) {
-      if (ImGui::Selectable(solvers[i].label.c_str(), i == solver)) solver = i;
-    }
-    ImGui::EndCombo();
-  }
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip(
-        "How each step's positions are solved for, switched from the next step on:\n"
-        "local-global, the course's method (Liu et al. 2013), or\n"
-        "L-BFGS on the same energy (Liu et al. 2017)");
-  }
-  return solvers[solver].chebyshev;
-}
-
-// A checkbox greyed out, with why, when Chebyshev does not apply to the solver chosen.
-void chebyshev_checkbox(const char* label, bool& on, bool applies) {
-  if (!applies) ImGui::BeginDisabled();
-  ImGui::Checkbox(label, &on);
-  if (!applies) {
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      ImGui::SetTooltip("Chebyshev acceleration applies to the local-global iterations only");
-    }
-  }
-}
-
 }  // namespace
 
 SceneRowRequests draw_scene_rows(SceneRowSettings& settings,
@@ -220,48 +189,94 @@ namespace {
 // one every five pixels; Ctrl+click types a value.
 constexpr float drag_speed_iterations = 0.2f;
 
-// The added settings' sliders, each label followed by `suffix` (" right" for the right side).
-void draw_added_sliders(std::vector<AddedSlider>& sliders, const char* suffix) {
-  for (AddedSlider& slider : sliders) {
-    if (!slider.shown) continue;
+// A side's controls (`course_scene`: those a course keeps greyed out), each label followed by
+// `suffix` (" right" for the right side).
+void draw_setting_controls(std::vector<SettingControl>& controls, const char* suffix,
+                           bool course_scene) {
+  for (SettingControl& control : controls) {
+    if (!control.shown) continue;
+    if (control.kind == SettingControl::Kind::choice && control.choices.empty()) continue;
     const std::string label =
-        slider.label + (slider.unit.empty() ? "" : " (" + slider.unit + ")") + suffix;
-    if (slider.log_scale) {
-      log_drag(label.c_str(), &slider.value, slider.low, slider.high, "%.4g");
-      log_drag_tooltip();
-    } else {
-      ImGui::DragFloat(label.c_str(), &slider.value, (slider.high - slider.low) / 400.0f,
-                       slider.low, slider.high, "%.4g", ImGuiSliderFlags_AlwaysClamp);
+        control.label + (control.unit.empty() ? "" : " (" + control.unit + ")") + suffix;
+    // Greyed out in a course scene, which reproduces the course's program, or where another
+    // control's choice leaves it nothing to do.
+    std::string why;
+    if (course_scene && control.course_locked) {
+      why =
+          "A course scene reproduces the course's program exactly:\n"
+          "plain local-global iterations only.";
+    } else if (!control.applies_with.empty()) {
+      const SettingControl* with = nullptr;
+      for (const SettingControl& other : controls) {
+        if (other.name == control.applies_with) with = &other;
+      }
+      const bool applies = !with || with->choices.empty() || with->whole < 0 ||
+                           with->whole >= static_cast<int>(control.applies_for.size()) ||
+                           control.applies_for[with->whole];
+      if (!applies) why = control.why_not;
+    }
+    if (!why.empty()) ImGui::BeginDisabled();
+    switch (control.kind) {
+      case SettingControl::Kind::number:
+        if (control.log_scale) {
+          log_drag(label.c_str(), &control.value, control.low, control.high,
+                   control.format.c_str());
+          if (why.empty()) log_drag_tooltip();
+        } else {
+          ImGui::DragFloat(label.c_str(), &control.value, (control.high - control.low) / 400.0f,
+                           control.low, control.high, control.format.c_str(),
+                           ImGuiSliderFlags_AlwaysClamp);
+        }
+        break;
+      case SettingControl::Kind::integer:
+        ImGui::DragInt(label.c_str(), &control.whole, drag_speed_iterations,
+                       static_cast<int>(control.low), static_cast<int>(control.high), "%d",
+                       ImGuiSliderFlags_AlwaysClamp);
+        break;
+      case SettingControl::Kind::toggle:
+        ImGui::Checkbox(label.c_str(), &control.on);
+        break;
+      case SettingControl::Kind::choice: {
+        const int count = static_cast<int>(control.choices.size());
+        if (control.whole < 0 || control.whole >= count) control.whole = 0;
+        if (ImGui::BeginCombo(label.c_str(), control.choices[control.whole].c_str())) {
+          for (int i = 0; i < count; ++i) {
+            if (ImGui::Selectable(control.choices[i].c_str(), i == control.whole))
+              control.whole = i;
+          }
+          ImGui::EndCombo();
+        }
+        if (why.empty() && !control.help.empty() && ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", control.help.c_str());
+        break;
+      }
+    }
+    if (!why.empty()) {
+      ImGui::EndDisabled();
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", why.c_str());
     }
   }
 }
 
 }  // namespace
 
-bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
-                             bool course_scene) {
-  // Stiffness spans six decades and dt four: both move by a factor a pixel (log_drag.h).
-  log_drag("k (N/m)", &settings.k, SimulationSettings::min_k, SimulationSettings::max_k, "%.1f");
-  log_drag_tooltip();
-  log_drag("dt (s)", &settings.dt, SimulationSettings::min_dt, SimulationSettings::max_dt, "%.5f");
-  log_drag_tooltip();
-  ImGui::DragInt("iterations", &settings.iterations, drag_speed_iterations,
-                 SimulationSettings::min_iterations, SimulationSettings::max_iterations, "%d",
-                 ImGuiSliderFlags_AlwaysClamp);
-  // A course scene reproduces the course's program, which iterates plainly.
-  if (course_scene) ImGui::BeginDisabled();
-  const bool chebyshev_applies = solver_combo("solver", settings.solver, solvers);
-  chebyshev_checkbox("Chebyshev acceleration", settings.chebyshev,
-                     chebyshev_applies || course_scene);
-  if (course_scene) {
-    ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      ImGui::SetTooltip(
-          "A course scene reproduces the course's program exactly:\n"
-          "plain local-global iterations only.");
-    }
+SettingControl* SideSliders::control(const std::string& name) {
+  for (SettingControl& control : controls) {
+    if (control.name == name) return &control;
   }
-  draw_added_sliders(settings.added, "");
+  return nullptr;
+}
+
+const SettingControl* SideSliders::control(const std::string& name) const {
+  for (const SettingControl& control : controls) {
+    if (control.name == name) return &control;
+  }
+  return nullptr;
+}
+
+bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
+  draw_setting_controls(settings.controls, "", course_scene);
   ImGui::DragFloat("gravity (m/s^2)", &settings.gravity, 0.05f, 0.0f,
                    SimulationSettings::max_gravity, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   const bool restore_defaults = ImGui::Button("Restore defaults");
@@ -333,8 +348,7 @@ bool draw_instruments_section(InstrumentSettings& settings) {
   return csv;
 }
 
-void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,
-                        bool student_side) {
+void draw_split_section(SplitSettings& settings, bool student_side) {
   if (student_side) {
     // wobble --student: the right side is the student's step, with the seed's settings.
     ImGui::TextWrapped(
@@ -342,20 +356,9 @@ void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>
         "distance from Wobble's (left)");
     return;
   }
-  using Limits = SideSliders;  // the same ranges as the left side's
   ImGui::Checkbox("split view: right side", &settings.split);
   if (!settings.split) return;
-  SideSliders& right = settings.right;
-  log_drag("k right", &right.k, Limits::min_k, Limits::max_k, "%.1f");
-  log_drag_tooltip();
-  log_drag("dt right", &right.dt, Limits::min_dt, Limits::max_dt, "%.5f");
-  log_drag_tooltip();
-  ImGui::DragInt("iterations right", &right.iterations, drag_speed_iterations,
-                 Limits::min_iterations, Limits::max_iterations, "%d",
-                 ImGuiSliderFlags_AlwaysClamp);
-  const bool chebyshev_applies = solver_combo("solver right", right.solver, solvers);
-  chebyshev_checkbox("Chebyshev right", right.chebyshev, chebyshev_applies);
-  draw_added_sliders(right.added, " right");
+  draw_setting_controls(settings.right.controls, " right", false);
 }
 
 }  // namespace wobble

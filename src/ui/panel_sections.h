@@ -67,50 +67,54 @@ struct PlayRequests {
 };
 PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning);
 
-// A step solver as the panel offers it (the app lists the registered ones).
-struct SolverOption {
-  std::string label;       // e.g. "local-global", "L-BFGS"
-  bool chebyshev = false;  // Chebyshev acceleration applies to it
-};
-
-// A slider for a setting added beside the built-in ones (sim/settings/setting_registry.h): the
-// app fills these from the settings' declarations, one per added setting, in their order.
-struct AddedSlider {
-  std::string label;  // "tether k"
-  std::string unit;   // "N/m", or "" for a plain factor
-  float low = 0.0f, high = 1.0f;
-  bool log_scale = false;  // moves by a factor a pixel (low > 0)
-  float value = 0.0f;
+// The control of one setting on one side of the view: the app fills a side's from the settings'
+// declarations (sim/settings/setting_registry.h), one per setting each side has its own of, in
+// their order (app/viewer/side_settings.h). Labelled "LABEL (UNIT)", and " right" after it on
+// the right side.
+struct SettingControl {
+  enum class Kind { number, integer, toggle, choice };
+  Kind kind = Kind::number;
+  std::string name;                  // the setting's: "k", "tether-stiffness"
+  std::string label;                 // "k", "tether k"
+  std::string unit;                  // "N/m", or "" for a plain factor
+  std::string help;                  // a choice's tooltip
+  float low = 0.0f, high = 1.0f;     // a number's or an integer's range in the panel
+  bool log_scale = false;            // a number moves by a factor a pixel (low > 0)
+  std::string format = "%.4g";       // a number's
+  float value = 0.0f;                // a number's
+  int whole = 0;                     // an integer's; a choice's index into `choices`
+  bool on = false;                   // a switch's
+  std::vector<std::string> choices;  // a choice's labels
+  // A switch that applies only with some choices of another control of the side (Chebyshev with
+  // the local-global solver): that control's name, and for each of its choices whether it
+  // applies; greyed out, with `why_not` as its tooltip, when it does not.
+  std::string applies_with;
+  std::vector<char> applies_for;
+  std::string why_not;
+  bool course_locked = false;  // a course scene keeps it as the course has it: greyed out there
   bool shown = true;  // false: it does nothing for the scene shown (a solid's setting on cloth)
 };
 
 // What one side of the view steps with: the left side's in SimulationSettings, the right side's
 // in SplitSettings::right.
 struct SideSliders {
-  float k = 400.0f;         // N/m
-  float dt = 1.0f / 60.0f;  // s
-  int iterations = 50;      //
-  int solver = 0;           // index into the solvers offered; 0 the default
-  bool chebyshev = false;   // Chebyshev acceleration of the iterations
-  std::vector<AddedSlider> added;
+  std::vector<SettingControl> controls;
 
-  static constexpr float min_k = 1.0f, max_k = 1e6f;
-  static constexpr float min_dt = 1.0f / 240.0f, max_dt = 1.0f / 15.0f;
-  static constexpr int min_iterations = 1, max_iterations = 100;
+  // The control of the setting `name`, or null.
+  SettingControl* control(const std::string& name);
+  const SettingControl* control(const std::string& name) const;
 };
 
-// "simulation": k, dt, iterations, the solver, Chebyshev, the added settings' sliders, gravity
-// and Restore defaults (returns whether it was pressed). The solver's combo shows `solvers`
-// (none: no combo); Chebyshev is greyed out for a solver it does not apply to. A course scene
-// (`course_scene`) keeps the course's plain local-global iterations: neither another solver nor
-// Chebyshev offered.
+// "simulation": a control for each setting of the side (k, dt, iterations, the solver,
+// Chebyshev, the added settings), gravity and Restore defaults (returns whether it was
+// pressed). A course scene (`course_scene`) keeps the course's plain local-global iterations:
+// the controls `course_locked` are greyed out.
 struct SimulationSettings : SideSliders {
   float gravity = 9.81f;  // m/s², its strength along the scene's own direction
 
   static constexpr float max_gravity = 30.0f;
 };
-bool draw_simulation_section(SimulationSettings& settings, const std::vector<SolverOption>& solvers,
-                             bool course_scene);
+bool draw_simulation_section(SimulationSettings& settings, bool course_scene);
 
 // "environment": damping, friction, wind, colliders and self-collision. Friction and the
 // colliders' checkbox show only with colliders, the wind's speed and heading only for the
@@ -155,15 +159,13 @@ struct InstrumentSettings {
 // Returns whether "CSV" (what the plots show, as files) was pressed.
 bool draw_instruments_section(InstrumentSettings& settings);
 
-// "compare": the split view and its right side's own settings, its solver from `solvers` (as the
-// simulation section's); with a student's step on the right (`student_side`), what it shows
-// instead.
+// "compare": the split view and its right side's own settings (as the simulation section's);
+// with a student's step on the right (`student_side`), what it shows instead.
 struct SplitSettings {
   bool split = false;
-  SideSliders right = SideSliders{400.0f, 1.0f / 60.0f, 5, 0, false, {}};
+  SideSliders right;
 };
-void draw_split_section(SplitSettings& settings, const std::vector<SolverOption>& solvers,
-                        bool student_side);
+void draw_split_section(SplitSettings& settings, bool student_side);
 
 }  // namespace wobble
 

@@ -37,8 +37,8 @@ TEST(ContactOptions, DampingAndFrictionApplyToTheScene) {
   EXPECT_FALSE(plain.params.wind.on);
 
   const wobble::CommandLine command = parse({"cloth", "--damping", "0.5", "--friction", "0.3"});
-  EXPECT_EQ(command.damping, 0.5);
-  EXPECT_EQ(command.friction, 0.3);
+  EXPECT_EQ(command.settings.number("damping"), 0.5);
+  EXPECT_EQ(command.settings.number("friction"), 0.3);
   const wobble::Scene scene = wobble::open_scene(command);
   EXPECT_EQ(scene.params.damping, 0.5);
   EXPECT_EQ(scene.params.contact.friction, 0.3);

@@ -48,14 +48,14 @@ TEST(SelfCollisionOptions, HelpListsThem) {
 }
 
 TEST(SelfCollisionOptions, OffUnlessAskedFor) {
-  EXPECT_FALSE(parse({"cloth"}).self_collision);
+  EXPECT_FALSE(parse({"cloth"}).settings.has("self-collision"));
   EXPECT_FALSE(wobble::open_scene(parse({"cloth"})).params.self_collision.on);
 }
 
 TEST(SelfCollisionOptions, TheFlagTurnsItOnWithTheScenesThickness) {
   const wobble::CommandLine command = parse({"cloth", "--self-collision"});
-  EXPECT_TRUE(command.self_collision);
-  EXPECT_FALSE(command.self_collision_thickness);
+  EXPECT_EQ(command.settings.toggle("self-collision"), true);
+  EXPECT_FALSE(command.settings.has("self-collision-thickness"));
   const wobble::Scene scene = wobble::open_scene(command);
   EXPECT_TRUE(scene.params.self_collision.on);
   EXPECT_EQ(scene.params.self_collision.thickness, 0.01);
@@ -72,8 +72,7 @@ TEST(SelfCollisionOptions, TheFlagTurnsItOnWithTheScenesThickness) {
 
 TEST(SelfCollisionOptions, TheThicknessImpliesTheFlagAndIsRangeChecked) {
   const wobble::CommandLine command = parse({"cloth", "--self-collision-thickness", "0.002"});
-  EXPECT_TRUE(command.self_collision);
-  EXPECT_EQ(command.self_collision_thickness, 0.002);
+  EXPECT_EQ(command.settings.number("self-collision-thickness"), 0.002);
   const wobble::Scene scene = wobble::open_scene(command);
   EXPECT_TRUE(scene.params.self_collision.on);
   EXPECT_EQ(scene.params.self_collision.thickness, 0.002);

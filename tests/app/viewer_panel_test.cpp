@@ -84,7 +84,6 @@ TEST(ViewerPanel, TheSolverComboSwitchesTheSimulationWhileItRuns) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
   ASSERT_EQ(f.viewer.simulation().params().solver, "local-global");
   EXPECT_EQ(f.viewer.stats().solver, "local-global");
-  ASSERT_EQ(f.viewer.stats().solvers.size(), 2u);
   for (int i = 0; i < 5; ++i)
     f.viewer.advance();
   const Eigen::MatrixXd before = f.viewer.simulation().positions();

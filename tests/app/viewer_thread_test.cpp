@@ -29,7 +29,7 @@ wobble::ViewerSettings with_a_scripted_drag() {
   drag.first_frame = 5;
   drag.last_frame = 25;
   settings.drags.push_back(drag);
-  settings.settings.dt = frame_seconds / 4.0;
+  settings.settings.values["dt"] = frame_seconds / 4.0;
   return settings;
 }
 

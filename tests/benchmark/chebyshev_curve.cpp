@@ -20,7 +20,8 @@ struct Point {
 // Leaves the simulation in that state.
 Point measure(Simulation& simulation, const Eigen::MatrixXd& current,
               const Eigen::MatrixXd& previous, const Eigen::MatrixXd& converged, int iterations) {
-  simulation.set_iterations(iterations);
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(iterations)));
   double best = 1e300;
   for (int repeat = 0; repeat < 3; ++repeat) {
     simulation.set_state(current, previous);
@@ -41,20 +42,22 @@ Eigen::MatrixXd step_from_here(Simulation& simulation, int iterations) {
   const Eigen::MatrixXd current = simulation.positions();
   const Eigen::MatrixXd previous = simulation.previous_positions();
   const int kept = simulation.params().iterations;
-  simulation.set_iterations(iterations);
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(iterations)));
   simulation.step();
   Eigen::MatrixXd next = simulation.positions();
   simulation.set_state(current, previous);
-  simulation.set_iterations(kept);
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(kept)));
   return next;
 }
 
 // The step from `simulation`'s state, converged by `iterations` plain iterations.
 Eigen::MatrixXd converged_step(Simulation& simulation, int iterations) {
   const bool accelerated = simulation.params().chebyshev;
-  simulation.set_chebyshev(false);
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", false));
   Eigen::MatrixXd converged = step_from_here(simulation, iterations);
-  simulation.set_chebyshev(accelerated);
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", accelerated));
   return converged;
 }
 
@@ -69,18 +72,20 @@ double step_error(Simulation& simulation, const Eigen::MatrixXd& converged, int 
 // accelerated iterations reach the error of 10 plain ones, both from the inertial prediction.
 void print_fall_summary(const BenchmarkScene& scene) {
   Simulation simulation(scene.scene.network, scene.scene.pins, scene.scene.params);
-  simulation.set_iterations(10);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 10.0));
   std::vector<int> needed;
   for (int frame = 1; frame <= 120; ++frame) {
     simulation.step();
     if (frame % 10 != 0) continue;
     const Eigen::MatrixXd converged = converged_step(simulation, 400);
     const double plain = step_error(simulation, converged, 10);
-    simulation.set_chebyshev(true);  // ρ from the first sample's state, as a user would get it
+    simulation.apply(
+        wobble::with_setting(simulation.params(), "chebyshev",
+                             true));  // ρ from the first sample's state, as a user would get it
     int n = 1;
     while (n < 10 && step_error(simulation, converged, n) > plain)
       ++n;
-    simulation.set_chebyshev(false);
+    simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", false));
     needed.push_back(n);
   }
   std::printf(
@@ -107,7 +112,7 @@ void print_chebyshev_curve(const BenchmarkScene& scene) {
   Simulation course(scene.scene.network, scene.scene.pins, from_current);
   Simulation simulation(scene.scene.network, scene.scene.pins, from_inertia);
   // Let the cloth fall for a while, so the step being measured has motion in it.
-  simulation.set_iterations(10);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 10.0));
   for (int frame = 0; frame < 30; ++frame)
     simulation.step();
   const Eigen::MatrixXd current = simulation.positions();
@@ -120,7 +125,8 @@ void print_chebyshev_curve(const BenchmarkScene& scene) {
     plain_course.push_back(measure(course, current, previous, converged, iterations));
     plain.push_back(measure(simulation, current, previous, converged, iterations));
   }
-  simulation.set_chebyshev(true);  // estimates ρ here, from this state
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev",
+                                        true));  // estimates ρ here, from this state
   for (int iterations : counts)
     chebyshev.push_back(measure(simulation, current, previous, converged, iterations));
 

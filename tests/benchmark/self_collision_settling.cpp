@@ -72,7 +72,11 @@ void print_self_collision_landing() {
       long crossed = 0;
       for (int step = 0; step < 460; ++step) {
         if (step == start.free_steps) {
-          simulation.set_self_collision(params);
+          simulation.apply([&] {
+            wobble::SimulationParams changed = simulation.params();
+            changed.self_collision = params;
+            return changed;
+          }());
           crossed = testing::count_mesh_crossings(simulation.positions(), scene.network.F);
         }
         simulation.step();

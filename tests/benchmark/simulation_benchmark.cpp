@@ -62,7 +62,8 @@ double milliseconds(std::chrono::steady_clock::time_point start) {
 void paired_step(benchmark::State& state, const BenchmarkScene* scene, int iterations) {
   Simulation& simulation = simulation_for(*scene);
   ReferenceStepper& reference = reference_for(*scene);
-  simulation.set_iterations(iterations);
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(iterations)));
   double plain = 1e300, wobble = 1e300, local = 0.0, global = 0.0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
@@ -105,9 +106,9 @@ void wobble_refactor(benchmark::State& state, const BenchmarkScene* scene) {
   double k = scene->scene.params.k;
   for (auto _ : state) {
     k = k == scene->scene.params.k ? 1.01 * k : scene->scene.params.k;
-    simulation.set_k(k);
+    simulation.apply(wobble::with_setting(simulation.params(), "k", k));
   }
-  simulation.set_k(scene->scene.params.k);
+  simulation.apply(wobble::with_setting(simulation.params(), "k", scene->scene.params.k));
 }
 
 // Keeps every run's time, by name, for the table printed at the end.

@@ -74,7 +74,7 @@ TEST(ContactScenes, TableclothStaysWithFrictionAndSlidesOffWithout) {
   EXPECT_NEAR(held->positions().col(0).mean(), 0.3, 0.1);
 
   auto slippery = open("tablecloth");
-  slippery->set_friction(0.0);
+  slippery->apply(wobble::with_setting(slippery->params(), "friction", 0.0));
   expect_no_penetration(run_scene(*slippery, 300), *slippery);
   EXPECT_GT(slippery->positions().col(0).mean(), 0.7) << "it slides off the table's +x side";
 }

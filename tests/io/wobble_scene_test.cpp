@@ -309,7 +309,7 @@ TEST(WobbleScene, ErrorsNameTheFileTheKeyAndWhatWasExpected) {
       {R"({"mesh": {"generator": "cloth"}, "simulation": {"solver": ["lbfgs"]}})",
        "simulation.solver: expected a string"},
       {R"({"mesh": {"generator": "cloth"}, "simulation": {"first_iterate": "zero"}})",
-       "simulation.first_iterate: expected \"inertial_prediction\" or \"current_positions\""},
+       "simulation.first_iterate: expected \"current_positions\" or \"inertial_prediction\""},
       {R"({"mesh": {"generator": "cloth"},
            "simulation": {"wind": {"velocity": [1, 0, 0], "model": "storm"}}})",
        "simulation.wind.model: expected \"aerodynamic\" or \"course\""},

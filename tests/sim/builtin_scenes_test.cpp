@@ -40,7 +40,7 @@ TEST(BuiltinScenes, EveryListedSceneBuildsAndSimulates) {
     const wobble::Scene scene = wobble::make_builtin_scene(name);
     EXPECT_EQ(scene.name, name);
     wobble::Simulation simulation(scene.network, scene.pins, scene.params, scene.initial_velocity);
-    simulation.set_iterations(10);
+    simulation.apply(wobble::with_setting(simulation.params(), "iterations", 10.0));
     for (int step = 0; step < 5; ++step)
       simulation.step();
     EXPECT_TRUE(simulation.positions().allFinite());

@@ -26,17 +26,18 @@ double step_error(bool chebyshev, int iterations,
   wobble::Scene scene = wobble::make_builtin_scene("cloth");
   scene.params.first_iterate = first;
   wobble::Simulation simulation(scene.network, scene.pins, scene.params);
-  simulation.set_iterations(10);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 10.0));
   for (int frame = 0; frame < 20; ++frame)
     simulation.step();
   const Eigen::MatrixXd current = simulation.positions(),
                         previous = simulation.previous_positions();
-  simulation.set_iterations(3000);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 3000.0));
   simulation.step();
   const Eigen::MatrixXd converged = simulation.positions();
   simulation.set_state(current, previous);
-  simulation.set_chebyshev(chebyshev);
-  simulation.set_iterations(iterations);
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", chebyshev));
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(iterations)));
   simulation.step();
   return (simulation.positions() - converged).norm() / (current - converged).norm();
 }
@@ -83,7 +84,7 @@ TEST(Chebyshev, EstimatesRhoOnceWhenTurnedOn) {
   wobble::Simulation simulation(scene.network, scene.pins, scene.params);
   EXPECT_EQ(simulation.chebyshev_spectral_radius(), 0.0);
   const Eigen::MatrixXd before = simulation.positions();
-  simulation.set_chebyshev(true);
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", true));
   EXPECT_GT(simulation.chebyshev_spectral_radius(), 0.5);
   EXPECT_LT(simulation.chebyshev_spectral_radius(), 1.0);
   EXPECT_EQ(simulation.positions(), before) << "calibration must not move the cloth";
@@ -99,8 +100,9 @@ TEST(Chebyshev, StaysStableWithFewIterationsThroughADrag) {
   for (int iterations = 1; iterations <= 5; ++iterations) {
     SCOPED_TRACE(iterations);
     wobble::Simulation simulation(scene.network, scene.pins, scene.params);
-    simulation.set_chebyshev(true);
-    simulation.set_iterations(iterations);
+    simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", true));
+    simulation.apply(
+        wobble::with_setting(simulation.params(), "iterations", static_cast<double>(iterations)));
     const bool was_pinned = simulation.is_pinned(0);
     for (int frame = 0; frame < 150; ++frame) {
       if (frame == 10 && !was_pinned) simulation.pin(0);

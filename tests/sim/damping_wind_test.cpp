@@ -46,16 +46,18 @@ TEST(Damping, IsANumericRefactorizationOnlyWhenItChanges) {
   const wobble::testing::TestMesh grid = wobble::testing::grid_mesh();
   Simulation simulation(grid.network, grid.pins, wobble::testing::test_params());
   const int before = simulation.numeric_factorizations();
-  simulation.set_damping(2.0);
+  simulation.apply(wobble::with_setting(simulation.params(), "damping", 2.0));
   EXPECT_EQ(simulation.numeric_factorizations(), before + 1);
-  simulation.set_damping(2.0);
+  simulation.apply(wobble::with_setting(simulation.params(), "damping", 2.0));
   EXPECT_EQ(simulation.numeric_factorizations(), before + 1);
   EXPECT_EQ(simulation.symbolic_analyses(), 1);
-  EXPECT_THROW(simulation.set_damping(-1.0), wobble::InputError);
-  EXPECT_THROW(simulation.set_damping(std::nan("")), wobble::InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "damping", -1.0)),
+               wobble::InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "damping", std::nan(""))),
+               wobble::InputError);
   // Damping slows a swinging cloth: less kinetic energy after a second.
   Simulation damped(grid.network, grid.pins, wobble::testing::test_params());
-  damped.set_damping(4.0);
+  damped.apply(wobble::with_setting(damped.params(), "damping", 4.0));
   Simulation free(grid.network, grid.pins, wobble::testing::test_params());
   double damped_motion = 0.0, free_motion = 0.0;  // Σ‖v‖² over the second half-second
   for (int step = 0; step < 60; ++step) {
@@ -217,11 +219,19 @@ TEST(Wind, NeverRefactorizesAndTurnsOff) {
   SimulationParams params = wobble::testing::test_params();
   Simulation simulation(grid.network, grid.pins, params);
   const int before = simulation.numeric_factorizations();
-  simulation.set_wind(WindParams::default_breeze());
+  simulation.apply([&] {
+    wobble::SimulationParams changed = simulation.params();
+    changed.wind = WindParams::default_breeze();
+    return changed;
+  }());
   for (int step = 0; step < 20; ++step)
     simulation.step();
   const Eigen::MatrixXd windy = simulation.external_forces();
-  simulation.set_wind(WindParams());
+  simulation.apply([&] {
+    wobble::SimulationParams changed = simulation.params();
+    changed.wind = WindParams();
+    return changed;
+  }());
   simulation.step();
   EXPECT_EQ(simulation.numeric_factorizations(), before);
   // Off again: gravity alone.
@@ -230,7 +240,12 @@ TEST(Wind, NeverRefactorizesAndTurnsOff) {
   EXPECT_GT((windy - gravity).norm(), 1e-3);
   WindParams wild = WindParams::default_breeze();
   wild.gusts = 3.0;
-  EXPECT_THROW(simulation.set_wind(wild), wobble::InputError);
+  EXPECT_THROW(simulation.apply([&] {
+    wobble::SimulationParams changed = simulation.params();
+    changed.wind = wild;
+    return changed;
+  }()),
+               wobble::InputError);
 }
 
 }  // namespace

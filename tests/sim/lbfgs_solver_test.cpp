@@ -160,14 +160,17 @@ TEST(Lbfgs, SwitchesWithLocalGlobalBetweenSteps) {
   simulation.set_convergence_recording(true);
   simulation.step();
   EXPECT_STREQ(simulation.last_convergence().solver, "local-global");
-  simulation.set_solver("lbfgs");
+  simulation.apply(wobble::with_setting(simulation.params(), "solver", std::string("lbfgs")));
   EXPECT_EQ(simulation.params().solver, "lbfgs");
   simulation.step();
   EXPECT_STREQ(simulation.last_convergence().solver, "lbfgs");
-  simulation.set_solver("local-global");
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "solver", std::string("local-global")));
   simulation.step();
   EXPECT_STREQ(simulation.last_convergence().solver, "local-global");
-  EXPECT_THROW(simulation.set_solver("newton"), wobble::InputError);
+  EXPECT_THROW(
+      simulation.apply(wobble::with_setting(simulation.params(), "solver", std::string("newton"))),
+      wobble::InputError);
 }
 
 TEST(SolveContactEnergy, GradientMatchesFiniteDifferences) {

@@ -95,12 +95,12 @@ TEST(SimulationAllocation, StepAllocatesNothing) {
     simulation.set_convergence_recording(true);
     simulation.step();
     EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
-    simulation.set_chebyshev(true);
+    simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", true));
     simulation.step();
     EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
     EXPECT_EQ(simulation.last_convergence().iterations(), scene.params.iterations);
     // Nor does L-BFGS, traced or not.
-    simulation.set_solver("lbfgs");
+    simulation.apply(wobble::with_setting(simulation.params(), "solver", std::string("lbfgs")));
     simulation.step();
     EXPECT_EQ(count_mallocs([&] { simulation.step(); }), 0);
     simulation.set_convergence_recording(false);

@@ -181,7 +181,7 @@ void expect_converges_to_newton(const wobble::SpringNetwork& network, const std:
     problem.targets.row(i) = simulation.pin_target(i).transpose();
   const Eigen::MatrixXd newton = problem.newton_minimizer();
 
-  simulation.set_iterations(2000);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 2000.0));
   simulation.step();
   const Eigen::MatrixXd& local_global = simulation.positions();
   EXPECT_LE((local_global - newton).cwiseAbs().maxCoeff(), 1e-8);
@@ -245,7 +245,7 @@ TEST(SimulationPhysics, ChangingDtKeepsVelocity) {
   const Eigen::MatrixXd before = simulation.velocities();
   const Eigen::MatrixXd positions = simulation.positions();
   ASSERT_GT(before.cwiseAbs().maxCoeff(), 0.1) << "the cloth must be moving";
-  simulation.set_dt(1.0 / 240.0);
+  simulation.apply(wobble::with_setting(simulation.params(), "dt", 1.0 / 240.0));
   EXPECT_EQ(simulation.positions(), positions);
   EXPECT_LE((simulation.velocities() - before).cwiseAbs().maxCoeff(), 1e-9);
   // A quarter of the old step later the cloth has moved about a quarter as far.

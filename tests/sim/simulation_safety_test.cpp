@@ -128,9 +128,11 @@ TEST(SimulationSafety, TheWorkOfAStepIsBoundedByIterationsTimesTheMesh) {
   EXPECT_LE(most * per_iteration, wobble::limits::max_step_work);
   EXPECT_GT((most + 1) * per_iteration, wobble::limits::max_step_work);
   EXPECT_LT(most, wobble::Simulation::max_iterations);  // the product binds before the limit
-  EXPECT_NO_THROW(simulation.set_iterations(most));
+  EXPECT_NO_THROW(simulation.apply(
+      wobble::with_setting(simulation.params(), "iterations", static_cast<double>(most))));
   try {
-    simulation.set_iterations(most + 1);
+    simulation.apply(
+        wobble::with_setting(simulation.params(), "iterations", static_cast<double>(most + 1)));
     ADD_FAILURE() << "one iteration past the bound was taken";
   } catch (const wobble::InputError& error) {
     const std::string message = error.what();

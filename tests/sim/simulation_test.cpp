@@ -68,7 +68,9 @@ TEST(Simulation, ExternalForcesFollowTheGravityModel) {
                 .cwiseAbs()
                 .maxCoeff(),
             1e-15);
-  simulation.set_gravity(Eigen::Vector3d(0, -9.8, 0), wobble::GravityModel::force_per_vertex);
+  simulation.apply(wobble::with_setting(
+      wobble::with_setting(simulation.params(), "gravity", Eigen::Vector3d(0, -9.8, 0)),
+      "gravity-model", std::string("force_per_vertex")));
   for (Eigen::Index i = 0; i < mesh.network.V.rows(); ++i) {
     EXPECT_EQ(simulation.external_forces().row(i), Eigen::RowVector3d(0, -9.8, 0));
   }
@@ -82,8 +84,10 @@ TEST(Simulation, TargetMovesNeverFactorizeWhilePinsAndParametersDo) {
 
   simulation.set_pin_target(mesh.pins[0], Eigen::Vector3d(0.1, 0.2, 0.3));
   simulation.step();
-  simulation.set_iterations(10);
-  simulation.set_gravity(Eigen::Vector3d(0, -1, 0), wobble::GravityModel::acceleration);
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 10.0));
+  simulation.apply(wobble::with_setting(
+      wobble::with_setting(simulation.params(), "gravity", Eigen::Vector3d(0, -1, 0)),
+      "gravity-model", std::string("acceleration")));
   simulation.step();
   EXPECT_EQ(simulation.numeric_factorizations(), 1) << "target moves and steps must not factorize";
 
@@ -93,9 +97,9 @@ TEST(Simulation, TargetMovesNeverFactorizeWhilePinsAndParametersDo) {
   EXPECT_EQ(simulation.numeric_factorizations(), 2);
   simulation.unpin(14);
   EXPECT_EQ(simulation.numeric_factorizations(), 3);
-  simulation.set_k(500.0);
+  simulation.apply(wobble::with_setting(simulation.params(), "k", 500.0));
   EXPECT_EQ(simulation.numeric_factorizations(), 4);
-  simulation.set_dt(1.0 / 120.0);
+  simulation.apply(wobble::with_setting(simulation.params(), "dt", 1.0 / 120.0));
   EXPECT_EQ(simulation.numeric_factorizations(), 5);
   EXPECT_EQ(simulation.symbolic_analyses(), 1) << "the pattern never changes";
 }
@@ -105,8 +109,8 @@ TEST(Simulation, RefactorizedSystemMatchesAFreshOne) {
   const auto mesh = wobble::testing::grid_mesh();
   SimulationParams params = test_params();
   Simulation changed(mesh.network, {0}, params);
-  changed.set_k(700.0);
-  changed.set_dt(1.0 / 90.0);
+  changed.apply(wobble::with_setting(changed.params(), "k", 700.0));
+  changed.apply(wobble::with_setting(changed.params(), "dt", 1.0 / 90.0));
   changed.pin(5);
   params.k = 700.0;
   params.dt = 1.0 / 90.0;
@@ -194,12 +198,14 @@ TEST(Simulation, SolverIsChosenByItsRegisteredName) {
   Simulation switched(mesh.network, {0}, params), fresh(mesh.network, {0}, params);
   switched.step();
   fresh.step();
-  switched.set_solver("local-global");
+  switched.apply(wobble::with_setting(switched.params(), "solver", std::string("local-global")));
   EXPECT_EQ(switched.positions(), fresh.positions());
   switched.step();
   fresh.step();
   EXPECT_EQ(switched.positions(), fresh.positions());
-  EXPECT_THROW(switched.set_solver("no such solver"), InputError);
+  EXPECT_THROW(switched.apply(wobble::with_setting(switched.params(), "solver",
+                                                   std::string("no such solver"))),
+               InputError);
   EXPECT_EQ(switched.params().solver, "local-global");
 }
 
@@ -222,9 +228,13 @@ TEST(Simulation, RefusesBadInputWithTypedErrors) {
                InputError);
 
   Simulation simulation(mesh.network, {0}, test_params());
-  EXPECT_THROW(simulation.set_k(std::numeric_limits<double>::quiet_NaN()), InputError);
-  EXPECT_THROW(simulation.set_dt(-0.01), InputError);
-  EXPECT_THROW(simulation.set_iterations(0), InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "k",
+                                                     std::numeric_limits<double>::quiet_NaN())),
+               InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "dt", -0.01)),
+               InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "iterations", 0.0)),
+               InputError);
   EXPECT_THROW(simulation.pin(4), std::out_of_range);
   EXPECT_THROW(simulation.set_pin_target(2, Eigen::Vector3d::Zero()), std::invalid_argument);
   // A refused change leaves the simulation as it was.

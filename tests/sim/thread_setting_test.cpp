@@ -88,7 +88,8 @@ int live_threads() {
   wobble::Simulation simulation(cloth, pins, params);
   for (int step = 0; step < 5; ++step)
     simulation.step();
-  simulation.set_k(1500.0);  // a second factorization
+  simulation.apply(
+      wobble::with_setting(simulation.params(), "k", 1500.0));  // a second factorization
   for (int step = 0; step < 5; ++step)
     simulation.step();
   const int count = live_threads();

@@ -61,17 +61,27 @@ TEST(ValueLimits, TheSimulationRefusesWhatTheLimitsRefuse) {
   const auto mesh = wobble::testing::chain_mesh(2);
   wobble::SimulationParams params;
   wobble::Simulation simulation(mesh.network, mesh.pins, params);
-  EXPECT_NO_THROW(simulation.set_k(limits::stiffness.high));
-  EXPECT_THROW(simulation.set_k(1e308), wobble::InputError);
-  EXPECT_NO_THROW(simulation.set_dt(limits::time_step.high));
-  EXPECT_THROW(simulation.set_dt(1e300), wobble::InputError);
-  EXPECT_THROW(simulation.set_dt(1e-300), wobble::InputError);
-  EXPECT_THROW(simulation.set_iterations(limits::max_iterations + 1), wobble::InputError);
+  EXPECT_NO_THROW(
+      simulation.apply(wobble::with_setting(simulation.params(), "k", limits::stiffness.high)));
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "k", 1e308)),
+               wobble::InputError);
+  EXPECT_NO_THROW(
+      simulation.apply(wobble::with_setting(simulation.params(), "dt", limits::time_step.high)));
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "dt", 1e300)),
+               wobble::InputError);
+  EXPECT_THROW(simulation.apply(wobble::with_setting(simulation.params(), "dt", 1e-300)),
+               wobble::InputError);
   EXPECT_THROW(
-      simulation.set_gravity(Eigen::Vector3d(0, -1e300, 0), wobble::GravityModel::acceleration),
+      simulation.apply(wobble::with_setting(simulation.params(), "iterations",
+                                            static_cast<double>(limits::max_iterations + 1))),
+      wobble::InputError);
+  EXPECT_THROW(
+      simulation.apply(wobble::with_setting(
+          wobble::with_setting(simulation.params(), "gravity", Eigen::Vector3d(0, -1e300, 0)),
+          "gravity-model", std::string("acceleration"))),
       wobble::InputError);
   try {
-    simulation.set_k(1e308);
+    simulation.apply(wobble::with_setting(simulation.params(), "k", 1e308));
   } catch (const wobble::InputError& error) {
     EXPECT_EQ(std::string(error.what()),
               "k: expected a positive number within the limits 1e-6 to 1e8 N/m, got 1e308");

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "panel_driver.h"
 #include "ui/log_drag.h"
@@ -15,13 +16,16 @@ using wobble::PanelSettings;
 using wobble::SideSliders;
 using wobble::testing::PanelDriver;
 
-// The solvers as the viewer offers them.
-const std::vector<wobble::SolverOption> solvers = {{"local-global", true}, {"L-BFGS", false}};
+// A side's control of the setting `name`.
+wobble::SettingControl& control(SideSliders& side, const char* name) {
+  wobble::SettingControl* found = side.control(name);
+  if (found == nullptr) throw std::logic_error(std::string("no control ") + name);
+  return *found;
+}
 
 // Every row the panel can show at once: the split view's, self-collision's, the colliders',
 // the solver combos, a warning, a recording and two notes.
 void show_everything(PanelDriver& panel) {
-  panel.stats.solvers = solvers;
   panel.stats.solver = "local-global";
   panel.settings.split = true;
   panel.settings.self_collision = true;
@@ -85,11 +89,11 @@ TEST_P(PanelFits, TheStatsStayInViewAndEveryRowIsReachable) {
                               "convergence",
                               "compare",
                               "split view: right side",
-                              "k right",
-                              "dt right",
+                              "k (N/m) right",
+                              "dt (s) right",
                               "iterations right",
                               "solver right",
-                              "Chebyshev right",
+                              "Chebyshev acceleration right",
                               "timings",
                               "scene notes"};
   panel.scroll_to(/*bottom=*/false);
@@ -178,23 +182,25 @@ TEST(ControlPanel, ADragOf60PixelsMovesKByOnePercentAPixel) {
     const double counted = steps == 60 ? 58.0 : 60.0;
     PanelDriver panel(1280.0f, 720.0f, 1.0f);
     panel.settle();
-    ASSERT_EQ(panel.settings.k, 400.0f);
+    ASSERT_EQ(control(panel.settings, "k").value, 400.0f);
     const std::optional<ImVec2> at = panel.find("k (N/m)");
     ASSERT_TRUE(at);
     panel.drag(*at, 60.0f, steps);
     // Each frame's value is rounded to the 0.1 shown; ImGui keeps the rest for the next frame.
-    EXPECT_NEAR(panel.settings.k, 400.0 * std::pow(1.01, counted), 0.2) << steps << " steps";
+    EXPECT_NEAR(control(panel.settings, "k").value, 400.0 * std::pow(1.01, counted), 0.2)
+        << steps << " steps";
     panel.drag(*at, -60.0f, steps);
-    EXPECT_NEAR(panel.settings.k, 400.0f, 0.2f) << "back where it was, " << steps << " steps";
+    EXPECT_NEAR(control(panel.settings, "k").value, 400.0f, 0.2f)
+        << "back where it was, " << steps << " steps";
   }
   PanelDriver panel(1280.0f, 720.0f, 1.0f);
   panel.settle();
   const std::optional<ImVec2> at = panel.find("k (N/m)");
   ASSERT_TRUE(at);
   panel.drag(*at, 3000.0f, 30);
-  EXPECT_EQ(panel.settings.k, PanelSettings::max_k);
+  EXPECT_EQ(control(panel.settings, "k").value, control(panel.settings, "k").high);
   panel.drag(*at, -3000.0f, 30);
-  EXPECT_EQ(panel.settings.k, PanelSettings::min_k);
+  EXPECT_EQ(control(panel.settings, "k").value, control(panel.settings, "k").low);
 }
 
 // Every quantity over decades moves by the same factor a pixel, each from a value in its range.
@@ -205,11 +211,13 @@ TEST(ControlPanel, EveryDragOverDecadesMovesByTheSameFactor) {
     float start;
   };
   const Case cases[] = {
-      {"dt (s)", [](PanelSettings& s) -> float& { return s.dt; }, 0.01f},
+      {"dt (s)", [](PanelSettings& s) -> float& { return control(s, "dt").value; }, 0.01f},
       {"damping (1/s)", [](PanelSettings& s) -> float& { return s.damping; }, 0.1f},
       {"thickness (mm)", [](PanelSettings& s) -> float& { return s.self_collision_mm; }, 10.0f},
-      {"k right", [](PanelSettings& s) -> float& { return s.right.k; }, 2000.0f},
-      {"dt right", [](PanelSettings& s) -> float& { return s.right.dt; }, 0.01f}};
+      {"k (N/m) right", [](PanelSettings& s) -> float& { return control(s.right, "k").value; },
+       2000.0f},
+      {"dt (s) right", [](PanelSettings& s) -> float& { return control(s.right, "dt").value; },
+       0.01f}};
   for (const Case& c : cases) {
     PanelDriver panel(1280.0f, 720.0f, 1.0f);
     show_everything(panel);
@@ -248,9 +256,9 @@ TEST(ControlPanel, CtrlClickTypesAnExactK) {
     panel.frame(*at);
   };
   type("1234.5");
-  EXPECT_EQ(panel.settings.k, 1234.5f);
+  EXPECT_EQ(control(panel.settings, "k").value, 1234.5f);
   type("5e7");
-  EXPECT_EQ(panel.settings.k, PanelSettings::max_k);
+  EXPECT_EQ(control(panel.settings, "k").value, control(panel.settings, "k").high);
 }
 
 // Chebyshev applies to local-global only: with L-BFGS chosen its checkbox, on either side, is
@@ -262,26 +270,28 @@ TEST(ControlPanel, ChebyshevIsGreyedOutForASolverItDoesNotApplyTo) {
   };
   for (const Case c :
        {Case{"Chebyshev acceleration", [](PanelSettings& s) -> SideSliders& { return s; }},
-        Case{"Chebyshev right", [](PanelSettings& s) -> SideSliders& { return s.right; }}}) {
+        Case{"Chebyshev acceleration right",
+             [](PanelSettings& s) -> SideSliders& { return s.right; }}}) {
     SCOPED_TRACE(c.checkbox);
     PanelDriver panel(1920.0f, 1080.0f, 1.0f);
     show_everything(panel);
-    c.side(panel.settings).solver = 1;  // L-BFGS
+    control(c.side(panel.settings), "solver").whole = 1;  // L-BFGS
     panel.settle();
     const std::optional<ImVec2> box = panel.find(c.checkbox);
     ASSERT_TRUE(box);
     panel.click(*box);
-    EXPECT_FALSE(c.side(panel.settings).chebyshev) << "greyed out";
-    c.side(panel.settings).solver = 0;  // local-global
+    EXPECT_FALSE(control(c.side(panel.settings), "chebyshev").on) << "greyed out";
+    control(c.side(panel.settings), "solver").whole = 0;  // local-global
     panel.frame();
     panel.click(*box);
-    EXPECT_TRUE(c.side(panel.settings).chebyshev);
+    EXPECT_TRUE(control(c.side(panel.settings), "chebyshev").on);
   }
 }
 
-// Without solvers offered (a panel drawn on its own), there is no combo.
+// Without solvers offered, there is no combo.
 TEST(ControlPanel, NoSolversOfferedNoCombo) {
   PanelDriver panel(1920.0f, 1080.0f, 1.0f);
+  control(panel.settings, "solver").choices.clear();
   panel.settle();
   EXPECT_FALSE(panel.find("solver"));
   EXPECT_TRUE(panel.find("Chebyshev acceleration"));
@@ -308,7 +318,8 @@ TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
     float (*value)(const PanelSettings&);
   };
   const Case cases[] = {
-      {"iterations", [](const PanelSettings& s) { return static_cast<float>(s.iterations); }},
+      {"iterations",
+       [](const PanelSettings& s) { return static_cast<float>(s.control("iterations")->whole); }},
       {"gravity (m/s^2)", [](const PanelSettings& s) { return s.gravity; }},
       {"friction", [](const PanelSettings& s) { return s.friction; }},
       {"wind (m/s)", [](const PanelSettings& s) { return s.wind_speed; }},

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../app/headless_imgui.h"
+#include "app/viewer/side_settings.h"
 #include "ui/control_panel.h"
 
 namespace wobble::testing {
@@ -19,8 +20,15 @@ namespace wobble::testing {
 // at a time. Nothing is drawn.
 class PanelDriver {
  public:
+  // Both sides' controls as the viewer fills them (app/viewer/side_settings.h): the cloth's
+  // k of 400 N/m, 50 iterations on the left and 5 on the right.
   PanelDriver(float width, float height, float scale) : imgui_(width, height), scale_(scale) {
     ImGui::GetIO().FontGlobalScale = scale;
+    SimulationParams params;
+    params.k = 400.0;
+    show_settings(params, settings);
+    params.iterations = 5;
+    show_settings(params, settings.right);
   }
   PanelSettings settings;
   PanelStats stats;

@@ -195,7 +195,7 @@ TEST(PageLink, WhatTheLinkCannotCarryIsSaid) {
   wobble::SimulationParams now = opened;
   now.wind.on = false;
   now.gravity.y() = 0.0;
-  EXPECT_EQ(wobble::page_link_losses(opened, now), (Arguments{"the wind off", "gravity"}));
+  EXPECT_EQ(wobble::page_link_losses(opened, now), (Arguments{"wind off", "gravity"}));
 }
 
 TEST(PageArguments, TheBenchmarkIsAskedForByItsKey) {

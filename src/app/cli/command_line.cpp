@@ -89,9 +89,8 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                "No window: simulate, and render through EGL if an image is asked for");
   // Numbers are taken as text and parsed strictly below, so that every refusal quotes exactly
   // what was typed.
-  std::optional<std::string> frames, export_obj, k, dt, iterations, width, height, screenshot,
-      record, yaw, pitch, zoom, obj_sequence, damping, friction, color_by, self_collision_thickness,
-      threads, solver, expect, expect_tolerance;
+  std::optional<std::string> frames, export_obj, width, height, screenshot, record, yaw, pitch,
+      zoom, obj_sequence, color_by, threads, expect, expect_tolerance;
   app.add_option("--frames", frames,
                  "Run this many frames (one step each) and exit (headless default: " +
                      std::to_string(CommandLine::default_headless_frames) + ")");
@@ -102,38 +101,42 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   app.add_option("--student", student,
                  "Run the student's fast_mass_springs_step_sparse from DIR beside Wobble's, "
                  "coloured by its distance from Wobble's (split view)");
+  std::string compared;  // the settings each side has its own of
+  for (const std::string& name : overridable_setting_names())
+    compared += (compared.empty() ? "" : ", ") + name;
   app.add_option("--compare", compare,
-                 "Split view: the right side with these settings, e.g. \"iterations=5\" "
-                 "(iterations, solver, chebyshev=on|off, dt, k; comma-separated; a setting "
-                 "named twice sets the left side, then the right)");
+                 "Split view: the right side with these settings, e.g. \"iterations=5\" (" +
+                     compared +
+                     "; a switch =on|off; comma-separated; a setting named twice sets the left "
+                     "side, then the right)");
   app.add_option(
       "--convergence-csv", convergence_csv,
       "Write frame,iteration,energy,gradient_norm,solver of every iterate of every step");
   app.add_option("--energy-csv", energy_csv,
                  "Write frame,time,kinetic,spring,gravity,potential,total of every frame (J)");
-  app.add_option("--k", k, "Spring stiffness in N/m (scene default otherwise)");
-  app.add_option("--dt", dt, "Time step in seconds (scene default otherwise)");
-  app.add_option("--iterations", iterations, "Local-global iterations per step");
+  // Every setting the command line gives (sim/settings/setting_registry.h), as --NAME VALUE, a
+  // switch as --NAME; an added one's help says its range and default.
+  std::vector<const SettingSpec*> given_settings;
+  for (const SettingSpec& spec : all_settings()) {
+    if (spec.places & on_command_line) given_settings.push_back(&spec);
+  }
+  std::vector<std::optional<std::string>> setting_texts(given_settings.size());
+  std::unique_ptr<bool[]> setting_switches(new bool[given_settings.size()]());
+  for (std::size_t i = 0; i < given_settings.size(); ++i) {
+    const SettingSpec& spec = *given_settings[i];
+    if (spec.type == SettingType::toggle) {
+      app.add_flag("--" + spec.name, setting_switches[i], spec.help);
+      continue;
+    }
+    std::string help = spec.help;
+    if (find_added_setting(spec.name)) {
+      const std::string unit = *spec.range.unit ? std::string(" ") + spec.range.unit : "";
+      help += " (" + limit_text(spec.range.low) + " to " + limit_text(spec.range.high) + unit +
+              ", default " + limit_text(spec.default_value) + ")";
+    }
+    app.add_option("--" + spec.name, setting_texts[i], help);
+  }
   app.add_flag("--stats", command.stats, "Print timing statistics as JSON on the last line");
-  app.add_option("--solver", solver,
-                 "Step solver: local-global (the course's method, default) or lbfgs (L-BFGS, "
-                 "Liu et al. 2017); the scene's otherwise");
-  bool chebyshev = false;
-  app.add_flag("--chebyshev", chebyshev,
-               "Chebyshev acceleration of the local-global iterations (Wang 2015)");
-  app.add_option("--damping", damping,
-                 "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, "
-                 "0)");
-  app.add_option("--friction", friction,
-                 "Coulomb friction coefficient against the colliders (scene default otherwise, 0)");
-  app.add_flag("--wind", command.wind,
-               "Turn the wind on: the scene's, or a default breeze (course scenes: the course "
-               "wind)");
-  app.add_flag("--self-collision", command.self_collision,
-               "Keep the surface from passing through itself (thickness: the scene's, else "
-               "0.01 m; not for course scenes)");
-  app.add_option("--self-collision-thickness", self_collision_thickness,
-                 "Self-collision thickness in m, 1e-5 to 1; implies --self-collision");
   app.add_option("--threads", threads,
                  "Threads the solver may use, 1 to " + std::to_string(max_setting_threads) +
                      " (default: OMP_NUM_THREADS if set, else the processors, at most " +
@@ -166,18 +169,6 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
                  "Colour the shape by spring strain, vertex speed, contacts or a solid's volume "
                  "change, with a legend: material, strain, speed, contacts or volume (default "
                  "material; the V key cycles)");
-  // Each added setting (sim/settings/setting_registry.h) as --NAME VALUE.
-  std::vector<std::pair<std::string, std::optional<std::string>>> added;
-  for (const SettingSpec& spec : added_settings())
-    added.emplace_back(spec.name, std::nullopt);
-  for (std::size_t i = 0; i < added.size(); ++i) {
-    const SettingSpec& spec = added_settings()[i];
-    const std::string unit = *spec.range.unit ? std::string(" ") + spec.range.unit : "";
-    app.add_option("--" + spec.name, added[i].second,
-                   spec.help + " (" + limit_text(spec.range.low) + " to " +
-                       limit_text(spec.range.high) + unit + ", default " +
-                       limit_text(spec.default_value) + ")");
-  }
   app.add_option("--camera-yaw", yaw, "Camera angle about the vertical, degrees (default 30)");
   app.add_option("--camera-pitch", pitch, "Camera elevation, degrees (default 20)");
   app.add_option("--camera-zoom", zoom,
@@ -213,24 +204,12 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   }
 
   if (frames) command.frames = whole_number("--frames", *frames, CommandLine::max_frames);
-  if (iterations) {
-    command.settings.iterations =
-        static_cast<int>(whole_number("--iterations", *iterations, Simulation::max_iterations));
-  }
-  if (k) command.settings.k = number_in("--k", *k, limits::stiffness);
-  if (dt) command.settings.dt = number_in("--dt", *dt, limits::time_step);
-  if (chebyshev) command.settings.chebyshev = true;
-  for (const auto& [name, text] : added) {
-    if (!text) continue;
-    const SettingSpec& spec = *find_added_setting(name);
-    command.settings.added[name] = number_from_zero(("--" + name).c_str(), *text, spec.range);
-  }
-  if (damping) command.damping = number_from_zero("--damping", *damping, limits::damping);
-  if (friction) command.friction = number_from_zero("--friction", *friction, limits::friction);
-  if (self_collision_thickness) {
-    command.self_collision_thickness = number_in(
-        "--self-collision-thickness", *self_collision_thickness, limits::self_collision_thickness);
-    command.self_collision = true;
+  for (std::size_t i = 0; i < given_settings.size(); ++i) {
+    const SettingSpec& spec = *given_settings[i];
+    if (setting_switches[i]) command.settings.values[spec.name] = true;
+    if (setting_texts[i]) {
+      command.settings.values[spec.name] = read_setting(spec, *setting_texts[i], "--" + spec.name);
+    }
   }
   if (threads) {
     command.threads = static_cast<int>(whole_number("--threads", *threads, max_setting_threads));
@@ -256,7 +235,6 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
   if (convergence_csv) {
     command.convergence_csv = path_value("--convergence-csv", *convergence_csv, "file path");
   }
-  if (solver) command.settings.solver = parse_solver("--solver", *solver);
   if (compare) {
     command.compare = parse_compare_settings(*compare);
     check_left_side(command);
@@ -317,44 +295,44 @@ std::optional<CommandLine> parse_command_line(int argc, const char* const* argv,
 }
 
 void apply_scene_overrides(const CommandLine& command, SimulationParams& params) {
-  // One rule for every scene format: a flag the scene cannot honour is refused, never accepted
-  // and ignored or reported as on. A course scene runs the reference program's method exactly
-  // (its k, dt, iterations and wind are the reference's own settings).
+  // One rule for every scene format: a setting the scene cannot honour is refused, never
+  // accepted and ignored or reported as on. A course scene runs the reference program's method
+  // exactly (its k, dt, iterations and wind are the reference's own settings): a setting declared
+  // not for one is refused, a number given at all, a switch or a choice unless it is the scene's
+  // own (--solver local-global).
   if (params.gravity_model == GravityModel::force_per_vertex) {
-    const std::string course_solver = solver_names().front();  // the course's local-global
     const SettingsOverrides* left = command.compare ? &command.compare->left : nullptr;
-    const std::pair<bool, const char*> changes_method[] = {
-        {command.settings.chebyshev.value_or(false), "--chebyshev"},
-        {command.settings.solver.value_or(course_solver) != course_solver, "--solver"},
-        {left && (left->chebyshev.value_or(false) ||
-                  left->solver.value_or(course_solver) != course_solver),
-         "--compare (its left side)"},
-        {command.damping.has_value(), "--damping"},
-        {command.friction.has_value(), "--friction"},
-        {command.self_collision_thickness.has_value(), "--self-collision-thickness"},
-        {command.self_collision, "--self-collision"}};
-    for (const auto& [given, option] : changes_method) {
-      if (given) {
-        throw InputError(std::string(option) +
+    for (const SettingSpec& spec : all_settings()) {
+      if (spec.course_scene) continue;
+      const auto changes_method = [&](const SettingsOverrides& given) {
+        const auto value = given.values.find(spec.name);
+        return value != given.values.end() &&
+               (spec.type == SettingType::number || value->second != spec.get(params));
+      };
+      const std::string option = changes_method(command.settings) ? "--" + spec.name
+                                 : left && changes_method(*left)  ? "--compare (its left side)"
+                                                                  : "";
+      if (!option.empty()) {
+        throw InputError(option +
                          ": not for a course scene, which keeps the reference's behaviour "
                          "(its k, dt, iterations and wind may be set)");
       }
     }
   }
-  if (command.damping) params.damping = *command.damping;
-  if (command.friction) params.contact.friction = *command.friction;
-  if (command.wind) {
+  // The environment's settings (each side's own are applied where the simulation starts).
+  for (const auto& [name, value] : command.settings.values) {
+    const SettingSpec& spec = *find_setting(name);
+    if (!spec.per_side) spec.set(params, value);
+  }
+  // --wind turns on the wind the scene has; a calm aerodynamic one is the default breeze.
+  if (command.settings.toggle("wind").value_or(false)) {
     const bool calm =
         params.wind.model == WindModel::aerodynamic && params.wind.velocity.isZero(0.0);
     if (calm) params.wind = WindParams::default_breeze();
     params.wind.on = true;
   }
-  if (command.self_collision) {
-    params.self_collision.on = true;
-    if (command.self_collision_thickness) {
-      params.self_collision.thickness = *command.self_collision_thickness;
-    }
-  }
+  // --self-collision-thickness implies --self-collision.
+  if (command.settings.has("self-collision-thickness")) params.self_collision.on = true;
 }
 
 }  // namespace wobble

@@ -27,18 +27,13 @@ struct CommandLine {
   std::optional<CompareSettings> compare;  // --compare: the split view's right side
   std::string student;  // --student DIR: a student's six functions beside Wobble's; empty: none
   bool fill = false;    // fill a closed OBJ surface with tetrahedra
-  // --k, --dt, --iterations, --solver (a registered solver's name, app/cli/solver_choice.h),
-  // --chebyshev and each added setting's --NAME: what they change of the scene's settings.
+  // Every setting the command line gives (sim/settings/setting_registry.h: --k, --dt,
+  // --iterations, --solver, --chebyshev, --damping, --friction, --wind, --self-collision,
+  // --self-collision-thickness and each added setting's --NAME), by name: what they change of
+  // the scene's settings. A switch given is on.
   SettingsOverrides settings;
   bool stats = false;
-  std::optional<double> damping;    // 1/s, within limits::damping
-  std::optional<double> friction;   // the material's μ against every collider, limits::friction
-  bool wind = false;                // turn the scene's wind on (or the default breeze)
   std::vector<ScriptedDrag> drags;  // --drag, in the order given
-  // --self-collision: turn self-collision on; --self-collision-thickness (m, within
-  // limits::self_collision_thickness) gives its thickness and implies it.
-  bool self_collision = false;
-  std::optional<double> self_collision_thickness;
   // --threads: threads the solver may use, 1 to max_setting_threads (sim/parallel/worker_pool.h);
   // unset: OMP_NUM_THREADS, else the processors (at most 4).
   std::optional<int> threads;
@@ -77,15 +72,16 @@ struct CommandLine {
 // for an unknown option, a malformed value, or a value out of range.
 std::optional<CommandLine> parse_command_line(int argc, const char* const* argv, std::ostream& out);
 
-// Puts the command line's --damping, --friction, --wind and --self-collision into a scene's
-// parameters (--solver, --k and the rest are applied where the simulation starts). --wind turns on
-// the wind the scene has (the course wind for a course scene); a scene whose aerodynamic wind has
-// no velocity gets WindParams::default_breeze(). --self-collision turns self-collision on with the
-// scene's thickness (default 0.01 m) unless
-// --self-collision-thickness gives one. Throws InputError when --chebyshev, another solver than
-// the default (--solver, or --compare's for the left side), --damping, --friction or either
-// self-collision option meets a course scene (params.gravity_model force_per_vertex): those keep
-// the reference's behaviour.
+// Puts the command line's settings of the environment (those the two sides of the split view
+// share: --damping, --friction, --wind, --self-collision, ...) into a scene's parameters (each
+// side's own, --solver, --k and the rest, are applied where the simulation starts). --wind turns
+// on the wind the scene has (the course wind for a course scene); a scene whose aerodynamic wind
+// has no velocity gets WindParams::default_breeze(). --self-collision turns self-collision on
+// with the scene's thickness (default 0.01 m) unless --self-collision-thickness gives one, which
+// implies it. Throws InputError when a setting declared not for a course scene
+// (SettingSpec::course_scene: --chebyshev, another solver than the default, or either for the
+// left side through --compare, --damping, --friction, either self-collision option) meets one
+// (params.gravity_model force_per_vertex): those keep the reference's behaviour.
 void apply_scene_overrides(const CommandLine& command, SimulationParams& params);
 
 }  // namespace wobble

@@ -80,9 +80,9 @@ std::string describe_side(const SimulationParams& params, bool name_solver) {
 
 CompareSettings default_compare_settings(const SimulationParams& left) {
   CompareSettings settings;
-  settings.iterations = left.iterations >= 10
-                            ? std::max(1, left.iterations / 10)
-                            : std::min(Simulation::max_iterations, 10 * left.iterations);
+  settings.values["iterations"] = static_cast<double>(
+      left.iterations >= 10 ? std::max(1, left.iterations / 10)
+                            : std::min(Simulation::max_iterations, 10 * left.iterations));
   return settings;
 }
 

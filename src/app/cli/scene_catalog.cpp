@@ -77,8 +77,8 @@ Scene open_scene(const CommandLine& command) {
     const double largest = largest_self_collision_thickness(scene.network);
     if (self.thickness > largest) {
       std::ostringstream note;
-      note << (command.self_collision_thickness ? "--self-collision-thickness"
-                                                : "self_collision.thickness")
+      note << (command.settings.has("self-collision-thickness") ? "--self-collision-thickness"
+                                                                : "self_collision.thickness")
            << " " << self.thickness << " m is more than this mesh can keep between its layers"
            << " (1.5 times its mean edge); keeping " << largest << " m";
       scene.notes.push_back(note.str());

@@ -1,105 +1,71 @@
 #include "app/cli/settings_overrides.h"
 
-#include "app/cli/solver_choice.h"
-#include "io/parse_number.h"
 #include "sim/input_error.h"
-#include "sim/settings/setting_registry.h"
-#include "sim/simulation.h"
-#include "sim/value_limits.h"
 
 namespace wobble {
 
 namespace {
 
-double value_in(const std::string& where, const std::string& name, const std::string& text,
-                const ValueRange& range) {
-  const std::optional<double> value = parse_number<double>(text);
-  if (!value || !range.contains(*value)) {
-    throw InputError(where + ": " + name + ": expected " + expected_in(range) + ", got '" + text +
-                     "'");
-  }
-  return *value;
+bool overridable(const SettingSpec& spec) {
+  return spec.per_side && (spec.places & on_command_line) != 0;
 }
 
 }  // namespace
 
 std::vector<std::string> overridable_setting_names() {
-  std::vector<std::string> names = {"iterations", "solver", "chebyshev", "dt", "k"};
-  for (const SettingSpec& spec : added_settings())
-    names.push_back(spec.name);
+  std::vector<std::string> names;
+  for (const SettingSpec& spec : all_settings()) {
+    if (overridable(spec)) names.push_back(spec.name);
+  }
   return names;
 }
 
 SimulationParams SettingsOverrides::applied_to(SimulationParams params) const {
-  if (iterations) params.iterations = *iterations;
-  if (chebyshev) params.chebyshev = *chebyshev;
-  if (solver) params.solver = *solver;
-  if (dt) params.dt = *dt;
-  if (k) params.k = *k;
-  for (const auto& [name, value] : added)
-    params.added_settings[name] = value;
+  for (const auto& [name, value] : values)
+    find_setting(name)->set(params, value);
   return params;
 }
 
-bool SettingsOverrides::has(const std::string& name) const {
-  if (name == "iterations") return iterations.has_value();
-  if (name == "chebyshev") return chebyshev.has_value();
-  if (name == "solver") return solver.has_value();
-  if (name == "dt") return dt.has_value();
-  if (name == "k") return k.has_value();
-  return added.count(name) > 0;
+std::optional<double> SettingsOverrides::number(const std::string& name) const {
+  const auto given = values.find(name);
+  if (given == values.end()) return std::nullopt;
+  return setting_number(given->second);
+}
+
+std::optional<bool> SettingsOverrides::toggle(const std::string& name) const {
+  const auto given = values.find(name);
+  if (given == values.end() || !std::holds_alternative<bool>(given->second)) return std::nullopt;
+  return std::get<bool>(given->second);
+}
+
+std::optional<std::string> SettingsOverrides::choice(const std::string& name) const {
+  const auto given = values.find(name);
+  if (given == values.end() || !std::holds_alternative<std::string>(given->second)) {
+    return std::nullopt;
+  }
+  return std::get<std::string>(given->second);
 }
 
 void SettingsOverrides::take(const SettingsOverrides& from, const std::string& name) {
-  if (name == "iterations") {
-    iterations = from.iterations;
-  } else if (name == "chebyshev") {
-    chebyshev = from.chebyshev;
-  } else if (name == "solver") {
-    solver = from.solver;
-  } else if (name == "dt") {
-    dt = from.dt;
-  } else if (name == "k") {
-    k = from.k;
-  } else if (from.added.count(name)) {
-    added[name] = from.added.at(name);
+  const auto given = from.values.find(name);
+  if (given != from.values.end()) {
+    values[name] = given->second;
   } else {
-    added.erase(name);
+    values.erase(name);
   }
 }
 
 void SettingsOverrides::set(const std::string& name, const std::string& text,
                             const std::string& where) {
-  if (name == "iterations") {
-    const std::optional<long> count = parse_number<long>(text);
-    if (!count || *count < 1 || *count > Simulation::max_iterations) {
-      throw InputError(where + ": iterations: expected a whole number from 1 to " +
-                       std::to_string(Simulation::max_iterations) + ", got '" + text + "'");
-    }
-    iterations = static_cast<int>(*count);
-  } else if (name == "chebyshev") {
-    if (text == "on" || text == "true" || text == "1") {
-      chebyshev = true;
-    } else if (text == "off" || text == "false" || text == "0") {
-      chebyshev = false;
-    } else {
-      throw InputError(where + ": chebyshev: expected on or off, got '" + text + "'");
-    }
-  } else if (name == "solver") {
-    solver = parse_solver(where + ": solver", text);
-  } else if (name == "dt") {
-    dt = value_in(where, name, text, limits::time_step);
-  } else if (name == "k") {
-    k = value_in(where, name, text, limits::stiffness);
-  } else if (const SettingSpec* spec = find_added_setting(name); spec && spec->name == name) {
-    added[name] = value_in(where, name, text, spec->range);
-  } else {
+  const SettingSpec* spec = find_setting(name);
+  if (!spec || spec->name != name || !overridable(*spec)) {
     std::string expected;
     const std::vector<std::string> names = overridable_setting_names();
     for (std::size_t i = 0; i < names.size(); ++i)
       expected += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
     throw InputError(where + ": unknown setting '" + name + "' (expected " + expected + ")");
   }
+  values[name] = read_setting(*spec, text, where + ": " + name);
 }
 
 }  // namespace wobble

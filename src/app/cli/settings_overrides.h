@@ -6,37 +6,38 @@
 #include <string>
 #include <vector>
 
+#include "sim/settings/setting_registry.h"
 #include "sim/simulation_params.h"
 
 namespace wobble {
 
 // Changes to a simulation's settings value (SimulationParams), each given or not: what the
-// command line asks of a scene, and what --compare asks of either side of the split view. The
-// same names everywhere: k, dt, iterations, solver, chebyshev, and every added setting
-// (sim/settings/setting_registry.h) by its name.
+// command line asks of a scene, and what --compare asks of either side of the split view. Kept
+// by the settings' names (sim/settings/setting_registry.h), each of its setting's type and
+// within its limits.
 struct SettingsOverrides {
-  std::optional<double> k;   // N/m
-  std::optional<double> dt;  // s
-  std::optional<int> iterations;
-  std::optional<std::string> solver;  // a registered solver's name (app/cli/solver_choice.h)
-  std::optional<bool> chebyshev;
-  std::map<std::string, double> added;  // added settings by name, each within its range
+  std::map<std::string, SettingValue> values;
 
-  bool empty() const { return !k && !dt && !iterations && !solver && !chebyshev && added.empty(); }
+  bool empty() const { return values.empty(); }
   // `params` with these settings in place of its own.
   SimulationParams applied_to(SimulationParams params) const;
-  // Whether `name` (a name of overridable_setting_names) is given.
-  bool has(const std::string& name) const;
+  // Whether `name` is given.
+  bool has(const std::string& name) const { return values.count(name) > 0; }
+  // The value given for `name`, if any: a number (an integer's too), a switch, a choice's name.
+  std::optional<double> number(const std::string& name) const;
+  std::optional<bool> toggle(const std::string& name) const;
+  std::optional<std::string> choice(const std::string& name) const;
   // Gives `name` the value `from` has for it, or none when `from` has none.
   void take(const SettingsOverrides& from, const std::string& name);
-  // Reads `text` as the value of the setting `name`, checked against its limits. Throws
-  // InputError "WHERE: NAME: expected ..., got 'TEXT'" for a bad value, and "WHERE: unknown
-  // setting 'NAME' (expected ...)" for a name that is no setting.
+  // Reads `text` as the value of the setting `name`, one of overridable_setting_names, checked
+  // against its limits. Throws InputError "WHERE: NAME: expected ..., got 'TEXT'" for a bad
+  // value, and "WHERE: unknown setting 'NAME' (expected ...)" for a name that is no setting.
   void set(const std::string& name, const std::string& text, const std::string& where);
 };
 
-// The names SettingsOverrides takes: iterations, solver, chebyshev, dt, k, then every added
-// setting's, in order of registration.
+// The names SettingsOverrides::set takes (--compare's): every setting each side of the split
+// view has its own of and the command line gives (k, dt, iterations, solver, chebyshev, then
+// every added setting's, in order of registration).
 std::vector<std::string> overridable_setting_names();
 
 }  // namespace wobble

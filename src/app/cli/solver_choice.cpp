@@ -1,17 +1,11 @@
 #include "app/cli/solver_choice.h"
 
 #include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
+#include "sim/simulation_params.h"
 #include "sim/solver/solver_registry.h"
 
 namespace wobble {
-
-namespace {
-
-// The one solver Chebyshev's semi-iterative acceleration applies to (Wang 2015 accelerates the
-// local-global iteration; L-BFGS has its own history).
-constexpr const char* accelerated_solver = "local-global";
-
-}  // namespace
 
 std::vector<std::string> solver_names() {
   std::vector<std::string> names;
@@ -29,11 +23,14 @@ int solver_index(const std::string& name) {
 }
 
 bool solver_takes_chebyshev(const std::string& name) {
-  return name == accelerated_solver;
+  // As the declaration of chebyshev says (sim/settings/built_in_settings.cpp).
+  SimulationParams params;
+  params.solver = name;
+  return find_setting("chebyshev")->applies(params);
 }
 
 std::string solver_label(const std::string& name, bool chebyshev) {
-  std::string label = name == "lbfgs" ? "L-BFGS" : name;
+  std::string label = find_setting("solver")->choice_label(name);
   if (chebyshev && solver_takes_chebyshev(name)) label += " (Chebyshev)";
   return label;
 }

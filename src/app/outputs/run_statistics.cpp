@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "io/setting_json.h"
 #include "sim/parallel/worker_pool.h"
 #include "sim/settings/setting_registry.h"
 
@@ -57,13 +58,8 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"vertices", scene.network.V.rows()},
       {"springs", scene.network.E.rows()},
       {"pinned", simulation.pin_count()},
-      {"iterations", params.iterations},
-      {"solver", params.solver},
-      {"chebyshev", params.chebyshev},
       {"chebyshev_rho", simulation.chebyshev_spectral_radius()},
       {"frames", frames},
-      {"k", params.k},
-      {"dt", params.dt},
       {"precompute_ms", simulation.precompute_ms()},
       {"factor_nonzeros", simulation.factor_nonzeros()},
       {"factorization_work", simulation.factorization_work()},
@@ -73,16 +69,16 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
       {"local_ms_median", median(times.local_ms)},
       {"global_ms_median", median(times.global_ms)},
-      {"self_collision", params.self_collision.on},
-      {"self_collision_thickness", params.self_collision.thickness},
       {"self_collision_thickness_kept", simulation.self_collision_thickness_kept()},
       {"self_contacts", simulation.self_contact_count()},
       {"threads", shared_thread_setting().threads},
       {"threads_from", shared_thread_setting().source},
   };
-  // Each added setting's value (sim/settings/setting_registry.h), by its key.
-  for (const SettingSpec& spec : added_settings())
-    statistics[setting_key(spec)] = setting_value(params, spec.name);
+  // Each setting --stats reports (sim/settings/setting_registry.h), by its key.
+  for (const SettingSpec& spec : all_settings()) {
+    if (spec.places & in_stats)
+      statistics[setting_key(spec)] = setting_json(spec, spec.get(params));
+  }
   for (const auto& [key, values] : times.figures)
     statistics[key + "_median"] = median(values);
   return statistics;

@@ -75,14 +75,10 @@ void RightSide::stop() {
 }
 
 CompareSettings RightSide::settings() const {
+  // Every setting the right side has its own of, as --compare would give it.
   CompareSettings settings;
-  const SimulationParams& params = simulation_->params();
-  settings.iterations = params.iterations;
-  settings.chebyshev = params.chebyshev;
-  settings.solver = params.solver;
-  settings.dt = params.dt;
-  settings.k = params.k;
-  settings.added = params.added_settings;
+  for (const std::string& name : overridable_setting_names())
+    settings.values[name] = find_setting(name)->get(simulation_->params());
   return settings;
 }
 
@@ -133,15 +129,11 @@ void RightSide::sync(const Simulation& left) {
     if (!offset.isZero(0.0)) right.translate_collider(static_cast<int>(c), offset);
   }
   // The environment is the left side's; what each side steps with (k, dt, iterations, the
-  // solver, Chebyshev, the added settings) stays the right side's own.
-  const SimulationParams& from = left.params();
+  // solver, Chebyshev, the added settings: those declared per_side) stays the right side's own.
   SimulationParams wanted = right.params();
-  wanted.gravity = from.gravity;
-  wanted.gravity_model = from.gravity_model;
-  wanted.damping = from.damping;
-  wanted.contact.friction = from.contact.friction;
-  wanted.wind = from.wind;
-  wanted.self_collision = from.self_collision;
+  for (const SettingSpec& spec : all_settings()) {
+    if (!spec.per_side) spec.set(wanted, spec.get(left.params()));
+  }
   right.apply(wanted);
 }
 

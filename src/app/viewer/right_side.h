@@ -43,10 +43,7 @@ class RightSide {
   explicit RightSide(std::string student_server) : student_server_(std::move(student_server)) {}
 
   // The UI's side: the panel's "compare" section (panel_sections.h).
-  // `solvers`: what its solver combo offers, in the registry's order.
-  void draw_panel_section(const std::vector<SolverOption>& solvers) {
-    draw_split_section(panel_, solvers, student());
-  }
+  void draw_panel_section() { draw_split_section(panel_, student()); }
   // Whether the section's checkbox asks for a split view (2 flips it).
   bool split_asked() const { return panel_.split; }
   void ask_split(bool split) { panel_.split = split; }

@@ -257,8 +257,6 @@ PanelStats Viewer::simulation_stats() const {
   stats.self_contacts = host_.simulation().self_contact_count();
   stats.student_side = right_.student();
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
-  for (const std::string& name : solver_names())
-    stats.solvers.push_back({solver_label(name), solver_takes_chebyshev(name)});
   stats.solver = solver_label(host_.simulation().params().solver);
   stats.warning = step_warning_;
   return stats;

@@ -91,7 +91,9 @@ void Viewer::apply(ViewerCommand command) {
       break;
     case ViewerCommand::toggle_wind:
       change([this] {
-        host_.simulation().set_wind(toggled_wind(host_.simulation().params().wind));
+        SimulationParams wanted = host_.simulation().params();
+        wanted.wind = toggled_wind(wanted.wind);
+        host_.simulation().apply(wanted);
         show_environment_in_panel();
       });
       break;

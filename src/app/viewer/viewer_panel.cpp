@@ -56,13 +56,12 @@ void Viewer::build_ui(const PanelStats& timings, float ui_scale) {
       static_cast<PlayRequests&>(requests) = draw_play_rows(panel_, stats.warning);
     };
     parts.simulation = [&] {
-      requests.restore_defaults =
-          draw_simulation_section(panel_, stats.solvers, stats.course_scene);
+      requests.restore_defaults = draw_simulation_section(panel_, stats.course_scene);
     };
     parts.environment = [&] { draw_environment_section(panel_, environment_offer(stats)); };
     parts.view = [&] { draw_view_section(panel_); };
     parts.instruments = [&] { plots_csv = instruments_.draw_panel_section(); };
-    parts.compare = [&] { right_.draw_panel_section(stats.solvers); };
+    parts.compare = [&] { right_.draw_panel_section(); };
     panel_place_ = draw_control_panel(parts, stats, panel_.paused, ui_scale);
   } else {
     panel_place_ = PanelPlace();  // a hidden panel covers nothing: F frames in the whole window
@@ -151,7 +150,8 @@ FrameTime Viewer::shown_time() const {
   // While a batch runs, the simulation is the stepping thread's: the copy taken before it.
   const double seconds =
       host_.batch_started() ? shown_stats_.simulated_seconds : host_.simulation().time();
-  return FrameTime{seconds, static_cast<double>(panel_.dt)};
+  const SettingControl* dt = panel_.control("dt");
+  return FrameTime{seconds, dt ? static_cast<double>(dt->value) : host_.simulation().params().dt};
 }
 
 }  // namespace wobble

@@ -33,32 +33,44 @@ std::string decode(const std::string& text) {
   return decoded;
 }
 
-// The command line's options an address may give: settings and the view, never an option that
-// writes files or starts a process.
-const std::vector<std::string> address_value_options = {
-    "k",          "dt",           "iterations",  "frames",
-    "solver",     "damping",      "friction",    "self-collision-thickness",
-    "camera-yaw", "camera-pitch", "camera-zoom", "color-by"};
-const std::vector<std::string> address_switches = {
-    "plots", "chebyshev", "wind", "self-collision", "wireframe", "springs", "points"};
+// The command line's options an address may give: every setting declared for it
+// (SettingPlace::in_address) and the view, never an option that writes files or starts a
+// process.
+const std::vector<std::string> address_view_options = {"frames", "camera-yaw", "camera-pitch",
+                                                       "camera-zoom", "color-by"};
+const std::vector<std::string> address_view_switches = {"plots", "wireframe", "springs", "points"};
+
+// The setting of that name the address may give, or null.
+const SettingSpec* address_setting(const std::string& key) {
+  const SettingSpec* spec = find_setting(key);
+  return spec && spec->name == key && (spec->places & in_address) ? spec : nullptr;
+}
 
 bool is_address_setting(const std::string& key) {
-  return std::find(address_value_options.begin(), address_value_options.end(), key) !=
-             address_value_options.end() ||
-         find_added_setting(key) != nullptr;
+  const SettingSpec* spec = address_setting(key);
+  return (spec && spec->type != SettingType::toggle) ||
+         std::find(address_view_options.begin(), address_view_options.end(), key) !=
+             address_view_options.end();
 }
 
 bool is_address_switch(const std::string& key) {
-  return std::find(address_switches.begin(), address_switches.end(), key) != address_switches.end();
+  const SettingSpec* spec = address_setting(key);
+  return (spec && spec->type == SettingType::toggle) ||
+         std::find(address_view_switches.begin(), address_view_switches.end(), key) !=
+             address_view_switches.end();
 }
 
 std::string address_keys() {
   std::string keys = "scene";
-  for (const std::string& key : address_value_options)
+  for (const SettingSpec& spec : all_settings()) {
+    if ((spec.places & in_address) && spec.type != SettingType::toggle) keys += ", " + spec.name;
+  }
+  for (const std::string& key : address_view_options)
     keys += ", " + key;
-  for (const SettingSpec& spec : added_settings())
-    keys += ", " + spec.name;
-  for (const std::string& key : address_switches)
+  for (const SettingSpec& spec : all_settings()) {
+    if ((spec.places & in_address) && spec.type == SettingType::toggle) keys += ", " + spec.name;
+  }
+  for (const std::string& key : address_view_switches)
     keys += ", " + key;
   return keys + " and bench";
 }
@@ -112,19 +124,17 @@ std::string page_link_query(const std::string& scene_label, const SimulationPara
   const auto on = [&](const char* key, bool was, bool is) {
     if (is && !was) query += std::string("&") + key;
   };
-  number("k", opened.k, current.k);
-  number("dt", opened.dt, current.dt);
-  number("iterations", opened.iterations, current.iterations);
-  if (current.solver != opened.solver) query += "&solver=" + encode(current.solver);
-  on("chebyshev", opened.chebyshev, current.chebyshev);
-  number("damping", opened.damping, current.damping);
-  number("friction", opened.contact.friction, current.contact.friction);
-  on("wind", opened.wind.on, current.wind.on);
-  on("self-collision", opened.self_collision.on, current.self_collision.on);
-  number("self-collision-thickness", opened.self_collision.thickness,
-         current.self_collision.thickness);
-  for (const SettingSpec& spec : added_settings()) {
-    number(spec.name.c_str(), setting_value(opened, spec.name), setting_value(current, spec.name));
+  // Every setting the address takes, where it differs from the scene's own.
+  for (const SettingSpec& spec : all_settings()) {
+    if (!(spec.places & in_address)) continue;
+    const SettingValue was = spec.get(opened), is = spec.get(current);
+    if (spec.type == SettingType::toggle) {
+      on(spec.name.c_str(), std::get<bool>(was), std::get<bool>(is));
+    } else if (spec.type == SettingType::choice) {
+      if (is != was) query += "&" + spec.name + "=" + encode(std::get<std::string>(is));
+    } else if (spec.type != SettingType::vector) {
+      number(spec.name.c_str(), setting_number(was), setting_number(is));
+    }
   }
   // The view: the colour, the switches on, the camera.
   if (view.color_by != ColorQuantity::material) {
@@ -163,10 +173,16 @@ std::vector<std::string> page_link_losses(const SimulationParams& opened,
   if (view.faceless && !view.springs) lost.push_back("the springs off");
   if (view.faceless && !view.points) lost.push_back("the points off");
   if (view.panned) lost.push_back("the camera's pan");
-  if (opened.chebyshev && !current.chebyshev) lost.push_back("Chebyshev off");
-  if (opened.wind.on && !current.wind.on) lost.push_back("the wind off");
-  if (opened.self_collision.on && !current.self_collision.on) lost.push_back("self-collision off");
-  if (opened.gravity != current.gravity) lost.push_back("gravity");
+  // An address only turns a switch on; a setting it has no key for is lost when changed.
+  for (const SettingSpec& spec : all_settings()) {
+    const SettingValue was = spec.get(opened), is = spec.get(current);
+    if (is == was) continue;
+    if (!(spec.places & in_address)) {
+      lost.push_back(spec.label);
+    } else if (spec.type == SettingType::toggle && !std::get<bool>(is)) {
+      lost.push_back(spec.label + " off");
+    }
+  }
   return lost;
 }
 

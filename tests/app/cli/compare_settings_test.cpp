@@ -13,17 +13,17 @@ using wobble::parse_compare_settings;
 TEST(CompareSettings, ParsesEachSettingSeparatedByCommasOrSpaces) {
   const CompareSettings settings =
       parse_compare_settings("iterations=5, chebyshev=on dt=0.01,k=2e4");
-  EXPECT_EQ(settings.iterations, 5);
-  EXPECT_EQ(settings.chebyshev, true);
-  EXPECT_DOUBLE_EQ(*settings.dt, 0.01);
-  EXPECT_DOUBLE_EQ(*settings.k, 2e4);
-  EXPECT_EQ(parse_compare_settings("chebyshev=off").chebyshev, false);
-  EXPECT_FALSE(parse_compare_settings("k=10").iterations.has_value());
+  EXPECT_EQ(settings.number("iterations"), 5);
+  EXPECT_EQ(settings.toggle("chebyshev"), true);
+  EXPECT_DOUBLE_EQ(*settings.number("dt"), 0.01);
+  EXPECT_DOUBLE_EQ(*settings.number("k"), 2e4);
+  EXPECT_EQ(parse_compare_settings("chebyshev=off").toggle("chebyshev"), false);
+  EXPECT_FALSE(parse_compare_settings("k=10").number("iterations").has_value());
 }
 
 TEST(CompareSettings, ParsesTheSolverForTheRightSide) {
   const CompareSettings settings = parse_compare_settings("solver=lbfgs");
-  EXPECT_EQ(settings.solver, "lbfgs");
+  EXPECT_EQ(settings.choice("solver"), "lbfgs");
   EXPECT_TRUE(settings.left.empty());
   wobble::SimulationParams left;
   left.chebyshev = true;
@@ -37,21 +37,22 @@ TEST(CompareSettings, ParsesTheSolverForTheRightSide) {
 TEST(CompareSettings, ASettingNamedTwiceSetsTheLeftSideFirst) {
   const CompareSettings settings =
       parse_compare_settings("solver=local-global,solver=lbfgs iterations=8");
-  EXPECT_EQ(settings.left.solver, "local-global");
-  EXPECT_EQ(settings.solver, "lbfgs");
-  EXPECT_EQ(settings.iterations, 8);
-  EXPECT_FALSE(settings.left.iterations.has_value()) << "named once: the right side's only";
+  EXPECT_EQ(settings.left.choice("solver"), "local-global");
+  EXPECT_EQ(settings.choice("solver"), "lbfgs");
+  EXPECT_EQ(settings.number("iterations"), 8);
+  EXPECT_FALSE(settings.left.number("iterations").has_value())
+      << "named once: the right side's only";
   const CompareSettings both = parse_compare_settings(
       "k=100,dt=0.01,k=900,chebyshev=on,"
       "chebyshev=off,iterations=3,iterations=30");
-  EXPECT_EQ(both.left.k, 100.0);
-  EXPECT_EQ(both.k, 900.0);
-  EXPECT_EQ(both.left.chebyshev, true);
-  EXPECT_EQ(both.chebyshev, false);
-  EXPECT_EQ(both.left.iterations, 3);
-  EXPECT_EQ(both.iterations, 30);
-  EXPECT_FALSE(both.left.dt.has_value());
-  EXPECT_EQ(both.dt, 0.01);
+  EXPECT_EQ(both.left.number("k"), 100.0);
+  EXPECT_EQ(both.number("k"), 900.0);
+  EXPECT_EQ(both.left.toggle("chebyshev"), true);
+  EXPECT_EQ(both.toggle("chebyshev"), false);
+  EXPECT_EQ(both.left.number("iterations"), 3);
+  EXPECT_EQ(both.number("iterations"), 30);
+  EXPECT_FALSE(both.left.number("dt").has_value());
+  EXPECT_EQ(both.number("dt"), 0.01);
   wobble::SimulationParams scene;
   scene.solver = "lbfgs";
   EXPECT_EQ(settings.left.applied_to(scene).solver, "local-global");
@@ -100,9 +101,9 @@ TEST(CompareSettings, RefusesWithTheSettingNamed) {
 TEST(CompareSettings, DefaultRightSideIsATenthOrTenTimesTheIterations) {
   wobble::SimulationParams left;
   left.iterations = 50;
-  EXPECT_EQ(wobble::default_compare_settings(left).iterations, 5);
+  EXPECT_EQ(wobble::default_compare_settings(left).number("iterations"), 5);
   left.iterations = 3;
-  EXPECT_EQ(wobble::default_compare_settings(left).iterations, 30);
+  EXPECT_EQ(wobble::default_compare_settings(left).number("iterations"), 30);
 }
 
 TEST(CompareSettings, DescribesASideOnTwoLinesOrThreeWithTheSolver) {

@@ -23,8 +23,8 @@ TEST(RightSide, ComparesItsOwnSettingsAndCopiesTheRestFromTheLeft) {
   EXPECT_EQ(right.simulation()->params().k, left.params().k) << "not compared: the left's";
 
   // The environment follows the left side; its own settings do not.
-  left.set_damping(0.5);
-  left.set_k(900.0);
+  left.apply(wobble::with_setting(left.params(), "damping", 0.5));
+  left.apply(wobble::with_setting(left.params(), "k", 900.0));
   left.step();
   right.advance(left, left.params().dt);
   EXPECT_EQ(right.simulation()->params().damping, 0.5);
@@ -47,9 +47,9 @@ TEST(RightSide, SettingsReadBackWhatItCompares) {
   right.start_compare(scene, left,
                       wobble::parse_compare_settings("solver=lbfgs,iterations=7,k=2000"));
   const wobble::CompareSettings settings = right.settings();
-  EXPECT_EQ(settings.solver, "lbfgs");
-  EXPECT_EQ(settings.iterations, 7);
-  EXPECT_EQ(settings.k, 2000.0);
+  EXPECT_EQ(settings.choice("solver"), "lbfgs");
+  EXPECT_EQ(settings.number("iterations"), 7.0);
+  EXPECT_EQ(settings.number("k"), 2000.0);
   // A split view that stays split on a new scene starts from these: the same settings again.
   wobble::RightSide again("");
   again.start_compare(scene, left, settings);

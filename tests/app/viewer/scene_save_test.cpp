@@ -50,15 +50,21 @@ TEST(SaveCurrentScene, KeepsEverySettingChangedSinceTheSceneOpened) {
   const Scene opened = cloth_with_colliders();
   Simulation simulation(opened.network, opened.pins, opened.params, opened.initial_velocity);
   ASSERT_FALSE(opened.pins.empty());
-  simulation.set_k(777.5);
-  simulation.set_dt(0.01);
-  simulation.set_iterations(17);
-  simulation.set_chebyshev(true);
-  simulation.set_solver("lbfgs");
-  simulation.set_gravity(Eigen::Vector3d(0.5, -4.25, 0.125), GravityModel::acceleration);
-  simulation.set_damping(0.3);
-  simulation.set_wind(WindParams::default_breeze());
-  simulation.set_friction(0.45);
+  simulation.apply(wobble::with_setting(simulation.params(), "k", 777.5));
+  simulation.apply(wobble::with_setting(simulation.params(), "dt", 0.01));
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 17.0));
+  simulation.apply(wobble::with_setting(simulation.params(), "chebyshev", true));
+  simulation.apply(wobble::with_setting(simulation.params(), "solver", std::string("lbfgs")));
+  simulation.apply(wobble::with_setting(
+      wobble::with_setting(simulation.params(), "gravity", Eigen::Vector3d(0.5, -4.25, 0.125)),
+      "gravity-model", std::string("acceleration")));
+  simulation.apply(wobble::with_setting(simulation.params(), "damping", 0.3));
+  simulation.apply([&] {
+    wobble::SimulationParams changed = simulation.params();
+    changed.wind = WindParams::default_breeze();
+    return changed;
+  }());
+  simulation.apply(wobble::with_setting(simulation.params(), "friction", 0.45));
   simulation.unpin(opened.pins.front());
   simulation.pin(7);
   simulation.set_pin_target(7, Eigen::Vector3d(3.0, 3.0, 3.0));

@@ -53,7 +53,7 @@ TEST(SimulationHost, EditsDuringABatchWaitForItAndKeepTheirOrder) {
   EXPECT_FALSE(host.change([&] { done.push_back("first"); }));
   EXPECT_FALSE(host.change([&] {
     done.push_back("second");
-    host.simulation().set_k(2000.0);
+    host.simulation().apply(wobble::with_setting(host.simulation().params(), "k", 2000.0));
   }));
   EXPECT_TRUE(host.changes_waiting());
   EXPECT_EQ(done.size(), 1u) << "nothing done while the batch runs";

@@ -486,8 +486,8 @@ TEST(Viewer, RestoreDefaultsBringsBackTheSceneAsItOpened) {
   // Change k, the iterations and the pins as the panel's sliders and a Ctrl+click would (the
   // panel needs an ImGui frame, so the test reaches the simulation directly).
   wobble::Simulation& simulation = const_cast<wobble::Simulation&>(f.viewer.simulation());
-  simulation.set_k(5000.0);
-  simulation.set_iterations(7);
+  simulation.apply(wobble::with_setting(simulation.params(), "k", 5000.0));
+  simulation.apply(wobble::with_setting(simulation.params(), "iterations", 7.0));
   simulation.unpin(simulation.pinned_vertices().front());
   for (int frame = 0; frame < 5; ++frame)
     f.frame();
