@@ -251,7 +251,6 @@ PanelStats Viewer::simulation_stats() const {
   stats.simulated_seconds = host_.simulation().time();
   stats.notes = scene_.notes;
   stats.has_colliders = !host_.simulation().colliders().empty();
-  stats.aerodynamic_wind = host_.simulation().params().wind.model == WindModel::aerodynamic;
   stats.contacts = host_.simulation().contact_count();
   stats.self_collision = host_.simulation().params().self_collision.on;
   stats.self_contacts = host_.simulation().self_contact_count();

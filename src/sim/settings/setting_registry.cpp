@@ -132,6 +132,14 @@ void turn_on(const SettingSpec& spec, SimulationParams& params) {
   spec.set(params, true);
 }
 
+void toggle(const SettingSpec& spec, SimulationParams& params) {
+  if (std::get<bool>(spec.get(params))) {
+    spec.set(params, false);
+  } else {
+    turn_on(spec, params);
+  }
+}
+
 const SettingSpec* find_added_setting(const std::string& name) {
   for (const SettingSpec& spec : registry()) {
     if (spec.name == name || setting_key(spec) == name) return &spec;
