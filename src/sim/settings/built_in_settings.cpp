@@ -2,7 +2,7 @@
 // a user sets, with what each is called, takes and costs. Everything that sets or reads a
 // setting loops over this list and the added settings (sim/settings/setting_registry.h); nothing
 // else names them one by one.
-#include <array>
+#include <utility>
 
 #include "sim/settings/setting_registry.h"
 #include "sim/simulation_params.h"
@@ -13,52 +13,38 @@ namespace wobble {
 namespace {
 
 // Binds a declaration to a field of SimulationParams: `field` is a lambda
-// [](auto& params) -> auto& { return params.FIELD; }, which serves reading and writing alike.
-template <typename Field>
-SettingSpec number_field(SettingSpec spec, SettingType type, Field field) {
+// [](auto& params) -> auto& { return params.FIELD; }, which serves reading and writing alike. The
+// value is kept in a SettingValue as `Stored`: double (a number or an integer), bool (a switch),
+// std::string (a choice by name) or Eigen::Vector3d.
+template <typename Stored, typename Field>
+SettingSpec bound(SettingSpec spec, SettingType type, Field field) {
   spec.type = type;
   spec.get = [field](const SimulationParams& params) -> SettingValue {
-    return static_cast<double>(field(params));
+    return static_cast<Stored>(field(params));
   };
   spec.set = [field](SimulationParams& params, const SettingValue& value) {
     using Type = std::decay_t<decltype(field(params))>;
-    field(params) = static_cast<Type>(setting_number(value));
+    field(params) = static_cast<Type>(std::get<Stored>(value));
   };
   return spec;
 }
-
+template <typename Field>
+SettingSpec number_field(SettingSpec spec, SettingType type, Field field) {
+  return bound<double>(std::move(spec), type, field);
+}
 template <typename Field>
 SettingSpec toggle_field(SettingSpec spec, Field field) {
-  spec.type = SettingType::toggle;
-  spec.get = [field](const SimulationParams& params) -> SettingValue { return field(params); };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<bool>(value);
-  };
-  return spec;
+  return bound<bool>(std::move(spec), SettingType::toggle, field);
 }
-
 template <typename Field>
 SettingSpec vector_field(SettingSpec spec, Field field) {
-  spec.type = SettingType::vector;
-  spec.get = [field](const SimulationParams& params) -> SettingValue {
-    return Eigen::Vector3d(field(params));
-  };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<Eigen::Vector3d>(value);
-  };
-  return spec;
+  return bound<Eigen::Vector3d>(std::move(spec), SettingType::vector, field);
 }
-
 // A choice kept as a name (the solver's).
 template <typename Field>
 SettingSpec name_field(SettingSpec spec, std::vector<std::string> (*choices)(), Field field) {
-  spec.type = SettingType::choice;
   spec.choices = choices;
-  spec.get = [field](const SimulationParams& params) -> SettingValue { return field(params); };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<std::string>(value);
-  };
-  return spec;
+  return bound<std::string>(std::move(spec), SettingType::choice, field);
 }
 
 // A choice kept as an enumeration whose values are 0, 1, ... in the order of `choices()`.
