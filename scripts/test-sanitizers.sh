@@ -43,8 +43,9 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp"
 # driven through the real executable (wobble_app_tests, wobble_video_tests,
 # wobble_added_setting_test), picking and the panel's logic and the camera's math
 # (wobble_interaction_tests, wobble_ui_tests, wobble_render_tests). Left to the plain pass of
-# scripts/test.sh, which runs them all: the golden images (their time is Mesa's software rasterizer, whose code is not Wobble's; the app tests
-# still render through it under the sanitizers), the tests that simulate or render a scene for
+# scripts/test.sh, which runs them all: the golden images (their time is Mesa's software
+# rasterizer, whose code is not Wobble's; the app tests still render through it under the
+# sanitizers), the tests that simulate or render a scene for
 # many steps (tests/sanitizers/long_tests.txt: shorter tests run the same code here), the course
 # checker's scenarios
 # (CheckAssignment.*, labelled checker_scenario: scripts/check-assignment.sh compiles the
