@@ -24,7 +24,8 @@ struct SimulationParams;
 //   scene files        at its path ("simulation.NAME_WITH_UNDERSCORES" unless it says another:
 //                      "material.k", "simulation.wind.drag"), read, written and the only keys
 //                      a file's sections take, for those kept there (SettingPlace::in_scene)
-//   the panel          a control for the left and right sides (app/viewer/side_settings.h)
+//   the panel          a control for the left and right sides, or one in the environment
+//                      section for those the sides share (app/viewer/side_settings.h)
 //   --stats            "NAME_WITH_UNDERSCORES": VALUE
 //   Simulation::apply  which does what `cost` says when its value changes
 
