@@ -881,7 +881,7 @@ std::vector<BadInput> strict_reader_catalogue() {
       {"scene_material_typo",
        {{"s.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"densty\": 1}}"}},
        "{dir}/s.json",
-       {"s.json", "material.densty", "unknown key, material takes k, density"}},
+       {"s.json", "material.densty", "unknown key, material takes k, friction, density"}},
       // A comment is fine after any OBJ statement; other words after a face are not.
       {"obj_junk_after_a_face",
        {{"j.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0 # ok\nf 1 2 3 junk # comment\n"}},
