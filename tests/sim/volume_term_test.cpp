@@ -54,7 +54,7 @@ std::unique_ptr<Simulation> jelly(const std::string& solver, bool volume,
                                   wobble::SpringNetwork& rest,
                                   std::vector<wobble::Collider> colliders = {}) {
   wobble::Scene scene = wobble::make_builtin_scene("jelly");
-  if (!volume) wobble::set_setting_value(scene.params, "volume-stiffness", 0.0);
+  if (!volume) wobble::set_setting_value(scene.params, "volume", 0.0);
   scene.params.solver = solver;
   scene.params.contact.colliders = std::move(colliders);
   rest = scene.network;
