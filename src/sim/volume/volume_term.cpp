@@ -114,7 +114,9 @@ Eigen::Matrix3d VolumeTerm::deformation(const Eigen::MatrixXd& p, Eigen::Index t
 
 void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool gradient,
                             bool energy) const {
-  const long count = rotations_.packs();
+  const bool single = TetRotations::single_precision(most, gradient, energy);
+  rotations_.prepare(single);
+  const long count = rotations_.packs(single);
   if (T_.rows() < min_tets_for_threads || pool_->threads() == 1) {
     rotations_.update(p, 0, count, most, tolerance, gradient, energy);
     return;
