@@ -87,7 +87,8 @@ struct SettingSpec {
                       // each of a vector's numbers)
   double default_value = 0.0;  // a number's; a switch's is 0 or 1 (its field's default otherwise)
   SettingCost cost = SettingCost::terms;
-  bool log_scale = false;  // the panel's control moves by a factor a pixel (range.low > 0)
+  // The panel's control moves by a factor a pixel (the panel's range, below, starts above 0).
+  bool log_scale = false;
   // It acts only on a network with tetrahedra (SpringNetwork::T): the panel shows it only there.
   bool solids_only = false;
 
