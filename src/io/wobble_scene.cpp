@@ -209,10 +209,22 @@ void visit_section(JsonFields fields, const std::vector<std::string>& path, std:
   }
 }
 
+// Whether the file gives the setting: its key, or a section switch's section.
+bool in_file(const JsonFields& top, const SettingSpec& spec) {
+  const std::vector<std::string> path = scene_path(spec);
+  bool given = false;
+  visit_section(
+      top, path, 0, spec.section_switch ? path.size() : path.size() - 1,
+      [&](JsonFields& section) { given = spec.section_switch || section.has(path.back()); });
+  return given;
+}
+
 // Every setting a scene keeps (SettingPlace::in_scene: k and friction in "material", dt, the
 // solver, gravity, the wind's section and the rest in "simulation", self-collision's section,
 // each added setting), at its path, into params; one left out keeps the value params has. A
-// section switch is on when its section is there, unless its "on" says otherwise.
+// section switch is on when its section is there, unless its "on" says otherwise; a setting the
+// file gives turns on the switch it implies, unless the file gives that too ("volume_stiffness"
+// alone: the volume term).
 void read_scene_settings(const JsonFields& top, SimulationParams& params) {
   for (const SettingSpec& spec : all_settings()) {
     if (!(spec.places & in_scene)) continue;
@@ -229,6 +241,11 @@ void read_scene_settings(const JsonFields& top, SimulationParams& params) {
                          spec.range.unit);
       }
     });
+  }
+  for (const SettingSpec& spec : all_settings()) {
+    if (!(spec.places & in_scene) || *spec.implies == '\0' || !in_file(top, spec)) continue;
+    const SettingSpec& implied = *find_setting(spec.implies);
+    if (!in_file(top, implied)) implied.set(params, true);
   }
 }
 

@@ -95,6 +95,9 @@ void write_scene_settings(const SimulationParams& params, json& top) {
     object = json::object();
     if (switch_spec.switch_key) object["on"] = std::get<bool>(switch_spec.get(params));
   }
+  // A switch that a written setting implies is written too, whatever its value: read back
+  // without it, the setting would turn it on.
+  std::vector<const SettingSpec*> implied;
   for (const SettingSpec& spec : all_settings()) {
     if (!(spec.places & in_scene) || spec.section_switch) continue;
     const std::vector<std::string> path = scene_path(spec);
@@ -103,7 +106,14 @@ void write_scene_settings(const SimulationParams& params, json& top) {
       continue;
     const SettingValue value = spec.get(params);
     const bool quiet = spec.type == SettingType::choice || find_added_setting(spec.name);
-    if (!quiet || value != spec.get(defaults)) object_at(top, path) = setting_json(spec, value);
+    if (!quiet || value != spec.get(defaults)) {
+      object_at(top, path) = setting_json(spec, value);
+      if (*spec.implies != '\0') implied.push_back(find_setting(spec.implies));
+    }
+  }
+  for (const SettingSpec* spec : implied) {
+    if (!spec->section_switch)
+      object_at(top, scene_path(*spec)) = setting_json(*spec, spec->get(params));
   }
 }
 

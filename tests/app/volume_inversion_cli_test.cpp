@@ -11,6 +11,8 @@
 
 #include <Eigen/Dense>
 #include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -137,5 +139,24 @@ TEST_P(VolumeInversionCommandLine, AVertexPulledThroughTheBottomComesBack) {
 
 INSTANTIATE_TEST_SUITE_P(Solvers, VolumeInversionCommandLine,
                          ::testing::Values("local-global", "lbfgs"));
+
+// --volume-stiffness turns the term on (it implies --volume), as a scene file's stiffness does:
+// a jelly whose file has it off runs with it when the command line gives a stiffness.
+TEST(VolumeCommandLine, AStiffnessTurnsTheTermOn) {
+  wobble::testing::TemporaryFolder folder;
+  std::ofstream(folder.file("off.json"))
+      << R"({"mesh": {"generator": "jelly", "resolution": 2}, "simulation": {"volume": false}})";
+  const std::string scene = "'" + folder.file("off.json") + "' --headless --frames 1 --stats";
+  const auto stats_of = [](const std::string& out) {
+    return nlohmann::json::parse(out.substr(out.rfind('{')));
+  };
+  const wobble::testing::Result off = run_wobble(scene);
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(stats_of(off.out)["volume"], false);
+  const wobble::testing::Result on = run_wobble(scene + " --volume-stiffness 3000");
+  ASSERT_EQ(on.exit_code, 0) << on.err;
+  EXPECT_EQ(stats_of(on.out)["volume"], true);
+  EXPECT_EQ(stats_of(on.out)["volume_stiffness"], 3000.0);
+}
 
 }  // namespace

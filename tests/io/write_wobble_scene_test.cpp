@@ -10,6 +10,7 @@
 #include "saved_scene_checks.h"
 #include "shipped_scenes.h"
 #include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
 #include "temporary_folder.h"
 
 namespace wobble {
@@ -173,6 +174,34 @@ TEST(WriteWobbleScene, KeepsSelfCollisionOnlyWhenOn) {
   const Scene saved = load_scene(folder.file("on.json"));
   EXPECT_TRUE(saved.params.self_collision.on);
   EXPECT_EQ(saved.params.self_collision.thickness, 0.0037);
+  expect_same_scene(scene, saved);
+}
+
+// A stiffness alone in a file turns the volume term on (it implies the switch), so a jelly saved
+// with the term off and its own stiffness says "volume": false, and reads back off; a file
+// that gives both keeps both.
+TEST(WriteWobbleScene, KeepsTheVolumeTermOffBesideItsStiffness) {
+  TemporaryFolder folder;
+  std::ofstream(folder.file("stiffness.json"))
+      << R"({"mesh": {"generator": "jelly", "resolution": 2},
+             "simulation": {"volume_stiffness": 5000}})";
+  const Scene stiffness_alone = load_scene(folder.file("stiffness.json"));
+  EXPECT_EQ(setting_value(stiffness_alone.params, "volume"), 1.0);
+  EXPECT_EQ(setting_value(stiffness_alone.params, "volume-stiffness"), 5000.0);
+  std::ofstream(folder.file("both.json")) << R"({"mesh": {"generator": "jelly", "resolution": 2},
+             "simulation": {"volume": false, "volume_stiffness": 5000}})";
+  const Scene both = load_scene(folder.file("both.json"));
+  EXPECT_EQ(setting_value(both.params, "volume"), 0.0);
+
+  Scene scene = load_scene("jelly");
+  set_setting_value(scene.params, "volume", 0.0);
+  set_setting_value(scene.params, "volume-stiffness", 5000.0);
+  const nlohmann::json object = wobble_scene_json(scene, "off.obj", "");
+  EXPECT_EQ(object["simulation"]["volume"], false);
+  write_wobble_scene(folder.file("off.json"), scene);
+  const Scene saved = load_scene(folder.file("off.json"));
+  EXPECT_EQ(setting_value(saved.params, "volume"), 0.0);
+  EXPECT_EQ(setting_value(saved.params, "volume-stiffness"), 5000.0);
   expect_same_scene(scene, saved);
 }
 

@@ -11,10 +11,10 @@
 #include "app/cli/scene_catalog.h"
 #include "app/cli/solver_choice.h"
 #include "io/output_target.h"
-#include "sim/parse_number.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
 #include "sim/parallel/worker_pool.h"
+#include "sim/parse_number.h"
 #include "sim/settings/setting_registry.h"
 #include "sim/shapes/builtin_scenes.h"
 #include "sim/simulation.h"
@@ -322,16 +322,7 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
   // The environment's settings (each side's own are applied where the simulation starts), a
   // switch turned on as a user turns it on (--wind over a calm scene: the default breeze), and
   // what a setting implies turned on with it (--self-collision-thickness: --self-collision).
-  for (const auto& [name, value] : command.settings.values) {
-    const SettingSpec& spec = *find_setting(name);
-    if (spec.per_side) continue;
-    if (spec.type == SettingType::toggle && std::get<bool>(value)) {
-      turn_on(spec, params);
-    } else {
-      spec.set(params, value);
-    }
-    if (*spec.implies != '\0') turn_on(*find_setting(spec.implies), params);
-  }
+  params = command.settings.applied_to(params, SettingsOverrides::shared_only);
 }
 
 }  // namespace wobble

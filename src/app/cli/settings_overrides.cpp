@@ -20,9 +20,17 @@ std::vector<std::string> overridable_setting_names() {
   return names;
 }
 
-SimulationParams SettingsOverrides::applied_to(SimulationParams params) const {
-  for (const auto& [name, value] : values)
-    find_setting(name)->set(params, value);
+SimulationParams SettingsOverrides::applied_to(SimulationParams params, Which which) const {
+  for (const auto& [name, value] : values) {
+    const SettingSpec& spec = *find_setting(name);
+    if (which == shared_only && spec.per_side) continue;
+    if (spec.type == SettingType::toggle && std::get<bool>(value)) {
+      turn_on(spec, params);
+    } else {
+      spec.set(params, value);
+    }
+    if (*spec.implies != '\0' && !has(spec.implies)) turn_on(*find_setting(spec.implies), params);
+  }
   return params;
 }
 

@@ -19,8 +19,12 @@ struct SettingsOverrides {
   std::map<std::string, SettingValue> values;
 
   bool empty() const { return values.empty(); }
-  // `params` with these settings in place of its own.
-  SimulationParams applied_to(SimulationParams params) const;
+  // `params` with these settings given as a user gives them (all, or those the two sides of the
+  // split view share): a switch turned on as turn_on does (the wind over a calm scene blows the
+  // breeze), and the switch a given setting implies turned on unless it is given too
+  // (--self-collision-thickness: self-collision; --volume-stiffness: the volume term).
+  enum Which { every_setting, shared_only };
+  SimulationParams applied_to(SimulationParams params, Which which = every_setting) const;
   // Whether `name` is given.
   bool has(const std::string& name) const { return values.count(name) > 0; }
   // The value given for `name`, if any: a number (an integer's too), a switch, a choice's name.

@@ -147,8 +147,9 @@ struct SettingSpec {
   // What turning the switch on from the command line, the page's address, the panel or a key
   // does besides (the wind: a calm scene's becomes the default breeze). Null: nothing.
   void (*when_turned_on)(SimulationParams& params) = nullptr;
-  // A switch that setting this from the command line or the page's address turns on too
-  // (self-collision-thickness: self-collision). Empty: none.
+  // A switch that giving this on the command line, in the page's address or in a scene file
+  // turns on too, unless the switch is given there as well (self-collision-thickness:
+  // self-collision; volume-stiffness: volume). Empty: none.
   const char* implies = "";
   // The field of SimulationParams it reads and writes (built_in_settings.cpp binds them).
   std::function<SettingValue(const SimulationParams&)> get = nullptr;

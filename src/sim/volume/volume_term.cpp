@@ -36,6 +36,9 @@ SettingSpec stiffness_spec() {
                    SettingCost::refactorize,
                    /*log_scale=*/true,
                    /*solids_only=*/true};
+  // Giving a stiffness (the command line, the page's address, a scene file) turns the term on,
+  // unless the switch is given too.
+  spec.implies = "volume";
   // The panel's drag spans four decades around the shipped jellies' 2e4 Pa.
   spec.panel_range = {100.0, 1e6, ""};
   spec.panel_format = "%.0f";
