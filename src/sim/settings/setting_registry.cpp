@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "sim/input_error.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 namespace wobble {
 
