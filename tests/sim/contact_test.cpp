@@ -203,6 +203,33 @@ TEST(Contact, ResetPutsMovedCollidersBack) {
       std::out_of_range);
 }
 
+TEST(Contact, ATermOfOtherSettingsChangingKeepsWhatContactHas) {
+  // Collider contact is made by its factory like any term, but not made again when other
+  // settings change: the collider stays where it was dragged and the cloth lying on it stays in
+  // contact through a change of the wind (which makes the wind anew) and of friction (read each
+  // step from the context).
+  Simulation simulation(cloth(8, 1.0, 0.3), {}, contact_params({ground_collider()}, 0.0));
+  auto* contact = simulation.term<wobble::ColliderContactTerm>();
+  ASSERT_NE(contact, nullptr);
+  for (int step = 0; step < 40; ++step)
+    simulation.step();
+  ASSERT_GT(contact->colliders().contact_count(), 0) << "the cloth lies on the ground";
+  contact->translate(0, Eigen::Vector3d(0.0, 0.01, 0.0));
+  SimulationParams windy = simulation.params();
+  windy.wind.on = true;
+  windy.contact.friction = 0.5;
+  simulation.apply(windy);
+  EXPECT_EQ(simulation.term<wobble::ColliderContactTerm>(), contact) << "the same term";
+  EXPECT_DOUBLE_EQ(wobble::colliders_in(simulation.terms())[0].height, 0.01);
+  EXPECT_GT(contact->colliders().contact_count(), 0);
+  simulation.step();
+  EXPECT_EQ(contact->colliders().friction(), 0.5);
+  // A scene without colliders has no collider contact at all.
+  Simulation free(cloth(4, 1.0, 1.0), {}, SimulationParams{});
+  EXPECT_EQ(free.term<wobble::ColliderContactTerm>(), nullptr);
+  EXPECT_TRUE(wobble::colliders_in(free.terms()).empty());
+}
+
 TEST(Contact, AMovingBoxCarriesAClothLyingOnItByFriction) {
   const Collider plate = box_collider(Eigen::Vector3d(0, 0.45, 0), Eigen::Vector3d(1.5, 0.1, 1.5));
   auto run = [&](double friction) {
