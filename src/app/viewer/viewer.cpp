@@ -252,7 +252,6 @@ PanelStats Viewer::simulation_stats() const {
   stats.simulated_seconds = host_.simulation().time();
   stats.notes = scene_.notes;
   stats.has_colliders = !colliders_in(host_.simulation().terms()).empty();
-  stats.aerodynamic_wind = host_.simulation().params().wind.model == WindModel::aerodynamic;
   stats.contacts = static_cast<int>(
       host_.simulation().last_step_timing().figure("collider contact", "contacts"));
   stats.self_collision = host_.simulation().params().self_collision.on;

@@ -289,11 +289,8 @@ class Viewer {
   }
   // The panel's settings to the simulation, as one settings value (Simulation::apply).
   void apply_panel_settings();
-  // viewer_environment.cpp: damping, friction, wind and colliders.
+  // viewer_environment.cpp: the environment section's controls from the simulation's settings.
   void show_environment_in_panel();
-  // The environment section's values into `wanted`; returns whether the wind was turned on or
-  // off (the panel then shows the wind it got: the breeze, or the scene's).
-  bool environment_settings(SimulationParams& wanted);
   // viewer_instruments.cpp: the convergence and energy plots.
   void update_recording();
   void show_instruments(float ui_scale);
@@ -381,9 +378,6 @@ class Viewer {
   ColliderTriangles collider_mesh_;
   QuantityColors quantity_colors_;  // empty while coloured by material
   QuantityColors twin_colors_;      // the split view's right side, in the same range
-  // The wind's speed and heading as the panel last showed them, so that only a slider the user
-  // moved changes the wind.
-  float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;
   Eigen::Matrix4f view_ = Eigen::Matrix4f::Identity();
   Eigen::Matrix4f projection_ = Eigen::Matrix4f::Identity();
   std::unique_ptr<Renderer> renderer_;

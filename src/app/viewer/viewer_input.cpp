@@ -2,8 +2,8 @@
 #include <algorithm>
 
 #include "app/cli/scene_catalog.h"
-#include "app/interaction/environment_controls.h"
 #include "app/viewer/viewer.h"
+#include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
@@ -92,7 +92,7 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::toggle_wind:
       change([this] {
         SimulationParams wanted = host_.simulation().params();
-        wanted.wind = toggled_wind(wanted.wind);
+        toggle(*find_setting("wind"), wanted);
         host_.simulation().apply(wanted);
         show_environment_in_panel();
       });
