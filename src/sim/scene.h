@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "simulation.h"
-#include "spring_network.h"
+#include "sim/settings/simulation_params.h"
+#include "sim/spring_network.h"
 
 namespace wobble {
 

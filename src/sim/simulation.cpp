@@ -32,8 +32,6 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
   const Stopwatch stopwatch;
   validate_spring_network(network_);
   validate_simulation_params(params_);
-  for (std::size_t c = 0; c < params_.contact.colliders.size(); ++c)
-    validate_collider(params_.contact.colliders[c], "collider " + std::to_string(c));
   const Eigen::Index n = network_.V.rows();
   if (initial_velocity_.size() != 0) check_vertex_matrix(initial_velocity_, n, "initial velocity");
   for (int i : pins) {
@@ -57,18 +55,13 @@ Simulation::Simulation(SpringNetwork network, const std::vector<int>& pins,
       n == 0 ? 0.0 : (network_.V.colwise().maxCoeff() - network_.V.colwise().minCoeff()).norm();
   jump_limit_ = 100.0 * (diagonal > 0.0 ? diagonal : 1.0);  // a single vertex: 1 m
   rest_diagonal_ = diagonal > 0.0 ? diagonal : 1.0;
-  colliders_ = ColliderContactTerm(
-      ColliderContact(params_.contact.colliders, params_.contact.friction,
-                      resolved_contact_offset(params_.contact.offset, r_, rest_diagonal_)));
-  // Self-collision's grids and rest neighbourhoods are made only once it is turned on.
-  self_collision_.set(params_.self_collision);
   solver_ = make_step_solver(params_.solver, n);
   previous_.resize(n, 3);
   current_.resize(n, 3);
   next_.resize(n, 3);
   y_.resize(n, 3);
   pins_ = Pins(initial_pins, network_.V);
-  rebuild_terms();
+  rebuild_terms(nullptr);
   gravity_fext_ = wobble::gravity_forces(network_.m, params_.gravity, params_.gravity_model);
   fext_ = gravity_fext_;
 
@@ -89,9 +82,8 @@ void Simulation::reset() {
   steps_taken_ = 0;
   time_ = 0.0;
   last_status_ = StepStatus::ok;
-  const bool contact_was_held = colliders_.restart(params_.contact.colliders);
   const bool pins_changed = pins_.reset(network_.V);
-  if (terms_.reset() || pins_changed || contact_was_held) refactorize();
+  if (terms_.reset() || pins_changed) refactorize();
 }
 
 void Simulation::set_state(const Eigen::MatrixXd& current, const Eigen::MatrixXd& previous) {
@@ -109,7 +101,6 @@ StepStatus Simulation::step() {
   compute_y();
   start_iterate();
   const StepContext context = step_context();
-  colliders_.set_gravity_reach(params_.gravity.norm() * params_.dt * params_.dt);
   if (terms_.begin_step(context, next_)) refactorize();
   // The scale the step's convergence is read against: the gradient inertia alone would have with
   // every vertex a mean spring rest length off (along one axis), ‖m‖₂ r̄ / Δt².
@@ -181,30 +172,47 @@ void Simulation::start_iterate() {
 }
 
 void Simulation::prepare_solver() {
-  // Chebyshev's extrapolation needs Q to describe the contact it meets: collider contact's set on
-  // Q's diagonal follows the contact set every step while it accelerates.
-  colliders_.set_lagging(!(params_.chebyshev && params_.solver == "local-global"));
   compute_y();
   start_iterate();
   solver_->prepare(step_problem(), next_);
 }
 
 StepProblem Simulation::step_problem() {
-  return StepProblem{network_, r_,           params_, current_,       previous_,          fext_, y_,
-                     system_,  *local_step_, terms_,  step_context(), terms_.in_contact()};
+  return StepProblem{
+      network_,
+      r_,
+      SolveSettings{params_.k, params_.dt, params_.damping, params_.iterations, params_.chebyshev},
+      current_,
+      previous_,
+      fext_,
+      y_,
+      system_,
+      *local_step_,
+      terms_,
+      step_context(),
+      terms_.touching()};
 }
 
 StepContext Simulation::step_context() const {
-  return StepContext{network_, current_, previous_, pins_.flags(), params_.dt, time_};
+  StepContext context{network_, current_, previous_, pins_.flags(), params_.dt, time_};
+  read_step_settings(params_, context);
+  context.extrapolated = solver_ && solver_->extrapolates();
+  if (base_diagonal_.size() == network_.V.rows()) {
+    context.base_diagonal = &base_diagonal_;
+    context.inertia = &inertia_;
+  }
+  return context;
 }
 
-void Simulation::rebuild_terms() {
-  made_terms_ = make_terms(TermSetup{params_, network_, rest_diagonal_});
+void Simulation::rebuild_terms(const SimulationParams* before) {
+  make_terms(TermSetup{params_, network_, r_, rest_diagonal_}, before, made_terms_);
   std::vector<StepTerm*> list{&pins_};
-  for (const auto& term : made_terms_)
+  any_term_made_ = false;
+  for (const auto& term : made_terms_) {
+    if (!term) continue;
     list.push_back(term.get());
-  list.push_back(&colliders_);
-  list.push_back(&self_collision_);
+    any_term_made_ = true;
+  }
   terms_.set(std::move(list));
   // The made terms' fixed part of Q (the volume term's); the caller refactorizes. A pattern that
   // had to grow is analyzed again (never in the constructor, which analyzes after this).
@@ -213,17 +221,16 @@ void Simulation::rebuild_terms() {
 }
 
 void Simulation::apply_forces() {
-  if (made_terms_.empty()) return;  // fext_ already holds gravity alone
+  if (!any_term_made_) return;  // fext_ already holds gravity alone
   fext_ = gravity_fext_;
   terms_.add_forces(step_context(), fext_);
 }
 
 void Simulation::refactorize() {
-  const Eigen::VectorXd base =
-      system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m);
-  terms_.set_base_diagonal(base, inertia_scale(params_.dt, params_.damping) * network_.m);
+  base_diagonal_ = system_.base_diagonal(params_.k, params_.dt, params_.damping, network_.m);
+  inertia_ = inertia_scale(params_.dt, params_.damping) * network_.m;
   system_.refactorize(params_.k, params_.dt, params_.damping, network_.m,
-                      terms_.diagonal(network_.V.rows()));
+                      terms_.diagonal(step_context()));
 }
 
 void Simulation::update_observers() {
@@ -242,6 +249,12 @@ double Simulation::step_energy(const Eigen::MatrixXd& p, Eigen::MatrixXd* gradie
 
 Eigen::MatrixXd Simulation::velocities() const {
   return (current_ - previous_) / params_.dt;
+}
+
+FrameEnergy frame_energy(const Simulation& simulation) {
+  return frame_energy(simulation.rest(), simulation.rest_lengths(), simulation.params().k,
+                      simulation.params().dt, simulation.positions(),
+                      simulation.previous_positions(), simulation.gravity_forces());
 }
 
 }  // namespace wobble

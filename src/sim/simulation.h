@@ -9,14 +9,13 @@
 #include <vector>
 
 #include "sim/constraints/pins.h"
-#include "sim/contact/collider_contact_term.h"
-#include "sim/contact/self_contact_term.h"
 #include "sim/instruments/convergence_recorder.h"
+#include "sim/instruments/frame_energy.h"
 #include "sim/instruments/iteration_callback.h"
 #include "sim/instruments/step_objective.h"
 #include "sim/instruments/step_observer.h"
 #include "sim/settings/setting_registry.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 #include "sim/solver/local_global_solver.h"
 #include "sim/solver/local_step.h"
 #include "sim/solver/step_solver.h"
@@ -47,12 +46,13 @@ enum class StepStatus {
 //   global: Q p = k Aᵀd + y,  Q = k AᵀA + (1 + cΔt)M/Δt² + w CᵀC,
 //           y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + w CᵀC p_target,  w = 1e10,
 // c the damping (0 by default). Every term beyond the springs and the inertia is one object in
-// one list (terms/step_terms.h), in this order: the pins (constraints/pins.h: w CᵀC on Q's
-// diagonal, w CᵀC p_target in y), the made terms (terms/term_registry.h: the wind's forces, and
-// any term registered from outside), contact with the colliders (contact/collider_contact_term.h:
-// inside the solve for the vertices near a collider, then a projection after it) and
-// self-contact. With every pin target at its rest position, no damping, no wind and no collider
-// this is exactly fast_mass_springs_step_sparse.
+// one list (terms/step_terms.h, in the order terms/term_registry.h gives): the pins
+// (constraints/pins.h: w CᵀC on Q's diagonal, w CᵀC p_target in y), then the terms the
+// registered factories make for the settings (sim/registered_terms.cpp: the built-in ones, and
+// any term registered from outside). What a term needs of the step (gravity, μ, the solver's
+// extrapolation, Q's diagonal) reaches it through the StepContext; its own figures reach
+// last_step_timing().figures, and its own accessors term<Term>(). With every pin target at its
+// rest position, no damping and no term made this is exactly fast_mass_springs_step_sparse.
 //
 // Each step calls, in this order:
 //   forces      f_ext = gravity (forces/gravity.h) + each term's forces
@@ -72,11 +72,10 @@ enum class StepStatus {
 //   unpin, reset,              (Q's sparsity pattern never changes: its diagonal is always stored)
 //   a step whose term
 //   changed its weights
-//   (collider contact: at most
-//   once in lag_steps steps)
 //   iterations, gravity,     nothing precomputed
-//   set_state, wind,
-//   friction, colliders
+//   set_state, friction
+//   a term's settings        the terms made anew where their entries say the old ones no longer
+//                            serve (terms/term_registry.h)
 class Simulation {
  public:
   static constexpr double pin_weight = Pins::weight;  // w
@@ -104,7 +103,7 @@ class Simulation {
   // One line for a user about a failed step, with what to try.
   static std::string describe(StepStatus status);
   // Back to the initial state: rest positions, initial velocity, initial pins at rest targets,
-  // colliders where the scene placed them, time 0. Parameters (k, dt, iterations, gravity,
+  // every term as it started (StepTerm::reset), time 0. Parameters (k, dt, iterations, gravity,
   // damping, wind, friction) keep their current values.
   void reset();
   // Replace the state: positions at the current and previous time steps, each #V by 3 (m).
@@ -116,13 +115,14 @@ class Simulation {
   // difference from the settings in force needs, the costs of the settings that changed (their
   // declarations, sim/settings/setting_registry.h): k, dt, damping (and an added setting whose
   // cost is refactorize) a numeric re-factorization; the solver or Chebyshev the solver's
-  // preparation; the wind and added settings the made terms anew; gravity, friction,
-  // self-collision, iterations a value. A new dt keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt
-  // by rescaling the previous positions. Chebyshev turned on for the first time estimates ρ with
-  // a short run of plain iterations from the current state (which it leaves unchanged). The
-  // colliders (moved by translate_collider), the contact offset and single_precision_solve_above
-  // stay as the simulation started. Throws InputError, changing nothing, for a value out of its
-  // limits, an unknown solver or too many iterations for the mesh.
+  // preparation; the wind, self-collision and added settings the terms anew (those whose
+  // entries say the old ones no longer serve); gravity, friction, iterations a value. A new dt
+  // keeps every vertex's velocity (pᵗ − pᵗ⁻ᐞᵗ)/Δt by rescaling the previous positions.
+  // Chebyshev turned on for the first time estimates ρ with a short run of plain iterations from
+  // the current state (which it leaves unchanged). What the terms were made with as the
+  // simulation started, and single_precision_solve_above, stay so (kept_while_running,
+  // settings/simulation_params.h). Throws InputError, changing nothing, for a
+  // value out of its limits, an unknown solver or too many iterations for the mesh.
   //   simulation.apply(with_setting(simulation.params(), "k", 2000.0));
   void apply(const SimulationParams& params);
   // The plain iterations of the run that estimates Chebyshev's ρ; ρ comes from the second half.
@@ -131,27 +131,6 @@ class Simulation {
   // The spectral radius the acceleration uses; 0 until estimated.
   double chebyshev_spectral_radius() const { return solver_->spectral_radius(); }
 
-  // The colliders where they are now (reset() puts them back where the scene placed them).
-  const std::vector<Collider>& colliders() const { return colliders_.colliders().colliders(); }
-  // Moves collider `index` rigidly by `offset` (m). Throws std::out_of_range for a bad index.
-  void translate_collider(int index, const Eigen::Vector3d& offset);
-  // The contact offset in use (m): the scene's, or the automatic one.
-  double contact_offset() const { return colliders_.colliders().offset(); }
-  // Vertices the last step moved out of a collider.
-  int contact_count() const { return colliders_.colliders().contact_count(); }
-  // The same as #V flags (empty when there is no collider).
-  const std::vector<char>& collider_contact_vertices() const {
-    return colliders_.colliders().contact_vertices();
-  }
-  // Vertices a layer of the same surface pressed on in the last step (self-contact's force on
-  // them), and the same as #V flags.
-  int self_contact_count() const;
-  const std::vector<char>& self_contact_vertices() const;
-  // The gap self-collision keeps (m): params().self_collision.thickness, clamped to what the
-  // mesh can keep (largest_self_collision_thickness).
-  double self_collision_thickness_kept() const;
-  // Memory self-contact holds (bytes): its surface, grids, pairs and buffers.
-  std::size_t self_contact_memory_bytes() const { return self_collision_.memory_bytes(); }
   // Simulated time (s): the sum of the accepted steps' Δt since the start or the last reset.
   double time() const { return time_; }
 
@@ -200,6 +179,15 @@ class Simulation {
   const StepTiming& last_step_timing() const { return timing_; }
   // The step's terms in step order.
   const StepTerms& terms() const { return terms_; }
+  // The step's term of type Term, or nullptr when none is made (its own accessors and edits).
+  template <typename Term>
+  Term* term() {
+    return terms_.find<Term>();
+  }
+  template <typename Term>
+  const Term* term() const {
+    return terms_.find<Term>();
+  }
   // Time spent in the constructor: rest lengths, Q's pattern, analysis and first factorization.
   double precompute_ms() const { return precompute_ms_; }
   // How often Q was analysed symbolically (once, in the constructor) and factorized numerically.
@@ -217,8 +205,9 @@ class Simulation {
   }
 
  private:
-  // The made terms (terms/term_registry.h) for the current params, and the list again.
-  void rebuild_terms();
+  // The terms (terms/term_registry.h) for the current params, kept where they still serve those
+  // they were made for (`before`; none: all made), and the list again.
+  void rebuild_terms(const SimulationParams* before);
   // fext_ = gravity plus this step's forces (wind).
   void apply_forces();
   // y_ = the damped inertia + f_ext + the terms' fixed part (w CᵀC p_target): fixed for the
@@ -226,8 +215,7 @@ class Simulation {
   void compute_y();
   // next_ = the first iterate of a step, as params_.first_iterate says.
   void start_iterate();
-  // The solver's prepare() on the step about to be taken (see StepSolver::prepare), and what
-  // the terms must know of the solver (collider contact lags only without Chebyshev).
+  // The solver's prepare() on the step about to be taken (see StepSolver::prepare).
   void prepare_solver();
   StepContext step_context() const;
   StepProblem step_problem();
@@ -248,11 +236,12 @@ class Simulation {
   Eigen::MatrixXd previous_, current_, next_;  // pᵗ⁻ᐞᵗ, pᵗ and the iterate, #V by 3
   Eigen::MatrixXd gravity_fext_;               // #V by 3 gravity alone (N)
   Eigen::MatrixXd fext_, y_;                   // #V by 3 buffers kept to avoid allocation
-  std::vector<std::unique_ptr<StepTerm>> made_terms_;  // terms/term_registry.h
-  ColliderContactTerm colliders_;
-  SelfContactTerm self_collision_{network_, colliders_.colliders()};
-  StepTerms terms_;             // pins_, made_terms_, colliders_, self_collision_: in step order
-  double rest_diagonal_ = 0.0;  // of the rest shape's bounding box (m)
+  // The terms after the pins, one slot per entry of terms/term_registry.h (null where off).
+  std::vector<std::unique_ptr<StepTerm>> made_terms_;
+  bool any_term_made_ = false;  // whether any slot holds a term (else fext_ is gravity alone)
+  StepTerms terms_;             // pins_ and made_terms_, in step order
+  Eigen::VectorXd base_diagonal_, inertia_;  // #V: Q's diagonal without the terms, its inertia
+  double rest_diagonal_ = 0.0;               // of the rest shape's bounding box (m)
   double time_ = 0.0;
 
   SystemMatrix system_;  // Q and its factorization
@@ -269,6 +258,9 @@ class Simulation {
   double jump_limit_ = 0.0;
   StepStatus last_status_ = StepStatus::ok;
 };
+
+// The energy of `simulation` now (instruments/frame_energy.h).
+FrameEnergy frame_energy(const Simulation& simulation);
 
 }  // namespace wobble
 

@@ -19,13 +19,7 @@ namespace wobble {
 void Simulation::apply(const SimulationParams& wanted) {
   // Everything that can refuse does so before anything changes.
   validate_simulation_params(wanted);
-  SimulationParams next = wanted;
-  // What a running simulation keeps as it started: its colliders (translate_collider moves
-  // them), the contact offset and the single-precision threshold.
-  next.contact.colliders = params_.contact.colliders;
-  next.contact.offset = params_.contact.offset;
-  next.single_precision_solve_above = params_.single_precision_solve_above;
-
+  SimulationParams next = kept_while_running(wanted, params_);
   // What the difference costs: the costs of every setting whose value changed.
   SettingCost cost = SettingCost::value;
   for (const SettingSpec& spec : all_settings()) {
@@ -40,6 +34,7 @@ void Simulation::apply(const SimulationParams& wanted) {
     previous_ = current_ - (current_ - previous_) * (next.dt / params_.dt);
   }
 
+  const SimulationParams before = std::move(params_);
   params_ = std::move(next);
   if (solver) solver_ = std::move(solver);
   if (needs(SettingCost::gravity)) {
@@ -47,11 +42,9 @@ void Simulation::apply(const SimulationParams& wanted) {
     fext_ = gravity_fext_;
   }
   if (needs(SettingCost::terms)) {
-    rebuild_terms();
-    if (made_terms_.empty()) fext_ = gravity_fext_;
+    rebuild_terms(&before);
+    if (!any_term_made_) fext_ = gravity_fext_;
   }
-  if (needs(SettingCost::friction)) colliders_.colliders().set_friction(params_.contact.friction);
-  if (needs(SettingCost::self_collision)) self_collision_.set(params_.self_collision);
   if (needs(SettingCost::factorization)) refactorize();
   // Chebyshev's ρ and L-BFGS's history start from the state as it now is.
   if (needs(SettingCost::solver_state)) prepare_solver();
@@ -102,23 +95,6 @@ void Simulation::unpin(int i) {
 
 void Simulation::set_pin_target(int i, const Eigen::Vector3d& target) {
   pins_.set_target(i, target);
-}
-
-void Simulation::translate_collider(int index, const Eigen::Vector3d& offset) {
-  if (!offset.allFinite()) throw std::invalid_argument("translate_collider: offset is not finite");
-  colliders_.colliders().translate(index, offset);
-}
-
-double Simulation::self_collision_thickness_kept() const {
-  return self_collision_.thickness_kept(params_.self_collision.thickness);
-}
-
-int Simulation::self_contact_count() const {
-  return self_collision_.contact_count();
-}
-
-const std::vector<char>& Simulation::self_contact_vertices() const {
-  return self_collision_.contact_vertices();
 }
 
 bool Simulation::is_pinned(int i) const {

@@ -11,6 +11,8 @@
 
 #include "app/viewer/viewer.h"
 #include "io/load_scene.h"
+#include "sim/contact/collider_contact_term.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/settings/setting_registry.h"
 #include "viewer_panel_fixture.h"
 
@@ -32,7 +34,8 @@ TEST(ViewerPanel, TheSelfCollisionCheckboxTurnsItOnAndOffInTheSimulation) {
   EXPECT_TRUE(f.viewer.stats().self_collision);
   for (int i = 0; i < 3; ++i)
     f.viewer.advance();
-  EXPECT_EQ(f.viewer.stats().self_contacts, f.viewer.simulation().self_contact_count());
+  EXPECT_EQ(f.viewer.stats().self_contacts,
+            f.viewer.simulation().term<wobble::SelfContactTerm>()->contact_count());
   EXPECT_TRUE(f.find("thickness (mm)"));
 
   f.click(*f.find("self-collision"));
@@ -182,10 +185,11 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
   wobble::Viewer viewer(std::move(scene), settings, wobble::builtin_scene_names());
   for (int i = 0; i < 40; ++i)
     viewer.advance();
-  const std::vector<char>& flags = viewer.simulation().collider_contact_vertices();
+  const std::vector<char>& flags = wobble::collider_contact_vertices(viewer.simulation().terms());
   const std::vector<float>& colors = viewer.quantity_colors().vertex_colors();
   ASSERT_EQ(colors.size(), 3 * flags.size());
-  ASSERT_GT(viewer.simulation().contact_count(), 0) << "the cloth lies on the sphere";
+  ASSERT_GT(viewer.simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count(), 0)
+      << "the cloth lies on the sphere";
   int coloured = 0;
   for (std::size_t i = 0; i < flags.size(); ++i) {
     const Eigen::Vector3f color(colors[3 * i], colors[3 * i + 1], colors[3 * i + 2]);
@@ -194,7 +198,8 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
     coloured += color == wobble::collider_contact_color();
     EXPECT_EQ(color, expected) << i;
   }
-  EXPECT_EQ(coloured, viewer.simulation().contact_count());
+  EXPECT_EQ(coloured,
+            viewer.simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count());
 }
 
 }  // namespace

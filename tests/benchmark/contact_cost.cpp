@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "median.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/simulation.h"
 
@@ -60,8 +61,10 @@ void print_contact_cost() {
     std::printf(
         "contact/128x128 drape%s  %d contacts  step %.2f ms  contact %.3f ms (%.1f%%)  "
         "wind %.3f ms (%.1f%%)\n",
-        windy ? " + wind" : "", simulation.contact_count(), step_ms, median(contact),
-        100.0 * median(contact) / step_ms, median(wind), 100.0 * median(wind) / step_ms);
+        windy ? " + wind" : "",
+        simulation.term<wobble::ColliderContactTerm>()->colliders().contact_count(), step_ms,
+        median(contact), 100.0 * median(contact) / step_ms, median(wind),
+        100.0 * median(wind) / step_ms);
     std::printf(
         "contact/128x128 drape%s  landing: steps 1-40 median %.2f ms, slowest %.2f ms, Q "
         "refactorized %d times; steps 41-80: %d times\n",

@@ -3,7 +3,7 @@
 
 #include <Eigen/Core>
 
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 #include "sim/spring_network.h"
 
 namespace wobble::benchmark {

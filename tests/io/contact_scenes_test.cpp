@@ -11,6 +11,7 @@
 #include "../shared_constants.h"
 #include "io/load_scene.h"
 #include "sim/contact/collider.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/simulation.h"
 
 namespace {
@@ -28,7 +29,7 @@ Run run_scene(wobble::Simulation& simulation, int steps) {
   for (int step = 0; step < steps; ++step) {
     EXPECT_EQ(simulation.step(), wobble::StepStatus::ok) << "step " << step;
     const Eigen::MatrixXd& p = simulation.positions();
-    for (const wobble::Collider& c : simulation.colliders()) {
+    for (const wobble::Collider& c : wobble::colliders_in(simulation.terms())) {
       const double scale = wobble::collider_scale(c);
       for (Eigen::Index i = 0; i < p.rows(); ++i) {
         const double depth = -wobble::collider_surface(c, p.row(i).transpose()).distance;
@@ -52,7 +53,8 @@ std::unique_ptr<wobble::Simulation> open(const std::string& name) {
 
 void expect_no_penetration(const Run& run, const wobble::Simulation& simulation) {
   EXPECT_LE(run.worst_relative, 0.01);
-  EXPECT_LE(run.worst_below_ground, simulation.contact_offset());
+  EXPECT_LE(run.worst_below_ground,
+            simulation.term<wobble::ColliderContactTerm>()->colliders().offset());
 }
 
 TEST(ContactScenes, DrapeRestsOnTheBall) {
@@ -84,7 +86,8 @@ TEST(ContactScenes, JellyDropComesToRestOnTheFloor) {
   EXPECT_DOUBLE_EQ(simulation->params().damping, 1.0);
   expect_no_penetration(run_scene(*simulation, 240), *simulation);  // 4 s
   EXPECT_LT(simulation->velocities().rowwise().norm().maxCoeff(), 0.05);
-  EXPECT_NEAR(simulation->positions().col(1).minCoeff(), simulation->contact_offset(), 0.01);
+  EXPECT_NEAR(simulation->positions().col(1).minCoeff(),
+              simulation->term<wobble::ColliderContactTerm>()->colliders().offset(), 0.01);
 }
 
 TEST(ContactScenes, FlagFliesInTheWindBesideItsPole) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/input_error.h"
+#include "sim/simulation.h"
 
 namespace {
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sim/contact/collider.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/shapes/cloth_grid.h"
 #include "sim/shapes/jelly_block.h"
 #include "sim/simulation.h"
@@ -56,7 +57,7 @@ struct Penetration {
 Penetration penetration(const Simulation& simulation) {
   Penetration worst;
   const Eigen::MatrixXd& p = simulation.positions();
-  for (const Collider& c : simulation.colliders()) {
+  for (const Collider& c : wobble::colliders_in(simulation.terms())) {
     for (Eigen::Index i = 0; i < p.rows(); ++i) {
       const double depth = -wobble::collider_surface(c, p.row(i).transpose()).distance;
       if (c.type == ColliderType::ground || c.type == ColliderType::plane) {
@@ -76,7 +77,9 @@ void run_checking_contact(Simulation& simulation, int steps) {
     ASSERT_EQ(simulation.step(), wobble::StepStatus::ok) << "step " << step;
     const Penetration worst = penetration(simulation);
     ASSERT_LE(worst.relative, 0.01) << "step " << step;
-    ASSERT_LE(worst.below_ground, simulation.contact_offset()) << "step " << step;
+    ASSERT_LE(worst.below_ground,
+              simulation.term<wobble::ColliderContactTerm>()->colliders().offset())
+        << "step " << step;
   }
 }
 
@@ -93,7 +96,7 @@ TEST(Contact, ClothDrapesOverASphereWithoutEnteringIt) {
     const int middle = wobble::cloth_grid_vertex(24, 12, 12);
     EXPECT_NEAR(p(middle, 1), 0.8, 0.03);
     EXPECT_LT(p(0, 1), 0.6);
-    EXPECT_GT(simulation.contact_count(), 20);
+    EXPECT_GT(simulation.term<wobble::ColliderContactTerm>()->colliders().contact_count(), 20);
   }
 }
 
@@ -124,7 +127,8 @@ TEST(Contact, RefactorizesQOnlyWhenTheContactSetChanges) {
   EXPECT_GT(landed, before) << "the vertices near the ground join the solve's contact";
   for (int step = 0; step < 60; ++step)
     simulation.step();
-  EXPECT_GT(simulation.contact_count(), 100) << "the cloth must be lying on the ground";
+  EXPECT_GT(simulation.term<wobble::ColliderContactTerm>()->colliders().contact_count(), 100)
+      << "the cloth must be lying on the ground";
   EXPECT_EQ(simulation.numeric_factorizations(), landed);
   EXPECT_EQ(simulation.symbolic_analyses(), 1);
 }
@@ -180,7 +184,8 @@ TEST(Contact, AJellyDroppedOnTheGroundComesToRest) {
   EXPECT_LT(top_speed, 0.05);
   // Resting on the ground, neither sunk into it nor blown apart.
   const Eigen::MatrixXd& p = simulation.positions();
-  EXPECT_NEAR(p.col(1).minCoeff(), simulation.contact_offset(), 0.01);
+  EXPECT_NEAR(p.col(1).minCoeff(),
+              simulation.term<wobble::ColliderContactTerm>()->colliders().offset(), 0.01);
   const Eigen::Vector3d extent = p.colwise().maxCoeff() - p.colwise().minCoeff();
   // (It sags about a quarter under its own weight: 0.5 m tall, it rests 0.38 m tall.)
   EXPECT_LT((extent - rest_extent).cwiseAbs().maxCoeff(), 0.3 * rest_extent.maxCoeff());
@@ -189,11 +194,40 @@ TEST(Contact, AJellyDroppedOnTheGroundComesToRest) {
 TEST(Contact, ResetPutsMovedCollidersBack) {
   Simulation simulation(cloth(8, 1.0, 1.0), {},
                         contact_params({sphere_collider({0, 0, 0}, 0.2)}, 0.0));
-  simulation.translate_collider(0, Eigen::Vector3d(0.5, 0, 0));
-  EXPECT_DOUBLE_EQ(simulation.colliders()[0].center.x(), 0.5);
+  simulation.term<wobble::ColliderContactTerm>()->translate(0, Eigen::Vector3d(0.5, 0, 0));
+  EXPECT_DOUBLE_EQ(wobble::colliders_in(simulation.terms())[0].center.x(), 0.5);
   simulation.reset();
-  EXPECT_DOUBLE_EQ(simulation.colliders()[0].center.x(), 0.0);
-  EXPECT_THROW(simulation.translate_collider(1, Eigen::Vector3d::Zero()), std::out_of_range);
+  EXPECT_DOUBLE_EQ(wobble::colliders_in(simulation.terms())[0].center.x(), 0.0);
+  EXPECT_THROW(
+      simulation.term<wobble::ColliderContactTerm>()->translate(1, Eigen::Vector3d::Zero()),
+      std::out_of_range);
+}
+
+TEST(Contact, ATermOfOtherSettingsChangingKeepsWhatContactHas) {
+  // Collider contact is made by its factory like any term, but not made again when other
+  // settings change: the collider stays where it was dragged and the cloth lying on it stays in
+  // contact through a change of the wind (which makes the wind anew) and of friction (read each
+  // step from the context).
+  Simulation simulation(cloth(8, 1.0, 0.3), {}, contact_params({ground_collider()}, 0.0));
+  auto* contact = simulation.term<wobble::ColliderContactTerm>();
+  ASSERT_NE(contact, nullptr);
+  for (int step = 0; step < 40; ++step)
+    simulation.step();
+  ASSERT_GT(contact->colliders().contact_count(), 0) << "the cloth lies on the ground";
+  contact->translate(0, Eigen::Vector3d(0.0, 0.01, 0.0));
+  SimulationParams windy = simulation.params();
+  windy.wind.on = true;
+  windy.contact.friction = 0.5;
+  simulation.apply(windy);
+  EXPECT_EQ(simulation.term<wobble::ColliderContactTerm>(), contact) << "the same term";
+  EXPECT_DOUBLE_EQ(wobble::colliders_in(simulation.terms())[0].height, 0.01);
+  EXPECT_GT(contact->colliders().contact_count(), 0);
+  simulation.step();
+  EXPECT_EQ(contact->colliders().friction(), 0.5);
+  // A scene without colliders has no collider contact at all.
+  Simulation free(cloth(4, 1.0, 1.0), {}, SimulationParams{});
+  EXPECT_EQ(free.term<wobble::ColliderContactTerm>(), nullptr);
+  EXPECT_TRUE(wobble::colliders_in(free.terms()).empty());
 }
 
 TEST(Contact, AMovingBoxCarriesAClothLyingOnItByFriction) {
@@ -204,7 +238,7 @@ TEST(Contact, AMovingBoxCarriesAClothLyingOnItByFriction) {
       simulation.step();  // settle on the plate
     const double before = simulation.positions().col(0).mean();
     for (int step = 0; step < 30; ++step) {
-      simulation.translate_collider(0, Eigen::Vector3d(0.005, 0, 0));
+      simulation.term<wobble::ColliderContactTerm>()->translate(0, Eigen::Vector3d(0.005, 0, 0));
       simulation.step();
     }
     return simulation.positions().col(0).mean() - before;

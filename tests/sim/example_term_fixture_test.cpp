@@ -45,8 +45,9 @@ class Tether : public wobble::StepTerm {
   Tether(double stiffness, const Eigen::Vector3d& anchor)
       : stiffness_(stiffness), anchor_(anchor.transpose()) {}
   const char* name() const override { return "tether"; }
-  void add_diagonal(Eigen::VectorXd& diagonal) const override { diagonal.array() += stiffness_; }
-  bool in_solve() const override { return true; }
+  void add_diagonal(const wobble::StepContext& /*step*/, Eigen::VectorXd& diagonal) override {
+    diagonal.array() += stiffness_;
+  }
   void add_targets(const wobble::StepContext& /*step*/, const Eigen::MatrixXd& p,
                    Eigen::MatrixXd& rhs, double* energy) override {
     rhs.rowwise() += stiffness_ * anchor_;
@@ -56,9 +57,12 @@ class Tether : public wobble::StepTerm {
                     Eigen::MatrixXd* gradient) const override {
     return add_energy_at(p, gradient);
   }
-  bool begin_step(const wobble::StepContext& /*step*/, const Eigen::MatrixXd& /*first*/) override {
+  wobble::TermStep begin_step(const wobble::StepContext& /*step*/,
+                              const Eigen::MatrixXd& /*first*/) override {
     ++steps_;
-    return false;  // its weights never change
+    wobble::TermStep begun;
+    begun.in_solve = true;  // its weights on Q's diagonal never change
+    return begun;
   }
   void report(std::vector<wobble::TermFigure>& figures) const override {
     figures.push_back(wobble::TermFigure{"tether", "steps", "", static_cast<double>(steps_)});

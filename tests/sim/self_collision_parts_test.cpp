@@ -14,6 +14,7 @@
 #include "sim/contact/closest_points.h"
 #include "sim/contact/self_collision_surface.h"
 #include "sim/contact/self_contact_proximity.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/contact/spatial_grid.h"
 #include "sim/simulation.h"
 
@@ -226,7 +227,7 @@ CoincidentRun run_coincident(int n) {
   EXPECT_EQ(simulation.step(), wobble::StepStatus::ok);
   run.end = simulation.positions();
   run.pairs = simulation.last_step_timing().figure("self-contact", "pairs");
-  run.memory = simulation.self_contact_memory_bytes();
+  run.memory = simulation.term<wobble::SelfContactTerm>()->memory_bytes();
   return run;
 }
 

@@ -9,7 +9,6 @@
 
 namespace {
 
-using wobble::ColliderContact;
 using wobble::SelfCollisionParams;
 using wobble::SelfContactTerm;
 using wobble::SpringNetwork;
@@ -41,17 +40,17 @@ TEST(SelfContactTerm, AnOpenPairClosedIterationByIterationIsPushedApartOnceShort
   rest.F << 0, 2, 1,  //
       3, 5, 4;
   rest.m = Eigen::VectorXd::Ones(6);
-  const ColliderContact colliders;
-  SelfContactTerm term(rest, colliders);
+  SelfContactTerm term(rest);
   term.set(SelfCollisionParams{true, thickness});
   ASSERT_EQ(term.thickness_kept(thickness), thickness);
   const Eigen::VectorXd inertia = rest.m / (dt * dt);
-  term.set_base_diagonal(inertia, inertia);
 
   Eigen::MatrixXd start = rest.V;
   start.col(1).tail(3).setConstant(0.015);
   const std::vector<char> pinned(6, 0);
-  const StepContext step{rest, start, start, pinned, dt, 0.0};
+  StepContext step{rest, start, start, pinned, dt, 0.0};
+  step.base_diagonal = &inertia;
+  step.inertia = &inertia;
   term.begin_step(step, start);
 
   // Each iteration the solve brings the small triangle 1 mm lower; the sweep must hold it at

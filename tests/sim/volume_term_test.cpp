@@ -11,6 +11,7 @@
 #include <string>
 
 #include "sim/contact/collider.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/instruments/rigid_fit.h"
 #include "sim/settings/setting_registry.h"
 #include "sim/shapes/builtin_scenes.h"
@@ -121,11 +122,12 @@ Outcome squashed_flat(const std::string& solver, bool volume) {
   // Down to 2 cm above the ground over 1 s, held 0.5 s, then out of reach at once.
   const int down = static_cast<int>(1.0 / dt + 0.5);
   for (int step = 0; step < down; ++step) {
-    simulation->translate_collider(0, Eigen::Vector3d(0.0, -(0.5 + 0.05 - 0.02) / down, 0.0));
+    simulation->term<wobble::ColliderContactTerm>()->translate(
+        0, Eigen::Vector3d(0.0, -(0.5 + 0.05 - 0.02) / down, 0.0));
     EXPECT_EQ(simulation->step(), wobble::StepStatus::ok);
   }
   run(*simulation, 0.5);
-  simulation->translate_collider(0, Eigen::Vector3d(0.0, 10.0, 0.0));
+  simulation->term<wobble::ColliderContactTerm>()->translate(0, Eigen::Vector3d(0.0, 10.0, 0.0));
   run(*simulation, 2.0);
   return outcome(rest, *simulation);
 }

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "sim/settings/setting_registry.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 namespace wobble {
 

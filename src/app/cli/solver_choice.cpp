@@ -2,7 +2,7 @@
 
 #include "sim/input_error.h"
 #include "sim/settings/setting_registry.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 #include "sim/solver/solver_registry.h"
 
 namespace wobble {

@@ -1,4 +1,5 @@
 #include "app/interaction/collider_drag.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace wobble {
 
@@ -19,7 +20,7 @@ void ColliderDrag::move(Simulation& simulation, const Ray& cursor) {
   const float distance = away.norm();
   if (!(distance <= reach_)) away *= reach_ / distance;
   const Eigen::Vector3f target = plane_point_ + away;
-  simulation.translate_collider(index_, (target - held_).cast<double>());
+  simulation.term<ColliderContactTerm>()->translate(index_, (target - held_).cast<double>());
   held_ = target;
 }
 

@@ -10,7 +10,7 @@ namespace wobble {
 
 // Moving a collider with the mouse (Alt+left-drag), as a pin is dragged: the grabbed surface
 // point follows the cursor in the plane through it that faces the camera, and the collider moves
-// rigidly with it through Simulation::translate_collider (no re-factorization).
+// rigidly with it through its term, ColliderContactTerm::translate (no re-factorization).
 class ColliderDrag {
  public:
   // Take hold of collider `index` at `grab_point` (m, on its surface under the cursor);

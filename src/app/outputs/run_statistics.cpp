@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "io/setting_json.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/parallel/worker_pool.h"
 #include "sim/settings/setting_registry.h"
 
@@ -69,8 +70,11 @@ nlohmann::ordered_json run_statistics(const Simulation& simulation, const Scene&
       {"step_ms_max", step_ms.empty() ? 0.0 : *std::max_element(step_ms.begin(), step_ms.end())},
       {"local_ms_median", median(times.local_ms)},
       {"global_ms_median", median(times.global_ms)},
-      {"self_collision_thickness_kept", simulation.self_collision_thickness_kept()},
-      {"self_contacts", simulation.self_contact_count()},
+      {"self_collision_thickness_kept",
+       self_collision_thickness_kept(simulation.terms(),
+                                     simulation.params().self_collision.thickness)},
+      {"self_contacts",
+       static_cast<int>(simulation.last_step_timing().figure("self-contact", "contacts"))},
       {"threads", shared_thread_setting().threads},
       {"threads_from", shared_thread_setting().source},
   };

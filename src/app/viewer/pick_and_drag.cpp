@@ -7,6 +7,7 @@
 #include "app/interaction/collider_picking.h"
 #include "app/interaction/input_mapping.h"
 #include "render/camera.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace wobble {
 
@@ -82,8 +83,9 @@ bool PickAndDrag::press(const InputEvent& event, const Eigen::Vector2f& at,
   const int vertex = pin >= 0 ? pin : pick(picture, at, /*pinned_only=*/false);
   const Ray ray = ray_at(picture, at);
   const std::optional<ColliderHit> collider =
-      event.alt && context.colliders_shown ? pick_collider(ray, context.simulation.colliders())
-                                           : std::nullopt;
+      event.alt && context.colliders_shown
+          ? pick_collider(ray, colliders_in(context.simulation.terms()))
+          : std::nullopt;
   MouseGesture gesture = gesture_for_press(event.code, event.control, event.shift, over_ui_,
                                            pin >= 0, vertex >= 0, event.alt, collider.has_value());
   if (context.camera_only && gesture != MouseGesture::orbit && gesture != MouseGesture::pan) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "sim/contact/collider_contact_term.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/shapes/tet_mesh.h"
 #include "sim/simulation.h"
 
@@ -228,8 +230,8 @@ void QuantityColors::paint(const Simulation& simulation, float range, bool with_
     return;
   }
   if (quantity_ == ColorQuantity::contacts) {
-    const std::vector<char>& self = simulation.self_contact_vertices();
-    const std::vector<char>& collider = simulation.collider_contact_vertices();
+    const std::vector<char>& self = self_contact_vertices(simulation.terms());
+    const std::vector<char>& collider = collider_contact_vertices(simulation.terms());
     contact_colors(self, collider, static_cast<int>(vertex_count), vertex_colors_);
     const auto size = static_cast<std::size_t>(vertex_count);
     const auto touching = [&](Eigen::Index i) {

@@ -11,6 +11,7 @@
 #include "app/cli/solver_choice.h"
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/side_settings.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace wobble {
 
@@ -123,10 +124,12 @@ void RightSide::sync(const Simulation& left) {
   for (const int i : pins)
     right.set_pin_target(i, left.pin_target(i));
   // Colliders where the left side's are (an Alt+drag moves both).
-  for (std::size_t c = 0; c < left.colliders().size(); ++c) {
+  const std::vector<Collider>& lefts = colliders_in(left.terms());
+  for (std::size_t c = 0; c < lefts.size(); ++c) {
     const Eigen::Vector3d offset =
-        collider_anchor(left.colliders()[c]) - collider_anchor(right.colliders()[c]);
-    if (!offset.isZero(0.0)) right.translate_collider(static_cast<int>(c), offset);
+        collider_anchor(lefts[c]) - collider_anchor(colliders_in(right.terms())[c]);
+    if (!offset.isZero(0.0))
+      right.term<ColliderContactTerm>()->translate(static_cast<int>(c), offset);
   }
   // The environment is the left side's; what each side steps with (k, dt, iterations, the
   // solver, Chebyshev, the added settings: those declared per_side) stays the right side's own.

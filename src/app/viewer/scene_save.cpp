@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "io/write_wobble_scene.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace wobble {
 
@@ -18,7 +19,7 @@ Scene scene_to_save(
   scene.pins = simulation.pinned_vertices();
   scene.params = simulation.params();
   // The colliders as they are now; params() keeps the ones the scene placed.
-  scene.params.contact.colliders = simulation.colliders();
+  scene.params.contact.colliders = colliders_in(simulation.terms());
   scene.initial_velocity = opened.initial_velocity;
   scene.look = opened.look;
   if (camera_position_target) {

@@ -15,7 +15,7 @@ namespace wobble {
 // velocity and look of `opened` (the scene as it was loaded), with the simulation's current
 // settings (simulation.params(): k, dt, iterations, Chebyshev, gravity and its model, damping,
 // wind, friction, contact offset), its current pins (simulation.pinned_vertices()) and its
-// colliders where they are now (simulation.colliders(), which may have been dragged).
+// colliders where they are now (colliders_in(simulation.terms()), which may have been dragged).
 // `camera_position_target`, when given, replaces the camera (position, target in m).
 //
 // The format stores pins as vertex indices only, so a pin dragged to a new target is saved as a

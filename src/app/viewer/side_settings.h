@@ -1,7 +1,7 @@
 #ifndef WOBBLE_APP_VIEWER_SIDE_SETTINGS_H
 #define WOBBLE_APP_VIEWER_SIDE_SETTINGS_H
 
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 #include "ui/panel_sections.h"
 
 namespace wobble {

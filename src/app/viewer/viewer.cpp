@@ -13,6 +13,7 @@
 #include "app/viewer/side_settings.h"
 #include "app/viewer/step_advice.h"
 #include "io/load_scene.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/parallel/worker_pool.h"
 
 namespace wobble {
@@ -250,10 +251,12 @@ PanelStats Viewer::simulation_stats() const {
   // The accepted steps' dt summed: a new dt changes the rate from now on, not the past.
   stats.simulated_seconds = host_.simulation().time();
   stats.notes = scene_.notes;
-  stats.has_colliders = !host_.simulation().colliders().empty();
-  stats.contacts = host_.simulation().contact_count();
+  stats.has_colliders = !colliders_in(host_.simulation().terms()).empty();
+  stats.contacts = static_cast<int>(
+      host_.simulation().last_step_timing().figure("collider contact", "contacts"));
   stats.self_collision = host_.simulation().params().self_collision.on;
-  stats.self_contacts = host_.simulation().self_contact_count();
+  stats.self_contacts =
+      static_cast<int>(host_.simulation().last_step_timing().figure("self-contact", "contacts"));
   stats.student_side = right_.student();
   stats.course_scene = scene_.params.gravity_model == GravityModel::force_per_vertex;
   stats.solver = solver_label(host_.simulation().params().solver);

@@ -7,6 +7,7 @@
 #include "app/interaction/ground_placement.h"
 #include "app/viewer/side_settings.h"
 #include "app/viewer/viewer.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace wobble {
 
@@ -24,8 +25,8 @@ void Viewer::place_ground() {
   }
   // Lines at a round fraction of the scene's size.
   const float size = std::max((upper - lower).maxCoeff(), 1e-3f);
-  ground_.height = static_cast<float>(
-      ground_grid_height(network.V, network.E, scene_.pins, host_.simulation().colliders()));
+  ground_.height = static_cast<float>(ground_grid_height(network.V, network.E, scene_.pins,
+                                                         colliders_in(host_.simulation().terms())));
   ground_.center_x = 0.5f * (lower.x() + upper.x());
   ground_.center_z = 0.5f * (lower.z() + upper.z());
   ground_.spacing = 0.25f * std::pow(10.0f, std::round(std::log10(size)));
@@ -38,7 +39,8 @@ void Viewer::update_collider_mesh() {
   if (!panel_.colliders) return;
   // A plane is drawn as a square as large as the grid, centred nearest the scene.
   const Eigen::Vector3f focus(ground_.center_x, ground_.height, ground_.center_z);
-  collider_mesh_ = collider_triangles(host_.simulation().colliders(), focus, ground_.half_extent);
+  collider_mesh_ =
+      collider_triangles(colliders_in(host_.simulation().terms()), focus, ground_.half_extent);
 }
 
 }  // namespace wobble

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/cli/color_quantity.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 namespace wobble {
 

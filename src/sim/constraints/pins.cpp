@@ -49,7 +49,7 @@ void Pins::set_target(int i, const Eigen::Vector3d& target) {
   targets_.row(i) = target.transpose();
 }
 
-void Pins::add_diagonal(Eigen::VectorXd& diagonal) const {
+void Pins::add_diagonal(const StepContext& /*step*/, Eigen::VectorXd& diagonal) {
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(pinned_.size()); ++i) {
     if (pinned_[i]) diagonal(i) += weight;
   }

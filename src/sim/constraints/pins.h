@@ -33,7 +33,7 @@ class Pins : public StepTerm {
   void set_target(int i, const Eigen::Vector3d& target);
   const char* name() const override { return "pins"; }
   // diagonal (#V) += w at each pinned vertex.
-  void add_diagonal(Eigen::VectorXd& diagonal) const override;
+  void add_diagonal(const StepContext& step, Eigen::VectorXd& diagonal) override;
   // y += w CᵀC p_target, y #V by 3.
   void add_fixed_rhs(Eigen::MatrixXd& y) const override;
   // (w/2)‖Cp − C p_target‖² (J); gradient += w CᵀC(p − p_target).

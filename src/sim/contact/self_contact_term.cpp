@@ -66,8 +66,7 @@ bool SelfContactTerm::within(const Eigen::MatrixXd& p, double fraction) const {
   return true;
 }
 
-SelfContactTerm::SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders)
-    : rest_(&rest), colliders_(&colliders) {}
+SelfContactTerm::SelfContactTerm(const SpringNetwork& rest) : rest_(&rest) {}
 
 void SelfContactTerm::build_surface() {
   surface_ = SelfCollisionSurface(*rest_);
@@ -95,11 +94,6 @@ double SelfContactTerm::thickness_kept(double asked) const {
   return std::min(asked, largest_self_collision_thickness(surface_.mean_edge));
 }
 
-void SelfContactTerm::set_base_diagonal(const Eigen::VectorXd& /*base*/,
-                                        const Eigen::VectorXd& inertia) {
-  inertia_ = inertia;
-}
-
 bool SelfContactTerm::reset() {
   epoch_open_ = false;
   remembered_.clear();
@@ -109,8 +103,8 @@ bool SelfContactTerm::reset() {
   return false;
 }
 
-bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd& first) {
-  if (!on_) return false;
+TermStep SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd& first) {
+  if (!on_) return TermStep{};
   epochs_ = clamped_ = repaired_ = 0;
   detection_ms_ = solve_ms_ = guard_ms_ = 0.0;
   sweep_fresh_ = true;
@@ -125,7 +119,10 @@ bool SelfContactTerm::begin_step(const StepContext& step, const Eigen::MatrixXd&
     pack_rows(x_, anchor_);
     start_epoch(step, first);
   }
-  return false;
+  TermStep begun;
+  begun.in_solve = true;
+  begun.touching = contact_count_ > 0;
+  return begun;
 }
 
 void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd& heading) {
@@ -146,7 +143,8 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
   epoch_covered_ = proximity_.covers_every_pair();
   step_covered_ = step_covered_ && epoch_covered_;
 
-  const double mu = colliders_->friction();
+  const double mu = step.friction;
+  const Eigen::VectorXd* inertia = step.inertia;
   pairs_.resize(found_.size());
   for (std::size_t i = 0; i < found_.size(); ++i) {
     Pair& pair = pairs_[i];
@@ -157,8 +155,8 @@ void SelfContactTerm::start_epoch(const StepContext& step, const Eigen::MatrixXd
     for (int k = 0; k < 4; ++k) {
       const int v = pair.features.vertex[k];
       const double beta = pair.features.beta[k];
-      if (beta != 0.0 && !step.pinned[v] && inertia_.size() == n)
-        compliance += beta * beta / inertia_(v);
+      if (beta != 0.0 && !step.pinned[v] && inertia && inertia->size() == n)
+        compliance += beta * beta / (*inertia)(v);
     }
     pair.stiffness = compliance > 0.0 ? gain / compliance : 0.0;
     pair.key = pair_key(pair.features);
@@ -175,7 +173,7 @@ void SelfContactTerm::project(const StepContext& step, Eigen::MatrixXd& next) {
   // What the colliders' projection moved stays within the bounds too.
   clamped_ += clamp_to_bounds(x_, common_motion(next), bounds_, next);
   // The forces at the solved positions, for the next step's start (and L-BFGS's λ̄).
-  const double mu = colliders_->friction();
+  const double mu = step.friction;
   const Eigen::Index n = next.rows();
   in_contact_.assign(n, 0);
   contact_count_ = 0;
@@ -275,6 +273,17 @@ void SelfContactTerm::report(std::vector<TermFigure>& figures) const {
   figures.push_back(TermFigure{term, "epochs", "", static_cast<double>(epochs_)});
   figures.push_back(TermFigure{term, "bounded", "", static_cast<double>(clamped_)});
   figures.push_back(TermFigure{term, "guard repairs", "", static_cast<double>(repaired_)});
+}
+
+const std::vector<char>& self_contact_vertices(const StepTerms& terms) {
+  static const std::vector<char> none;
+  const SelfContactTerm* term = terms.find<SelfContactTerm>();
+  return term ? term->contact_vertices() : none;
+}
+
+double self_collision_thickness_kept(const StepTerms& terms, double asked) {
+  const SelfContactTerm* term = terms.find<SelfContactTerm>();
+  return term ? term->thickness_kept(asked) : asked;
 }
 
 std::size_t SelfContactTerm::memory_bytes() const {

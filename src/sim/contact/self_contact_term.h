@@ -6,12 +6,12 @@
 #include <utility>
 #include <vector>
 
-#include "sim/contact/collider_contact.h"
 #include "sim/contact/self_collision.h"
 #include "sim/contact/self_contact_proximity.h"
 #include "sim/contact/self_crossing_guard.h"
 #include "sim/spring_network.h"
 #include "sim/terms/step_term.h"
+#include "sim/terms/step_terms.h"
 
 namespace wobble {
 
@@ -55,8 +55,8 @@ class SelfContactTerm : public StepTerm {
   // An epoch is kept into the next step while every vertex is within this fraction of its bound.
   static constexpr double keep_fraction = 0.5;
 
-  // Both must outlive it: `rest` the network (F and masses), `colliders` for μ.
-  SelfContactTerm(const SpringNetwork& rest, const ColliderContact& colliders);
+  // `rest`, the network (F and masses), must outlive it. μ is the step's (StepContext::friction).
+  explicit SelfContactTerm(const SpringNetwork& rest);
 
   // On, off or a new thickness; the params must already be valid.
   void set(const SelfCollisionParams& params);
@@ -65,9 +65,7 @@ class SelfContactTerm : public StepTerm {
   double thickness_kept(double asked) const;
 
   const char* name() const override { return "self-contact"; }
-  void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) override;
-  bool begin_step(const StepContext& step, const Eigen::MatrixXd& first) override;
-  bool in_solve() const override { return on_; }
+  TermStep begin_step(const StepContext& step, const Eigen::MatrixXd& first) override;
   void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
                    double* energy) override;
   double add_energy(const StepContext& step, const Eigen::MatrixXd& p,
@@ -76,7 +74,6 @@ class SelfContactTerm : public StepTerm {
   void project(const StepContext& step, Eigen::MatrixXd& next) override;
   void end_step() override;
   bool reset() override;
-  bool in_contact() const override { return on_ && contact_count_ > 0; }
   void report(std::vector<TermFigure>& figures) const override;
 
   // Vertices with a pair pressing on them after the last step, and the same as #V flags.
@@ -122,7 +119,6 @@ class SelfContactTerm : public StepTerm {
   int separate(const StepContext& step, Eigen::MatrixXd& p);
 
   const SpringNetwork* rest_;
-  const ColliderContact* colliders_;
   bool on_ = false;
   double thickness_ = 0.0;
   bool built_ = false;
@@ -134,8 +130,7 @@ class SelfContactTerm : public StepTerm {
   RestNeighbours rest_neighbours_;
   SelfContactProximity proximity_;
   SelfCrossingGuard guard_;
-  Eigen::VectorXd inertia_;  // #V: W (N/m)
-  Eigen::MatrixXd x_;        // #V by 3: where the epoch started
+  Eigen::MatrixXd x_;  // #V by 3: where the epoch started
   // #V rows: where friction measures slides from: where the step's first epoch started (the
   // step's start, or steps back while that epoch is kept), not where an epoch within the step
   // started (a bounded iterate): from there friction held the iterate to where the bounds had
@@ -162,6 +157,13 @@ class SelfContactTerm : public StepTerm {
   int epochs_ = 0, clamped_ = 0, contact_count_ = 0, repaired_ = 0;
   double detection_ms_ = 0.0, solve_ms_ = 0.0, guard_ms_ = 0.0;
 };
+
+// The vertices a layer of the same surface pressed on in the last step among a step's terms
+// (#V flags; empty without self-contact).
+const std::vector<char>& self_contact_vertices(const StepTerms& terms);
+// The gap self-contact keeps (m): `asked`, clamped to what the mesh can keep
+// (largest_self_collision_thickness) where self-contact is among the terms.
+double self_collision_thickness_kept(const StepTerms& terms, double asked);
 
 }  // namespace wobble
 

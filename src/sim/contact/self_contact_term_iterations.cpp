@@ -32,10 +32,10 @@ double SelfContactTerm::violation(const Pair& pair, const Eigen::MatrixXd& p,
       pair, [&](int v) { return vertex_row(p, v); }, slide);
 }
 
-void SelfContactTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& p,
+void SelfContactTerm::add_targets(const StepContext& step, const Eigen::MatrixXd& p,
                                   Eigen::MatrixXd& rhs, double* energy) {
   const Stopwatch stopwatch;
-  const double mu = colliders_->friction();
+  const double mu = step.friction;
   double sum = 0.0;
   // Added to packed rows of rhs (the same additions in the same order as to rhs itself).
   bool packed = false;

@@ -6,8 +6,6 @@
 #include <string>
 
 #include "sim/input_error.h"
-#include "sim/simulation_params.h"
-#include "sim/terms/term_registry.h"
 #include "sim/value_limits.h"
 
 namespace wobble {
@@ -101,10 +99,9 @@ void CourseWind::add_forces(const StepContext& step, Eigen::MatrixXd& fext) {
   }
 }
 
-std::unique_ptr<StepTerm> make_wind_force(const TermSetup& setup) {
-  const WindParams& wind = setup.params.wind;
+std::unique_ptr<StepTerm> make_wind_force(const WindParams& wind, double rest_diagonal) {
   if (!wind.on) return nullptr;
-  if (wind.model == WindModel::course) return std::make_unique<CourseWind>(setup.rest_diagonal);
+  if (wind.model == WindModel::course) return std::make_unique<CourseWind>(rest_diagonal);
   return std::make_unique<AerodynamicWind>(wind);
 }
 

@@ -66,11 +66,10 @@ class CourseWind : public StepTerm {
   double rest_diagonal_;
 };
 
-struct TermSetup;
-
-// The registered factory (sim/registered_terms.cpp): the wind of params.wind, course or
-// aerodynamic, or nullptr when it is off.
-std::unique_ptr<StepTerm> make_wind_force(const TermSetup& setup);
+// The wind of `wind`, course or aerodynamic, or nullptr when it is off; `rest_diagonal` is that
+// of the rest shape's bounding box (m), the course wind's scale. Made by the registered factory
+// (sim/registered_terms.cpp).
+std::unique_ptr<StepTerm> make_wind_force(const WindParams& wind, double rest_diagonal);
 
 }  // namespace wobble
 

@@ -1,15 +1,10 @@
-#include "frame_energy.h"
-
-#include "sim/simulation.h"
+#include "sim/instruments/frame_energy.h"
 
 namespace wobble {
 
-FrameEnergy frame_energy(const Simulation& simulation) {
-  const Eigen::MatrixXd& p = simulation.positions();
-  const Eigen::MatrixXd& previous = simulation.previous_positions();
-  const SpringNetwork& network = simulation.rest();
-  const Eigen::VectorXd& r = simulation.rest_lengths();
-  const double dt = simulation.params().dt;
+FrameEnergy frame_energy(const SpringNetwork& network, const Eigen::VectorXd& r, double k,
+                         double dt, const Eigen::MatrixXd& p, const Eigen::MatrixXd& previous,
+                         const Eigen::MatrixXd& gravity_forces) {
   FrameEnergy energy;
   for (Eigen::Index i = 0; i < p.rows(); ++i) {
     energy.kinetic += network.m(i) * (p.row(i) - previous.row(i)).squaredNorm();
@@ -19,8 +14,8 @@ FrameEnergy frame_energy(const Simulation& simulation) {
     const double stretch = (p.row(network.E(e, 0)) - p.row(network.E(e, 1))).norm() - r(e);
     energy.spring += stretch * stretch;
   }
-  energy.spring *= 0.5 * simulation.params().k;
-  energy.gravity = -(p.array() * simulation.gravity_forces().array()).sum();
+  energy.spring *= 0.5 * k;
+  energy.gravity = -(p.array() * gravity_forces.array()).sum();
   energy.potential = energy.spring + energy.gravity;
   energy.total = energy.kinetic + energy.potential;
   return energy;

@@ -5,7 +5,7 @@
 #include <utility>
 
 #include "sim/settings/setting_registry.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 #include "sim/solver/solver_registry.h"
 
 namespace wobble {
@@ -250,7 +250,7 @@ std::vector<SettingSpec> declare_built_in_settings() {
           {0.0, 10.0, ""}, "%.3f"),
       offered_when(in_the_panel(in_files_at(number_field(setting("friction", "friction",
           "Coulomb friction coefficient against the colliders (scene default otherwise, 0)",
-          limits::friction, d.contact.friction, Cost::friction, on_command_line | in_address |
+          limits::friction, d.contact.friction, Cost::value, on_command_line | in_address |
           in_panel, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.contact.friction; }),
           "material.friction"), {0.0, 2.0, ""}, "%.2f"), has_colliders),
@@ -302,12 +302,12 @@ std::vector<SettingSpec> declare_built_in_settings() {
       section_switch(toggle_field(setting("self-collision", "self-collision",
           "Keep the surface from passing through itself (thickness: the scene's, else 0.01 m; "
           "not for course scenes)",
-          no_range, 0.0, Cost::self_collision, everywhere_but_files, shared, refused),
+          no_range, 0.0, Cost::terms, everywhere_but_files, shared, refused),
           [](auto& p) -> auto& { return p.self_collision.on; }), "self_collision", false),
       shown_beside(shown_as(in_the_panel(implying(in_files_at(logarithmic(number_field(
           setting("self-collision-thickness",
           "thickness", "Self-collision thickness in m, 1e-5 to 1; implies --self-collision",
-          limits::self_collision_thickness, d.self_collision.thickness, Cost::self_collision,
+          limits::self_collision_thickness, d.self_collision.thickness, Cost::terms,
           everywhere_but_files, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.self_collision.thickness; })),
           "self_collision.thickness"), "self-collision"), {0.01, 1000.0, ""}, "%.2f"),

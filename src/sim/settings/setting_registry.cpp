@@ -8,7 +8,7 @@
 
 #include "sim/input_error.h"
 #include "sim/parse_number.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 namespace wobble {
 

@@ -44,16 +44,15 @@ using SettingValue = std::variant<double, bool, std::string, Eigen::Vector3d>;
 // What a change of a setting costs Simulation::apply: a set of these, done in the order below
 // whichever settings asked for them.
 enum class SettingCost : unsigned {
-  value = 0,                 // read where it is used: nothing to do
-  step_work = 1u << 0,       // the work a step would take is checked first (iterations)
-  solver = 1u << 1,          // a new step solver is made (and prepared)
-  time_step = 1u << 2,       // the previous positions are rescaled, so velocities keep (dt)
-  gravity = 1u << 3,         // the gravity forces are computed again
-  terms = 1u << 4,           // the made terms are built again (a term's factory reads it)
-  friction = 1u << 5,        // the colliders take the new friction
-  self_collision = 1u << 6,  // self-collision takes its new settings
-  factorization = 1u << 7,   // a numeric re-factorization of Q
-  solver_state = 1u << 8,    // Chebyshev's ρ and L-BFGS's history start again
+  value = 0,                // read where it is used: nothing to do
+  step_work = 1u << 0,      // the work a step would take is checked first (iterations)
+  solver = 1u << 1,         // a new step solver is made (and prepared)
+  time_step = 1u << 2,      // the previous positions are rescaled, so velocities keep (dt)
+  gravity = 1u << 3,        // the gravity forces are computed again
+  terms = 1u << 4,          // the terms are made again where the old no longer serve (a term's
+                            // factory reads it)
+  factorization = 1u << 5,  // a numeric re-factorization of Q
+  solver_state = 1u << 6,   // Chebyshev's ρ and L-BFGS's history start again
   refactorize = terms | factorization,  // an added term that puts its value on Q's diagonal
 };
 constexpr SettingCost operator|(SettingCost a, SettingCost b) {

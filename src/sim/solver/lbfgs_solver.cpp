@@ -64,7 +64,7 @@ void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Ei
   double energy = evaluate(problem, p, gradient_);
   local_ms += local.milliseconds();
   observers.measured(energy, gradient_.norm());
-  for (int iteration = 0; iteration < problem.params.iterations; ++iteration) {
+  for (int iteration = 0; iteration < problem.settings.iterations; ++iteration) {
     const Stopwatch global;
     find_direction(problem);
     double slope = dot(gradient_, direction_);
@@ -93,7 +93,7 @@ void LbfgsSolver::solve(const StepProblem& problem, StepObservers& observers, Ei
     if (!lowered) {
       // No lower energy along the direction: the iterate is a minimum to rounding. Later
       // iterations would repeat this one; each still reports, so a trace has its full length.
-      for (int rest = iteration; rest < problem.params.iterations; ++rest) {
+      for (int rest = iteration; rest < problem.settings.iterations; ++rest) {
         observers.measured(energy, gradient_.norm());
         observers.iterated(rest, p);
       }

@@ -24,7 +24,7 @@ namespace wobble {
 // the history then starts again. An iteration costs one solve with
 // Q, one pass over the springs and vertices for E and ∇E, and 4·history products of #V by 3
 // arrays; usually α = 1 is taken and the line search costs nothing more. The same iteration cap
-// as local-global (params.iterations); params.chebyshev does not apply.
+// as local-global (settings.iterations); settings.chebyshev does not apply.
 class LbfgsSolver : public StepSolver {
  public:
   // Pairs kept. Liu et al. use 5 to 7 and found more did not pay; 5 costs 20 products of #V by

@@ -15,25 +15,25 @@ LocalGlobalSolver::LocalGlobalSolver(Eigen::Index vertices)
 
 void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observers,
                               Eigen::MatrixXd& p, StepTiming& timing) {
-  const SimulationParams& params = problem.params;
+  const SolveSettings& settings = problem.settings;
   CholeskySolver& cholesky = problem.system.cholesky();
   const bool measuring = observers.wants_measures();
   // The solve of Q p = rhs gives Q p to rounding only in double precision (see IterateMeasure).
   const bool exact_solve = !cholesky.solves_in_single_precision();
   const StepObjectiveTerms terms = problem.objective_terms();
   double instruments_ms = 0.0;
-  observers.begin_step(name(), params.chebyshev);
+  observers.begin_step(name(), settings.chebyshev);
   if (measuring) measure_.resize(p.rows());
   double springs = 0.0;  // Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² at the iterate, from the local step
-  if (params.chebyshev) chebyshev_.start(p);
+  if (settings.chebyshev) chebyshev_.start(p);
   restart_iteration_ = 0;
   // Contact makes a step's problem change sharply from one iteration to the next; with ρ near 1
   // the extrapolation then runs away (a cloth falling on a sphere left it at 48 m/s). While the
   // last step touched a collider, an iteration whose update grew restarts the recurrence.
-  const bool restart_on_growth = problem.in_contact;
+  const bool restart_on_growth = problem.touching;
   bool limited = false;  // the last iterate was moved after its solve
   double local_ms = 0.0, global_ms = 0.0;
-  for (int iteration = 0; iteration < params.iterations; ++iteration) {
+  for (int iteration = 0; iteration < settings.iterations; ++iteration) {
     const Stopwatch local;
     double term_energy = 0.0;
     // The local step, and every term's targets (contact draws its vertices out of the colliders
@@ -45,7 +45,7 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
       const Stopwatch record;
       // The first iterate is a prediction; an accelerated or limited one is not the solve's
       // output.
-      const bool plain_solve = iteration > 0 && !params.chebyshev && !limited;
+      const bool plain_solve = iteration > 0 && !settings.chebyshev && !limited;
       const IterateMeasure::Result at =
           measure_.measure(terms, problem.system.Q(), p, rhs_, springs, plain_solve && exact_solve);
       observers.measured(at.energy + term_energy, at.gradient_norm);
@@ -54,7 +54,7 @@ void LocalGlobalSolver::solve(const StepProblem& problem, StepObservers& observe
     const Stopwatch global;
     // With acceleration every iteration but the last is accelerated; the last, plain, removes
     // what the acceleration leaves of the fast components (see chebyshev.h).
-    if (params.chebyshev && iteration + 1 < params.iterations) {
+    if (settings.chebyshev && iteration + 1 < settings.iterations) {
       cholesky.solve(rhs_, solved_);
       accelerate(iteration, restart_on_growth, p);
     } else {
@@ -99,7 +99,8 @@ void LocalGlobalSolver::accelerate(int iteration, bool restart_on_growth, Eigen:
 }
 
 void LocalGlobalSolver::prepare(const StepProblem& problem, Eigen::MatrixXd& p) {
-  if (problem.params.chebyshev && !calibrated_) calibrate(problem, p);
+  extrapolates_ = problem.settings.chebyshev;
+  if (problem.settings.chebyshev && !calibrated_) calibrate(problem, p);
 }
 
 void LocalGlobalSolver::calibrate(const StepProblem& problem, Eigen::MatrixXd& p) {

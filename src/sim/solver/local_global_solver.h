@@ -11,7 +11,7 @@
 namespace wobble {
 
 // The local-global iteration of Liu et al. 2013 ("local-global"), with optional Chebyshev
-// acceleration (Wang 2015, params.chebyshev). Each iteration, from the iterate p (#V by 3):
+// acceleration (Wang 2015, settings.chebyshev). Each iteration, from the iterate p (#V by 3):
 //   local:  d_e = r_e (p_i − p_j)/‖p_i − p_j‖ for every spring,
 //   global: Q p = k Aᵀd + y, through Q's prefactored Cholesky factor.
 // It never raises the step energy. Accelerated, every iteration but the last is extrapolated
@@ -27,6 +27,7 @@ class LocalGlobalSolver : public StepSolver {
   void solve(const StepProblem& problem, StepObservers& observers, Eigen::MatrixXd& p,
              StepTiming& timing) override;
   double spectral_radius() const override { return chebyshev_.spectral_radius(); }
+  bool extrapolates() const override { return extrapolates_; }
 
   // The plain iterations of the calibration; ρ comes from the second half.
   static constexpr int chebyshev_calibration_iterations = 100;
@@ -40,6 +41,7 @@ class LocalGlobalSolver : public StepSolver {
   Eigen::MatrixXd solved_;  // #V by 3: the plain iterate q̂, when accelerating
   ChebyshevAcceleration chebyshev_;
   bool calibrated_ = false;
+  bool extrapolates_ = false;  // settings.chebyshev, as last prepared
   double last_update_ = 0.0;   // ‖q̂ − q‖² of the last accelerated iteration
   int restart_iteration_ = 0;  // where the recurrence last restarted in this step
   IterateMeasure measure_;     // while an observer wants measures

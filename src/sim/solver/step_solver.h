@@ -6,7 +6,6 @@
 
 #include "sim/instruments/step_objective.h"
 #include "sim/instruments/step_observer.h"
-#include "sim/simulation_params.h"
 #include "sim/solver/local_step.h"
 #include "sim/solver/system_matrix.h"
 #include "sim/spring_network.h"
@@ -24,12 +23,21 @@ namespace wobble {
 //   y = M((2 + cΔt)pᵗ − pᵗ⁻ᐞᵗ)/Δt² + f_ext + the terms' fixed part (w CᵀC p_target),
 // so that ∇E(p) = Q p − rhs(p), rhs(p) = k Aᵀd(p) + y + the terms' targets at p.
 //
+// The settings a solver reads.
+struct SolveSettings {
+  double k;        // spring stiffness (N/m)
+  double dt;       // Δt (s)
+  double damping;  // c (1/s)
+  int iterations;  // per step
+  bool chebyshev;  // Chebyshev's acceleration (a solver that has one)
+};
+
 // A solver sees the terms only through right_hand_side(), energy() and limit_iterate(): it
 // cannot leave one out.
 struct StepProblem {
   const SpringNetwork& rest;            // V, E (#E by 2), masses m (#V, kg)
   const Eigen::VectorXd& rest_lengths;  // #E r (m)
-  const SimulationParams& params;       // k, dt, damping c, iterations, chebyshev, ...
+  SolveSettings settings;               // k, dt, damping c, iterations, chebyshev
   const Eigen::MatrixXd& current;       // #V by 3 pᵗ (m)
   const Eigen::MatrixXd& previous;      // #V by 3 pᵗ⁻ᐞᵗ (m)
   const Eigen::MatrixXd& fext;          // #V by 3 f_ext (N): gravity and the forces
@@ -38,20 +46,20 @@ struct StepProblem {
   LocalStep& local_step;                // k Aᵀd(p) + y
   StepTerms& terms;                     // every term beyond the springs and the inertia
   StepContext context;                  // what the terms see of the step
-  // The last step touched a collider or itself: the problem may change sharply between
-  // iterations.
-  bool in_contact = false;
+  // The last step touched something (a collider, itself): the problem may change sharply
+  // between iterations.
+  bool touching = false;
 
   // The springs' and inertia's part of E (step_objective.h).
   StepObjectiveTerms objective_terms() const {
-    return StepObjectiveTerms{rest.E,         rest_lengths, rest.m,   params.k, params.dt,
-                              params.damping, current,      previous, fext};
+    return StepObjectiveTerms{rest.E,           rest_lengths, rest.m,   settings.k, settings.dt,
+                              settings.damping, current,      previous, fext};
   }
   // rhs (#V by 3) = k Aᵀd(p) + y + every term's targets at p. If given, `springs` receives
   // Σ(‖pᵢ − pⱼ‖ − rᵢⱼ)² and `term_energy` every term's energy at p (J).
   void right_hand_side(const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs, double* springs = nullptr,
                        double* term_energy = nullptr) const {
-    local_step.apply(p, params.k, y, rhs, springs);
+    local_step.apply(p, settings.k, y, rhs, springs);
     if (term_energy) *term_energy = 0.0;
     if (terms.in_solve() || term_energy) terms.add_targets(context, p, rhs, term_energy);
   }
@@ -66,7 +74,7 @@ struct StepProblem {
   }
 };
 
-// A method that minimizes a StepProblem with params.iterations iterations from a first iterate.
+// A method that minimizes a StepProblem with settings.iterations iterations from a first iterate.
 // One is made per Simulation (see solver_registry.h), so it may keep buffers and state between
 // steps; it must allocate nothing per iteration once warmed up by a step.
 class StepSolver {
@@ -74,7 +82,7 @@ class StepSolver {
   virtual ~StepSolver() = default;
   // The name it is registered under ("local-global").
   virtual const char* name() const = 0;
-  // Called when the solver is made and whenever params.chebyshev (or another of its settings)
+  // Called when the solver is made and whenever settings.chebyshev (or another of its settings)
   // changes, with the problem of the step about to be taken; `p` holds that step's first
   // iterate and may be used as scratch. Nothing else of the state may change.
   virtual void prepare(const StepProblem& /*problem*/, Eigen::MatrixXd& /*p*/) {}
@@ -85,6 +93,9 @@ class StepSolver {
   // Its own numbers for the Simulation's accessors: the spectral radius its acceleration uses
   // (0 for a solver without one).
   virtual double spectral_radius() const { return 0.0; }
+  // Whether it extrapolates its iterates (as prepared last): the terms then keep Q's diagonal
+  // true to what they meet every step (StepContext::extrapolated).
+  virtual bool extrapolates() const { return false; }
 };
 
 }  // namespace wobble

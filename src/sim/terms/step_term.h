@@ -9,7 +9,8 @@
 
 namespace wobble {
 
-// What a term sees of the step about to be taken (or being taken).
+// What a term sees of the step about to be taken (or being taken): the state, and what the
+// settings and the solver say about the step, so that no term reaches into the Simulation.
 struct StepContext {
   const SpringNetwork& rest;        // rest shape, springs, render triangles, masses
   const Eigen::MatrixXd& current;   // #V by 3 pᵗ (m)
@@ -17,6 +18,23 @@ struct StepContext {
   const std::vector<char>& pinned;  // #V flags
   double dt;                        // Δt (s)
   double time;                      // simulated time at the start of the step (s)
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();  // g (m/s²; N on each vertex by its model)
+  double friction = 0.0;  // μ, the settings' friction between surfaces (≥ 0)
+  // Whether the solver extrapolates its iterates (Chebyshev): a term's weights on Q's diagonal
+  // then follow what it meets every step instead of lagging.
+  bool extrapolated = false;
+  // Q's diagonal without the terms, k·degᵢ + (1 + cΔt)mᵢ/Δt², and its inertia part
+  // (1 + cΔt)mᵢ/Δt² (#V each, N/m); null before Q is first factorized.
+  const Eigen::VectorXd* base_diagonal = nullptr;
+  const Eigen::VectorXd* inertia = nullptr;
+};
+
+// What a term's begin_step says of the step it begins.
+struct TermStep {
+  bool in_solve = false;          // it adds something inside the iterations (else skipped there)
+  bool diagonal_changed = false;  // its weights on Q's diagonal changed: Q is refactorized
+  bool touching = false;          // the last step touched something (a collider, itself): the
+                                  // problem may change sharply between iterations
 };
 
 // One figure a term reports about the last step, by name: ("self-contact", "detection", "ms",
@@ -43,9 +61,9 @@ struct StepTiming {
 };
 
 // A term of the step's energy beyond the springs and the inertia: the pins, each force, contact
-// with the colliders, self-contact. The Simulation keeps them in one list (StepTerms) in step
-// order, and every solver sees every term through it: the list is the problem. Each hook has a
-// default that does nothing, so a term overrides only what it does.
+// with the colliders, self-contact. The Simulation keeps them in one list (StepTerms), and every
+// solver sees every term through it: the list is the problem. Each hook has a default that does
+// nothing, so a term overrides only what it does.
 //
 // A term that acts inside the solve has the form (κ/2)‖p − T(p)‖² per vertex: κ on Q's diagonal
 // (add_diagonal), κT(p) added to the local step's right-hand side (add_targets), or, for a
@@ -64,27 +82,24 @@ class StepTerm {
   // Explicit forces of the step (#V by 3, N), once at its start. `fext` arrives holding gravity
   // and the forces of the terms before this one.
   virtual void add_forces(const StepContext& /*step*/, Eigen::MatrixXd& /*fext*/) {}
-  // Q's diagonal without the terms (k·degᵢ + (1 + cΔt)mᵢ/Δt², #V) and its inertia part
-  // ((1 + cΔt)mᵢ/Δt², #V), whenever k, Δt, damping or the masses change; before the first step.
-  virtual void set_base_diagonal(const Eigen::VectorXd& /*base*/,
-                                 const Eigen::VectorXd& /*inertia*/) {}
-  // diagonal (#V) += its weights on Q's diagonal. Called when Q is refactorized.
-  virtual void add_diagonal(Eigen::VectorXd& /*diagonal*/) const {}
+  // diagonal (#V) += its weights on Q's diagonal, which may follow Q's own diagonal
+  // (step.base_diagonal, step.inertia). Called whenever Q is refactorized: k, Δt, damping, the
+  // pins or a term's weights changed.
+  virtual void add_diagonal(const StepContext& /*step*/, Eigen::VectorXd& /*diagonal*/) {}
   // K += its fixed part of Q, a symmetric #V by #V matrix (both triangles listed; repeats are
   // summed). Read once when the made terms are built; Q keeps it until they are built again.
   virtual void add_matrix(std::vector<Eigen::Triplet<double>>& /*K*/) const {}
   // y (#V by 3, N) += what it adds to the right-hand side for the whole step (pin targets).
   virtual void add_fixed_rhs(Eigen::MatrixXd& /*y*/) const {}
-  // Begins a step from its first iterate `first` (#V by 3): chooses its set. Returns whether its
-  // weights on Q's diagonal changed (the Simulation then refactorizes Q).
-  virtual bool begin_step(const StepContext& /*step*/, const Eigen::MatrixXd& /*first*/) {
-    return false;
+  // Begins a step from its first iterate `first` (#V by 3): chooses its set, and says whether it
+  // acts inside the iterations, whether its weights on Q's diagonal changed and whether the last
+  // step touched something.
+  virtual TermStep begin_step(const StepContext& /*step*/, const Eigen::MatrixXd& /*first*/) {
+    return TermStep{};
   }
-  // Whether it has anything to add inside this step's iterations; the solvers skip it if not.
-  virtual bool in_solve() const { return false; }
-  // Local-global: rhs (#V by 3) += its targets for the iterate p; `energy`, if given, += its
-  // energy at p (J). Not const: a term may update its own multipliers from each iterate
-  // (self-contact's forces).
+  // Local-global, a term in the solve: rhs (#V by 3) += its targets for the iterate p; `energy`,
+  // if given, += its energy at p (J). Not const: a term may update its own multipliers from each
+  // iterate (self-contact's forces).
   virtual void add_targets(const StepContext& /*step*/, const Eigen::MatrixXd& /*p*/,
                            Eigen::MatrixXd& /*rhs*/, double* /*energy*/) {}
   // Its energy at p (J); `gradient`, if given, += its gradient (#V by 3, N).
@@ -92,20 +107,18 @@ class StepTerm {
                             Eigen::MatrixXd* /*gradient*/) const {
     return 0.0;
   }
-  // After each update of the iterate (a global solve, a line search's step): may move p (#V by 3)
-  // back within what the term allows (self-contact's displacement bounds). Returns whether it
-  // moved any vertex.
+  // A term in the solve, after each update of the iterate (a global solve, a line search's
+  // step): may move p (#V by 3) back within what the term allows (self-contact's displacement
+  // bounds). Returns whether it moved any vertex.
   virtual bool limit_iterate(const StepContext& /*step*/, Eigen::MatrixXd& /*p*/) { return false; }
   // After the last iteration: a last guard that moves the solved positions `next` (#V by 3).
   virtual void project(const StepContext& /*step*/, Eigen::MatrixXd& /*next*/) {}
-  // The step was accepted.
-  virtual void end_step() {}
-  // Back to the start (Simulation::reset). Returns whether its diagonal changed.
-  virtual bool reset() { return false; }
-  // Whether the last step touched something: the problem may change sharply between iterations.
-  virtual bool in_contact() const { return false; }
   // Its figures of the last step, appended to `figures`.
   virtual void report(std::vector<TermFigure>& /*figures*/) const {}
+  // The step was accepted.
+  virtual void end_step() {}
+  // Back to the start (Simulation::reset). Returns whether its weights on Q's diagonal changed.
+  virtual bool reset() { return false; }
 };
 
 }  // namespace wobble

@@ -18,6 +18,7 @@ void StepTerms::set(std::vector<StepTerm*> terms) {
   solving_.clear();
   solving_flags_.assign(terms_.size(), 0);
   in_solve_ = false;
+  touching_ = false;
 }
 
 void StepTerms::add_forces(const StepContext& step, Eigen::MatrixXd& fext) const {
@@ -25,16 +26,10 @@ void StepTerms::add_forces(const StepContext& step, Eigen::MatrixXd& fext) const
     term->add_forces(step, fext);
 }
 
-void StepTerms::set_base_diagonal(const Eigen::VectorXd& base,
-                                  const Eigen::VectorXd& inertia) const {
+const Eigen::VectorXd& StepTerms::diagonal(const StepContext& step) {
+  diagonal_.setZero(step.rest.V.rows());
   for (StepTerm* term : terms_)
-    term->set_base_diagonal(base, inertia);
-}
-
-const Eigen::VectorXd& StepTerms::diagonal(Eigen::Index vertices) {
-  diagonal_.setZero(vertices);
-  for (const StepTerm* term : terms_)
-    term->add_diagonal(diagonal_);
+    term->add_diagonal(step, diagonal_);
   // Q is then exactly the plain method's when no term puts anything on it.
   if ((diagonal_.array() == 0.0).all()) diagonal_.resize(0);
   return diagonal_;
@@ -56,11 +51,14 @@ void StepTerms::add_fixed_rhs(Eigen::MatrixXd& y) const {
 
 bool StepTerms::begin_step(const StepContext& step, const Eigen::MatrixXd& first) {
   bool changed = false;
+  touching_ = false;
   solving_.clear();
   solving_flags_.assign(terms_.size(), 0);
   for (std::size_t t = 0; t < terms_.size(); ++t) {
-    if (terms_[t]->begin_step(step, first)) changed = true;
-    if (terms_[t]->in_solve()) {
+    const TermStep begun = terms_[t]->begin_step(step, first);
+    changed = changed || begun.diagonal_changed;
+    touching_ = touching_ || begun.touching;
+    if (begun.in_solve) {
       solving_.push_back(terms_[t]);
       solving_flags_[t] = 1;
     }
@@ -111,13 +109,6 @@ bool StepTerms::reset() const {
   for (StepTerm* term : terms_)
     changed = term->reset() || changed;
   return changed;
-}
-
-bool StepTerms::in_contact() const {
-  for (const StepTerm* term : terms_) {
-    if (term->in_contact()) return true;
-  }
-  return false;
 }
 
 void StepTerms::report(std::vector<TermFigure>& figures) const {

@@ -8,20 +8,26 @@
 
 namespace wobble {
 
-// The step's terms in step order, and each hook called over all of them. The order is
-// term_registry.h's: the pins, the made terms (the built-in ones, then any registered from
-// outside), collider contact, self-contact. The Simulation owns the
-// terms; the list only points at them. What a solver asks of the step goes through here, so a
-// solver cannot leave a term out.
+// The step's terms in step order (terms/term_registry.h says which order), and each hook called
+// over all of them. The Simulation owns the terms; the list only points at them. What a solver
+// asks of the step goes through here, so a solver cannot leave a term out.
 class StepTerms {
  public:
   void set(std::vector<StepTerm*> terms);
   const std::vector<StepTerm*>& terms() const { return terms_; }
+  // The first term of type Term (a term's own accessors: the colliders, self-contact's flags),
+  // or nullptr when none is in the list.
+  template <typename Term>
+  Term* find() const {
+    for (StepTerm* term : terms_) {
+      if (auto* found = dynamic_cast<Term*>(term)) return found;
+    }
+    return nullptr;
+  }
 
   void add_forces(const StepContext& step, Eigen::MatrixXd& fext) const;
-  void set_base_diagonal(const Eigen::VectorXd& base, const Eigen::VectorXd& inertia) const;
   // Every term's weights on Q's diagonal (#V), or empty when none has any.
-  const Eigen::VectorXd& diagonal(Eigen::Index vertices);
+  const Eigen::VectorXd& diagonal(const StepContext& step);
   // Every term's fixed part of Q (#V by #V), with no entries when none has one.
   Eigen::SparseMatrix<double> matrix(Eigen::Index vertices) const;
   void add_fixed_rhs(Eigen::MatrixXd& y) const;
@@ -29,6 +35,8 @@ class StepTerms {
   bool begin_step(const StepContext& step, const Eigen::MatrixXd& first);
   // Whether any term acts inside this step's iterations.
   bool in_solve() const { return in_solve_; }
+  // Whether the last step touched something (as the terms said at this step's start).
+  bool touching() const { return touching_; }
   // The terms in the solve add their targets; `energy`, if given, += every term's energy at p.
   void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
                    double* energy) const;
@@ -36,17 +44,17 @@ class StepTerms {
                     Eigen::MatrixXd* gradient) const;
   bool limit_iterate(const StepContext& step, Eigen::MatrixXd& p) const;
   void project(const StepContext& step, Eigen::MatrixXd& next) const;
-  void end_step() const;
-  bool reset() const;
-  bool in_contact() const;
   // figures = every term's figures of the last step (no allocation once grown).
   void report(std::vector<TermFigure>& figures) const;
+  void end_step() const;
+  bool reset() const;
 
  private:
   std::vector<StepTerm*> terms_;
   std::vector<StepTerm*> solving_;   // the terms in_solve() this step
   std::vector<char> solving_flags_;  // the same, by position in terms_
   bool in_solve_ = false;
+  bool touching_ = false;
   Eigen::VectorXd diagonal_;
 };
 

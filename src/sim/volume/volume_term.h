@@ -30,7 +30,9 @@ class VolumeTerm : public StepTerm {
 
   const char* name() const override { return "volume"; }
   void add_matrix(std::vector<Eigen::Triplet<double>>& K) const override;
-  bool in_solve() const override { return true; }
+  TermStep begin_step(const StepContext& /*step*/, const Eigen::MatrixXd& /*first*/) override {
+    return TermStep{/*in_solve=*/true};
+  }
   void add_targets(const StepContext& step, const Eigen::MatrixXd& p, Eigen::MatrixXd& rhs,
                    double* energy) override;
   double add_energy(const StepContext& step, const Eigen::MatrixXd& p,

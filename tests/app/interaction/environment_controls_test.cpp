@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/settings/setting_registry.h"
-#include "sim/simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 namespace {
 

@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "sim/contact/collider_contact_term.h"
+#include "sim/contact/self_contact_term.h"
 #include "sim/simulation.h"
 
 namespace {
@@ -313,9 +315,10 @@ TEST(QuantityColors, ContactsGiveTheSelfContactColourExactlyToFlaggedVertices) {
 
   // Self-contact slows the triangle as it nears the other (its bounds) and then holds it on:
   // step until the pair presses.
-  for (int step = 0; step < 20 && simulation.self_contact_count() == 0; ++step)
+  for (int step = 0; step < 20 && simulation.term<wobble::SelfContactTerm>()->contact_count() == 0;
+       ++step)
     ASSERT_EQ(simulation.step(), wobble::StepStatus::ok);
-  const std::vector<char>& flags = simulation.self_contact_vertices();
+  const std::vector<char>& flags = wobble::self_contact_vertices(simulation.terms());
   ASSERT_EQ(flags.size(), 7u);
   ASSERT_TRUE(flags[3] && flags[4] && flags[5]) << "the upper triangle is held above the lower";
   ASSERT_FALSE(flags[6]) << "far from the falling triangle";
@@ -354,9 +357,9 @@ TEST(QuantityColors, ContactsGiveTheColliderColourExactlyToVerticesOnACollider) 
   params.contact.colliders.push_back(ground);
   wobble::Simulation simulation(network, {0}, params);
   ASSERT_EQ(simulation.step(), wobble::StepStatus::ok);
-  const std::vector<char>& flags = simulation.collider_contact_vertices();
+  const std::vector<char>& flags = wobble::collider_contact_vertices(simulation.terms());
   ASSERT_EQ(flags.size(), 3u);
-  ASSERT_GT(simulation.contact_count(), 0);
+  ASSERT_GT(simulation.term<wobble::ColliderContactTerm>()->colliders().contact_count(), 0);
   wobble::QuantityColors colors;
   colors.update(ColorQuantity::contacts, simulation);
   ASSERT_EQ(colors.vertex_colors().size(), 9u);

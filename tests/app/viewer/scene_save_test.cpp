@@ -9,6 +9,7 @@
 #include "../../io/temporary_folder.h"
 #include "app/viewer/window_saves.h"
 #include "io/load_scene.h"
+#include "sim/contact/collider_contact_term.h"
 #include "sim/input_error.h"
 
 namespace wobble {
@@ -68,8 +69,8 @@ TEST(SaveCurrentScene, KeepsEverySettingChangedSinceTheSceneOpened) {
   simulation.unpin(opened.pins.front());
   simulation.pin(7);
   simulation.set_pin_target(7, Eigen::Vector3d(3.0, 3.0, 3.0));
-  simulation.translate_collider(1, Eigen::Vector3d(0.1, -0.2, 0.3));
-  simulation.translate_collider(4, Eigen::Vector3d(0.0, 0.05, 0.0));
+  simulation.term<wobble::ColliderContactTerm>()->translate(1, Eigen::Vector3d(0.1, -0.2, 0.3));
+  simulation.term<wobble::ColliderContactTerm>()->translate(4, Eigen::Vector3d(0.0, 0.05, 0.0));
   for (int step = 0; step < 5; ++step)
     simulation.step();
   const std::pair<Eigen::Vector3d, Eigen::Vector3d> camera(Eigen::Vector3d(1.0, 2.0, 3.0),

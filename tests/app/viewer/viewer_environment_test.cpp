@@ -9,6 +9,7 @@
 #include "app/interaction/collider_picking.h"
 #include "app/interaction/picking.h"
 #include "app/viewer/viewer.h"
+#include "sim/contact/collider_contact_term.h"
 
 namespace {
 
@@ -54,7 +55,9 @@ struct Fixture {
     event.code = key;
     viewer.handle_events({event}, false, false, window);
   }
-  Eigen::Vector3d sphere_center() const { return viewer.simulation().colliders()[0].center; }
+  Eigen::Vector3d sphere_center() const {
+    return wobble::colliders_in(viewer.simulation().terms())[0].center;
+  }
   wobble::Viewer viewer;
 };
 
@@ -66,7 +69,8 @@ TEST(ViewerEnvironment, AltDragMovesTheSphereInThePlaneFacingTheCamera) {
   const wobble::Ray ray = wobble::cursor_ray(
       wobble::view_matrix(f.viewer.camera()),
       wobble::projection_matrix(f.viewer.camera(), window.x() / window.y()), at, window);
-  const auto grabbed = wobble::pick_collider(ray, f.viewer.simulation().colliders());
+  const auto grabbed =
+      wobble::pick_collider(ray, wobble::colliders_in(f.viewer.simulation().terms()));
   ASSERT_TRUE(grabbed);
   f.send(InputEvent::Type::cursor_move, at);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*alt=*/true);

@@ -1,12 +1,12 @@
-#include "simulation_params.h"
+#include "sim/settings/simulation_params.h"
 
 #include <cmath>
 #include <string>
 
-#include "input_error.h"
-#include "settings/setting_registry.h"
-#include "solver/solver_registry.h"
-#include "value_limits.h"
+#include "sim/input_error.h"
+#include "sim/settings/setting_registry.h"
+#include "sim/solver/solver_registry.h"
+#include "sim/value_limits.h"
 
 namespace wobble {
 
@@ -53,6 +53,20 @@ void validate_simulation_params(const SimulationParams& params) {
     validate_collider(copy, "collider " + std::to_string(c));
   }
   validate_step_solver(params.solver);
+}
+
+SimulationParams kept_while_running(const SimulationParams& wanted,
+                                    const SimulationParams& in_force) {
+  SimulationParams next = wanted;
+  next.contact.colliders = in_force.contact.colliders;
+  next.contact.offset = in_force.contact.offset;
+  next.single_precision_solve_above = in_force.single_precision_solve_above;
+  return next;
+}
+
+void read_step_settings(const SimulationParams& params, StepContext& step) {
+  step.gravity = params.gravity;
+  step.friction = params.contact.friction;
 }
 
 }  // namespace wobble

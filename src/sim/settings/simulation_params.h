@@ -1,5 +1,5 @@
-#ifndef WOBBLE_SIM_SIMULATION_PARAMS_H
-#define WOBBLE_SIM_SIMULATION_PARAMS_H
+#ifndef WOBBLE_SIM_SETTINGS_SIMULATION_PARAMS_H
+#define WOBBLE_SIM_SETTINGS_SIMULATION_PARAMS_H
 
 #include <Eigen/Core>
 #include <map>
@@ -10,6 +10,7 @@
 #include "sim/forces/gravity.h"
 #include "sim/forces/wind.h"
 #include "sim/solver/cholesky_solver.h"
+#include "sim/terms/step_term.h"
 
 namespace wobble {
 
@@ -55,6 +56,15 @@ struct SimulationParams {
 // Throws InputError unless k, dt, iterations and gravity are within the limits of
 // sim/value_limits.h (the same for every way a value comes in), and the solver is registered.
 void validate_simulation_params(const SimulationParams& params);
+
+// `wanted` with what a running simulation keeps as it started taken from `in_force`: what its
+// terms were made with (the colliders, which are dragged through their term, and the contact
+// offset) and single_precision_solve_above.
+SimulationParams kept_while_running(const SimulationParams& wanted,
+                                    const SimulationParams& in_force);
+
+// What every term may read of the settings at each step: step.gravity and step.friction.
+void read_step_settings(const SimulationParams& params, StepContext& step);
 
 }  // namespace wobble
 
