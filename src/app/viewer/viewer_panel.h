@@ -67,8 +67,9 @@ class ViewerPanel {
   // surface to see; the layers chosen for meshes with faces come back with the next one.
   void show_shape(bool has_faces);
   // Draw the panel (between ImGui's NewFrame and Render) with the parts other components own in
-  // `parts`, its own filled in, the help overlay and the step warning over the view; returns
-  // what was pressed. `scenes` are the picker's; the page's buttons call its actions.
+  // `parts`, its own filled in, the help overlay and `step_warning` (why the last step was
+  // rolled back) over the view; returns what was pressed. `scenes` are the picker's; the page's
+  // buttons call its actions.
   PanelRequests draw(PanelParts parts, const PanelStats& stats,
                      const std::vector<SceneChoice>& scenes, const std::string& step_warning,
                      float ui_scale);
