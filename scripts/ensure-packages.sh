@@ -67,6 +67,18 @@ ensure_packages() {
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}" </dev/null
 }
 
+# seed_test_costs BUILD_FOLDER COSTS_FILE: ctest runs the longest tests first when it knows their
+# times from an earlier run (BUILD_FOLDER/Testing/Temporary/CTestCostData.txt). A fresh build has
+# none, and in declared order the longest could start last, with one core idle meanwhile; so it
+# starts from a reference run's times (the file's lines without its # comments). Once ctest has
+# run, its own times replace them.
+seed_test_costs() {
+  local costs="$1/Testing/Temporary/CTestCostData.txt"
+  [ -f "$costs" ] && return 0
+  mkdir -p "$(dirname "$costs")"
+  grep -v '^#' "$2" > "$costs"
+}
+
 # Configure and build into build/ (Release). Extra arguments go to cmake's configure step.
 build_wobble() {
   local root

@@ -60,6 +60,7 @@ cmake --build build-sanitize --parallel "$(nproc)" --target "${targets[@]}"
 # The long tests' names, anchored, as one regular expression (their only special character is
 # the dot).
 long_tests=$(grep -v '^#' tests/sanitizers/long_tests.txt | sed 's/[.]/[.]/g' | paste -sd '|' -)
+seed_test_costs build-sanitize tests/sanitizers/test_costs.txt
 ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)" \
   --label-exclude checker_scenario \
   --exclude-regex "_NOT_BUILT|^docs/|^SeedFunctions[.]|^ShippedClothPile[.]|^($long_tests)\$"

@@ -7,4 +7,5 @@ ensure_packages test
 # The browser build first (build-web/), for the web tests among the suite (tests/web/).
 bash scripts/build-web.sh
 build_wobble -DWOBBLE_BUILD_TESTS=ON -DWOBBLE_WEB_TESTS=ON
+seed_test_costs build tests/test_costs.txt
 ctest --test-dir build --output-on-failure --parallel "$(nproc)"

@@ -1,5 +1,6 @@
 #include "scene_keys.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
 
@@ -15,6 +16,27 @@ namespace {
 std::optional<JsonFields> child(JsonFields& parent, const std::string& key) {
   if (!parent.has(key) || !parent.raw(key).is_object()) return std::nullopt;
   return parent.object(key);
+}
+
+// The keys the object at `section` holds for settings (sim/settings/setting_registry.h), in their
+// order: the next key of every setting's path through it, and "on" for a section switch with a
+// key; then `others`, what its own readers take.
+std::vector<std::string> section_keys(const std::vector<std::string>& section,
+                                      const std::vector<std::string>& others) {
+  std::vector<std::string> keys, switches;
+  for (const SettingSpec& spec : all_settings()) {
+    if (!(spec.places & in_scene)) continue;
+    const std::vector<std::string> path = scene_path(spec);
+    if (path.size() > section.size() && std::equal(section.begin(), section.end(), path.begin()) &&
+        std::find(keys.begin(), keys.end(), path[section.size()]) == keys.end()) {
+      keys.push_back(path[section.size()]);
+    } else if (path == section && spec.section_switch && spec.switch_key) {
+      switches.push_back("on");
+    }
+  }
+  keys.insert(keys.end(), switches.begin(), switches.end());
+  keys.insert(keys.end(), others.begin(), others.end());
+  return keys;
 }
 
 }  // namespace
@@ -39,22 +61,16 @@ void refuse_unknown_scene_keys(const std::string& path, const nlohmann::json& ob
     }
   }
   if (std::optional<JsonFields> material = child(top, "material")) {
-    material->allow_only({"k", "density", "mass", "vertex_masses", "friction"}, "material");
+    material->allow_only(section_keys({"material"}, {"density", "mass", "vertex_masses"}),
+                         "material");
   }
   if (std::optional<JsonFields> simulation = child(top, "simulation")) {
-    // Every setting a scene keeps here (sim/settings/setting_registry.h) by its key, and those
-    // read by their own readers.
-    std::vector<std::string> keys;
-    for (const SettingSpec& spec : all_settings()) {
-      if (spec.places & in_scene) keys.push_back(setting_key(spec));
-    }
-    keys.insert(keys.end(), {"gravity", "contact_offset", "wind"});
-    simulation->allow_only(keys, "simulation");
-    if (std::optional<JsonFields> wind = child(*simulation, "wind")) {
-      wind->allow_only({"velocity", "drag", "lift", "gusts", "air_density", "on", "model"},
-                       "simulation.wind");
-    }
+    simulation->allow_only(section_keys({"simulation"}, {"contact_offset"}), "simulation");
+    if (std::optional<JsonFields> wind = child(*simulation, "wind"))
+      wind->allow_only(section_keys({"simulation", "wind"}, {}), "simulation.wind");
   }
+  if (std::optional<JsonFields> self_collision = child(top, "self_collision"))
+    self_collision->allow_only(section_keys({"self_collision"}, {}), "self_collision");
   if (std::optional<JsonFields> velocity = child(top, "initial_velocity")) {
     velocity->allow_only({"sway"}, "initial_velocity (an object)");
   }

@@ -11,8 +11,6 @@
 #include "io/scene_keys.h"
 #include "io/scene_masses.h"
 #include "io/scene_pins.h"
-#include "io/scene_self_collision.h"
-#include "io/scene_wind.h"
 #include "io/shape_limits.h"
 #include "sim/input_error.h"
 #include "sim/settings/setting_registry.h"
@@ -115,10 +113,10 @@ Shape jelly_shape(JsonFields& mesh) {
   return shape;
 }
 
-// A setting's value at its key of `simulation` (sim/settings/setting_registry.h), read by its
+// A setting's value at `key` of its section (sim/settings/setting_registry.h), read by its
 // type: a choice refused with the names to choose from ("solver": a registered solver's).
-SettingValue scene_setting(JsonFields& simulation, const SettingSpec& spec) {
-  const std::string key = setting_key(spec);
+SettingValue scene_setting(JsonFields& simulation, const std::string& key,
+                           const SettingSpec& spec) {
   switch (spec.type) {
     case SettingType::integer:
       return static_cast<double>(*simulation.whole(key, static_cast<int>(spec.range.low),
@@ -137,6 +135,8 @@ SettingValue scene_setting(JsonFields& simulation, const SettingSpec& spec) {
       simulation.fail(key, expected);
     }
     case SettingType::vector:
+      if (!spec.number_along.isZero(0.0) && simulation.raw(key).is_number())
+        return Eigen::Vector3d(*simulation.number_in(key, spec.range) * spec.number_along);
       return *simulation.vector3_in(key, spec.range);
     case SettingType::number:
       break;
@@ -197,6 +197,41 @@ Shape file_shape(const std::string& path, JsonFields& mesh) {
   return shape;
 }
 
+// visit(section) with the object at keys `first` to `depth` of `path` below `fields`, when the
+// file has it; InputError for a value on the way that is not an object.
+template <typename Visit>
+void visit_section(JsonFields fields, const std::vector<std::string>& path, std::size_t first,
+                   std::size_t depth, const Visit& visit) {
+  if (first == depth) {
+    visit(fields);
+  } else if (fields.has(path[first])) {
+    visit_section(fields.object(path[first]), path, first + 1, depth, visit);
+  }
+}
+
+// Every setting a scene keeps (SettingPlace::in_scene: k and friction in "material", dt, the
+// solver, gravity, the wind's section and the rest in "simulation", self-collision's section,
+// each added setting), at its path, into params; one left out keeps the value params has. A
+// section switch is on when its section is there, unless its "on" says otherwise.
+void read_scene_settings(const JsonFields& top, SimulationParams& params) {
+  for (const SettingSpec& spec : all_settings()) {
+    if (!(spec.places & in_scene)) continue;
+    const std::vector<std::string> path = scene_path(spec);
+    const std::size_t depth = spec.section_switch ? path.size() : path.size() - 1;
+    visit_section(top, path, 0, depth, [&](JsonFields& section) {
+      if (spec.section_switch) {
+        spec.set(params, spec.switch_key ? section.flag("on").value_or(true) : true);
+      } else if (section.has(path.back())) {
+        spec.set(params, scene_setting(section, path.back(), spec));
+      } else if (spec.needed_in_section) {
+        throw InputError(section.where(path.back()) + ": missing, expected the " + spec.label +
+                         (spec.type == SettingType::vector ? " [x, y, z]" : "") + " in " +
+                         spec.range.unit);
+      }
+    });
+  }
+}
+
 }  // namespace
 
 bool is_wobble_scene(const nlohmann::json& object) {
@@ -233,11 +268,10 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
   }
 
   scene.params.k = shape.default_k;
+  read_scene_settings(top, scene.params);
   if (top.has("material")) {
     JsonFields material = top.object("material");
-    scene.params.k = material.number_in("k", limits::stiffness).value_or(shape.default_k);
     scene_masses(material, shape.mesh, shape.name);
-    scene.params.contact.friction = material.number_in("friction", limits::friction).value_or(0.0);
   } else {
     // JsonFields keeps a reference to its object, so the empty one must outlive it.
     const nlohmann::json empty = nlohmann::json::object();
@@ -249,32 +283,11 @@ Scene load_wobble_scene(const std::string& path, const nlohmann::json& object,
 
   if (top.has("simulation")) {
     JsonFields simulation = top.object("simulation");
-    // Every setting a scene keeps here (SettingPlace::in_scene: dt, iterations, the solver,
-    // Chebyshev, damping, gravity_model, first_iterate and each added setting), by its key; one
-    // left out keeps its default.
-    for (const SettingSpec& spec : all_settings()) {
-      if ((spec.places & in_scene) && simulation.has(setting_key(spec)))
-        spec.set(scene.params, scene_setting(simulation, spec));
-    }
-    if (simulation.has("gravity")) {
-      // A number is the downward acceleration; a vector may point anywhere (a sideways part
-      // acts as a steady wind).
-      const nlohmann::json& gravity = simulation.raw("gravity");
-      if (gravity.is_number()) {
-        scene.params.gravity =
-            Eigen::Vector3d(0.0, -*simulation.number_in("gravity", limits::acceleration), 0.0);
-      } else {
-        scene.params.gravity = *simulation.vector3_in("gravity", limits::acceleration);
-      }
-    }
     scene.params.contact.offset =
         simulation.number_in("contact_offset", limits::contact_offset).value_or(-1.0);
-    if (simulation.has("wind")) scene.params.wind = scene_wind(simulation, "wind");
   }
   if (top.has("colliders"))
     scene.params.contact.colliders = scene_colliders(path, top, "colliders");
-  if (top.has("self_collision"))
-    scene.params.self_collision = scene_self_collision(top, "self_collision");
 
   if (top.has("pins")) {
     scene.pins = scene_pins(top, "pins", scene.network.V, shape.cloth_resolution);

@@ -1,5 +1,6 @@
 #include "write_wobble_scene.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -57,33 +58,53 @@ json collider_json(const Collider& collider) {
   return object;
 }
 
-json wind_json(const WindParams& wind) {
-  json object = {{"velocity", vector_json(wind.velocity)},
-                 {"drag", wind.drag},
-                 {"lift", wind.lift},
-                 {"gusts", wind.gusts},
-                 {"air_density", wind.air_density},
-                 {"on", wind.on}};
-  if (wind.model == WindModel::course) object["model"] = "course";
-  return object;
+// Whether `section` begins `path`.
+bool within(const std::vector<std::string>& section, const std::vector<std::string>& path) {
+  return path.size() > section.size() && std::equal(section.begin(), section.end(), path.begin());
 }
 
-json simulation_json(const SimulationParams& params) {
-  json object = {{"gravity", vector_json(params.gravity)}, {"wind", wind_json(params.wind)}};
-  // Every setting a scene keeps here (SettingPlace::in_scene), by its key. A choice or an added
-  // setting only when not its default, so that scenes saved before it was there and scenes that
-  // keep the default read and write the same; the rest always, to be read and changed.
+// The object at `path` in `top`, made where missing.
+json& object_at(json& top, const std::vector<std::string>& path) {
+  json* at = &top;
+  for (const std::string& key : path)
+    at = &(*at)[key];
+  return *at;
+}
+
+// Every setting a scene keeps (SettingPlace::in_scene) at its path into `top`, the file's object.
+// A choice or an added setting only when not its default, so that scenes saved before it was
+// there and scenes that keep the default read and write the same; the rest always, to be read
+// and changed. A section switch's section only while it is on, or, with an "on" key, while
+// one of its settings is not its default: the section's presence is what turns it on.
+void write_scene_settings(const SimulationParams& params, json& top) {
   const SimulationParams defaults;
+  std::vector<std::vector<std::string>> left_out;
+  for (const SettingSpec& switch_spec : all_settings()) {
+    if (!(switch_spec.places & in_scene) || !switch_spec.section_switch) continue;
+    const std::vector<std::string> section = scene_path(switch_spec);
+    bool kept = std::get<bool>(switch_spec.get(params));
+    for (const SettingSpec& spec : all_settings()) {
+      if (switch_spec.switch_key && (spec.places & in_scene) && within(section, scene_path(spec)))
+        kept = kept || spec.get(params) != spec.get(defaults);
+    }
+    if (!kept) {
+      left_out.push_back(section);
+      continue;
+    }
+    json& object = object_at(top, section);
+    object = json::object();
+    if (switch_spec.switch_key) object["on"] = std::get<bool>(switch_spec.get(params));
+  }
   for (const SettingSpec& spec : all_settings()) {
-    if (!(spec.places & in_scene)) continue;
+    if (!(spec.places & in_scene) || spec.section_switch) continue;
+    const std::vector<std::string> path = scene_path(spec);
+    if (std::any_of(left_out.begin(), left_out.end(),
+                    [&](const std::vector<std::string>& section) { return within(section, path); }))
+      continue;
     const SettingValue value = spec.get(params);
     const bool quiet = spec.type == SettingType::choice || find_added_setting(spec.name);
-    if (!quiet || value != spec.get(defaults))
-      object[setting_key(spec)] = setting_json(spec, value);
+    if (!quiet || value != spec.get(defaults)) object_at(top, path) = setting_json(spec, value);
   }
-  // Negative is the automatic offset, which is what leaving the key out gives.
-  if (params.contact.offset >= 0.0) object["contact_offset"] = params.contact.offset;
-  return object;
 }
 
 // The loader's sway, {"sway": s}, recomputed for a candidate s: it is kept only if it gives
@@ -136,15 +157,18 @@ nlohmann::json wobble_scene_json(const Scene& scene, const std::string& mesh_fil
   json masses = json::array();
   for (Eigen::Index i = 0; i < scene.network.m.size(); ++i)
     masses.push_back(scene.network.m(i));
-  json material = {{"k", params.k}, {"friction", params.contact.friction}};
-  material["vertex_masses"] = std::move(masses);
+  json material = {{"vertex_masses", std::move(masses)}};
+  // Negative is the automatic offset, which is what leaving the key out gives.
+  json simulation = json::object();
+  if (params.contact.offset >= 0.0) simulation["contact_offset"] = params.contact.offset;
 
   json object = {{"name", scene.name},
                  {"description", scene.description},
                  {"mesh", {{"file", mesh_file}, {"polygon_springs", false}}},
                  {"pins", std::set<int>(scene.pins.begin(), scene.pins.end())},
                  {"material", std::move(material)},
-                 {"simulation", simulation_json(params)}};
+                 {"simulation", std::move(simulation)}};
+  write_scene_settings(params, object);
   // A solid's tetrahedra (its volume term's), which the OBJ does not hold.
   if (scene.network.T.rows() > 0) {
     json tetrahedra = json::array();
@@ -158,10 +182,6 @@ nlohmann::json wobble_scene_json(const Scene& scene, const std::string& mesh_fil
   for (const Collider& collider : params.contact.colliders)
     colliders.push_back(collider_json(collider));
   object["colliders"] = std::move(colliders);
-  // The key's presence is what turns self-collision on, so it is written only then.
-  if (params.self_collision.on) {
-    object["self_collision"] = {{"thickness", params.self_collision.thickness}};
-  }
   json velocity = initial_velocity_json(scene);
   if (!velocity.is_null()) object["initial_velocity"] = std::move(velocity);
 

@@ -115,7 +115,7 @@ TEST(ContactKeys, WindObjectTurnsTheAerodynamicWindOn) {
       contact_keys_error(std::string("{") + cloth +
                          R"(, "simulation": {"wind": {"velocity": [0, 0, 3], "colour": 1}}})");
   EXPECT_NE(message.find("scene.json: simulation.wind.colour: unknown key, simulation.wind takes "
-                         "velocity, drag, lift, gusts, air_density, on, model"),
+                         "model, velocity, drag, lift, gusts, air_density, on"),
             std::string::npos)
       << message;
 }

@@ -1,6 +1,5 @@
-// The scene file's "self_collision": {"thickness": ...} object (io/scene_self_collision.h).
-#include "io/scene_self_collision.h"
-
+// The scene file's "self_collision": {"thickness": ...} object: the self-collision switch's
+// section and its thickness (sim/settings/built_in_settings.cpp), read by io/wobble_scene.cpp.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -79,12 +78,10 @@ TEST(SceneSelfCollision, AThicknessThatIsNotANumberWithinLimitsIsAnError) {
 
 TEST(SceneSelfCollision, AnUnknownKeyIsAnError) {
   EXPECT_EQ(self_collision_error(std::string(cloth) + R"(, "self_collision": {"thicknes": 0.02}})"),
-            "scene.json: self_collision.thicknes: unknown key, self_collision takes only "
-            "\"thickness\" (m)");
-  EXPECT_EQ(
-      self_collision_error(std::string(cloth) +
-                           R"(, "self_collision": {"thickness": 0.02, "on": false}})"),
-      "scene.json: self_collision.on: unknown key, self_collision takes only \"thickness\" (m)");
+            "scene.json: self_collision.thicknes: unknown key, self_collision takes thickness");
+  EXPECT_EQ(self_collision_error(std::string(cloth) +
+                                 R"(, "self_collision": {"thickness": 0.02, "on": false}})"),
+            "scene.json: self_collision.on: unknown key, self_collision takes thickness");
 }
 
 }  // namespace

@@ -140,12 +140,12 @@ TEST(WobbleScene, UnknownKeysAreRefusedAtEveryLevel) {
       {R"({"mesh": {"generator": "cloth", "file": "a.obj"}})",
        "scene.json: mesh.file: unknown key, a cloth generator's mesh takes"},
       {"{" + cloth + R"(, "material": {"k": 10, "densty": 2}})",
-       "scene.json: material.densty: unknown key, material takes k, density, mass, "
-       "vertex_masses, friction"},
+       "scene.json: material.densty: unknown key, material takes k, friction, density, mass, "
+       "vertex_masses"},
       {"{" + cloth + R"(, "simulation": {"iteratons": 10}})",
        "scene.json: simulation.iteratons: unknown key, simulation takes dt, iterations"},
       {"{" + cloth + R"(, "simulation": {"wind": {"velocity": [1, 0, 0], "gust": 1}}})",
-       "scene.json: simulation.wind.gust: unknown key, simulation.wind takes velocity"},
+       "scene.json: simulation.wind.gust: unknown key, simulation.wind takes model, velocity"},
       {"{" + cloth + R"(, "camera": {"position": [0, 0, 1], "target": [0, 0, 0], "fov": 40}})",
        "scene.json: camera.fov: unknown key, camera takes position, target"},
       {"{" + cloth + R"(, "appearance": {"colour": [1, 0, 0]}})",

@@ -319,20 +319,19 @@ void apply_scene_overrides(const CommandLine& command, SimulationParams& params)
       }
     }
   }
-  // The environment's settings (each side's own are applied where the simulation starts).
+  // The environment's settings (each side's own are applied where the simulation starts), a
+  // switch turned on as a user turns it on (--wind over a calm scene: the default breeze), and
+  // what a setting implies turned on with it (--self-collision-thickness: --self-collision).
   for (const auto& [name, value] : command.settings.values) {
     const SettingSpec& spec = *find_setting(name);
-    if (!spec.per_side) spec.set(params, value);
+    if (spec.per_side) continue;
+    if (spec.type == SettingType::toggle && std::get<bool>(value)) {
+      turn_on(spec, params);
+    } else {
+      spec.set(params, value);
+    }
+    if (*spec.implies != '\0') turn_on(*find_setting(spec.implies), params);
   }
-  // --wind turns on the wind the scene has; a calm aerodynamic one is the default breeze.
-  if (command.settings.toggle("wind").value_or(false)) {
-    const bool calm =
-        params.wind.model == WindModel::aerodynamic && params.wind.velocity.isZero(0.0);
-    if (calm) params.wind = WindParams::default_breeze();
-    params.wind.on = true;
-  }
-  // --self-collision-thickness implies --self-collision.
-  if (command.settings.has("self-collision-thickness")) params.self_collision.on = true;
 }
 
 }  // namespace wobble

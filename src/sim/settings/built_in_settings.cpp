@@ -147,6 +147,43 @@ SettingSpec labelled(SettingSpec spec, std::string (*label)(const std::string&))
   spec.choice_label = label;
   return spec;
 }
+// Where a scene file keeps it (SettingSpec::scene_path): the setting reaches files too.
+SettingSpec in_files_at(SettingSpec spec, const char* path) {
+  spec.places |= in_scene;
+  spec.scene_path = path;
+  return spec;
+}
+// A switch that is its section being in a scene file (SettingSpec::section_switch).
+SettingSpec section_switch(SettingSpec spec, const char* section, bool keyed) {
+  spec = in_files_at(spec, section);
+  spec.section_switch = true;
+  spec.switch_key = keyed;
+  return spec;
+}
+SettingSpec needed(SettingSpec spec) {
+  spec.needed_in_section = true;
+  return spec;
+}
+SettingSpec pointing(SettingSpec spec, const Eigen::Vector3d& direction) {
+  spec.number_along = direction;
+  return spec;
+}
+SettingSpec turned_on_with(SettingSpec spec, void (*also)(SimulationParams&)) {
+  spec.when_turned_on = also;
+  return spec;
+}
+SettingSpec implying(SettingSpec spec, const char* name) {
+  spec.implies = name;
+  return spec;
+}
+
+// The wind switched on over a calm scene blows the default breeze: the switch always shows wind.
+void breeze_if_calm(SimulationParams& params) {
+  const WindParams& wind = params.wind;
+  if (!wind.on && wind.model == WindModel::aerodynamic && wind.velocity.isZero(0.0))
+    params.wind = WindParams::default_breeze();
+}
+
 SettingSpec applies_only_with(SettingSpec spec, const char* with,
                               bool (*applies)(const SimulationParams&), const char* why_not) {
   spec.applies_with = with;
@@ -165,11 +202,11 @@ std::vector<SettingSpec> declare_built_in_settings() {
   // clang-format off
   return {
       // What each side of the split view steps with.
-      in_the_panel(logarithmic(number_field(setting("k", "k",
+      in_files_at(in_the_panel(logarithmic(number_field(setting("k", "k",
           "Spring stiffness in N/m (scene default otherwise)",
           limits::stiffness, d.k, Cost::factorization, everywhere_but_files, own, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.k; })),
-          {1.0, 1e6, ""}, "%.1f"),
+          {1.0, 1e6, ""}, "%.1f"), "material.k"),
       in_the_panel(logarithmic(number_field(setting("dt", "dt",
           "Time step in seconds (scene default otherwise)",
           limits::time_step, d.dt, Cost::factorization | Cost::time_step, everywhere, own, allowed),
@@ -197,36 +234,48 @@ std::vector<SettingSpec> declare_built_in_settings() {
           "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, 0)",
           limits::damping, d.damping, Cost::factorization, everywhere, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.damping; })),
-      number_field(setting("friction", "friction",
+      in_files_at(number_field(setting("friction", "friction",
           "Coulomb friction coefficient against the colliders (scene default otherwise, 0)",
           limits::friction, d.contact.friction, Cost::friction, on_command_line | in_address |
           in_panel, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.contact.friction; }),
-      toggle_field(setting("wind", "wind",
+          "material.friction"),
+      turned_on_with(section_switch(toggle_field(setting("wind", "wind",
           "Turn the wind on: the scene's, or a default breeze (course scenes: the course wind)",
           no_range, 0.0, Cost::terms, on_command_line | in_address | in_panel, shared, allowed),
-          [](auto& p) -> auto& { return p.wind.on; }),
-      enum_field(setting("wind-model", "wind model", "aerodynamic, or the course's W-key force",
+          [](auto& p) -> auto& { return p.wind.on; }), "simulation.wind", true),
+          breeze_if_calm),
+      in_files_at(enum_field(setting("wind-model", "wind model",
+          "aerodynamic, or the course's W-key force",
           no_range, 0.0, Cost::terms, applied_only, shared, allowed),
           wind_model_choices, [](auto& p) -> auto& { return p.wind.model; }),
-      vector_field(setting("wind-velocity", "wind velocity", "The air's velocity in m/s",
+          "simulation.wind.model"),
+      needed(in_files_at(vector_field(setting("wind-velocity", "wind velocity",
+          "The air's velocity in m/s",
           limits::speed, 0.0, Cost::terms, applied_only, shared, allowed),
-          [](auto& p) -> auto& { return p.wind.velocity; }),
-      number_field(setting("wind-drag", "wind drag", "The wind's drag coefficient C_d",
+          [](auto& p) -> auto& { return p.wind.velocity; }), "simulation.wind.velocity")),
+      in_files_at(number_field(setting("wind-drag", "wind drag", "The wind's drag coefficient C_d",
           limits::aerodynamic_coefficient, d.wind.drag, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.drag; }),
-      number_field(setting("wind-lift", "wind lift", "The wind's lift coefficient C_l",
+          "simulation.wind.drag"),
+      in_files_at(number_field(setting("wind-lift", "wind lift", "The wind's lift coefficient C_l",
           limits::aerodynamic_coefficient, d.wind.lift, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.lift; }),
-      number_field(setting("wind-gusts", "gusts", "The wind's relative gust strength, 0 steady",
+          "simulation.wind.lift"),
+      in_files_at(number_field(setting("wind-gusts", "gusts",
+          "The wind's relative gust strength, 0 steady",
           limits::gust_strength, d.wind.gusts, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.gusts; }),
-      number_field(setting("air-density", "air density", "The air's density in kg/m³",
+          "simulation.wind.gusts"),
+      in_files_at(number_field(setting("air-density", "air density", "The air's density in kg/m³",
           limits::air_density, d.wind.air_density, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.air_density; }),
-      vector_field(setting("gravity", "gravity", "Gravity in m/s² (a force in N, see gravity-model)",
+          "simulation.wind.air_density"),
+      pointing(in_files_at(vector_field(setting("gravity", "gravity",
+          "Gravity in m/s² (a force in N, see gravity-model)",
           limits::acceleration, 0.0, Cost::gravity, applied_only, shared, allowed),
-          [](auto& p) -> auto& { return p.gravity; }),
+          [](auto& p) -> auto& { return p.gravity; }), "simulation.gravity"),
+          Eigen::Vector3d(0.0, -1.0, 0.0)),
       enum_field(setting("gravity-model", "gravity model",
           "acceleration (f = m g) or force_per_vertex (f = g, the course's)",
           no_range, 0.0, Cost::gravity, in_scene, shared, allowed),
@@ -235,16 +284,17 @@ std::vector<SettingSpec> declare_built_in_settings() {
           "Where each step's iterations start: current_positions or inertial_prediction",
           no_range, 0.0, Cost::value, in_scene, own, allowed),
           first_iterate_choices, [](auto& p) -> auto& { return p.first_iterate; }),
-      toggle_field(setting("self-collision", "self-collision",
+      section_switch(toggle_field(setting("self-collision", "self-collision",
           "Keep the surface from passing through itself (thickness: the scene's, else 0.01 m; "
           "not for course scenes)",
           no_range, 0.0, Cost::self_collision, everywhere_but_files, shared, refused),
-          [](auto& p) -> auto& { return p.self_collision.on; }),
-      logarithmic(number_field(setting("self-collision-thickness", "thickness",
-          "Self-collision thickness in m, 1e-5 to 1; implies --self-collision",
+          [](auto& p) -> auto& { return p.self_collision.on; }), "self_collision", false),
+      implying(in_files_at(logarithmic(number_field(setting("self-collision-thickness",
+          "thickness", "Self-collision thickness in m, 1e-5 to 1; implies --self-collision",
           limits::self_collision_thickness, d.self_collision.thickness, Cost::self_collision,
           everywhere_but_files, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.self_collision.thickness; })),
+          "self_collision.thickness"), "self-collision"),
   };
   // clang-format on
 }

@@ -114,6 +114,24 @@ std::string setting_key(const SettingSpec& spec) {
   return key;
 }
 
+std::vector<std::string> scene_path(const SettingSpec& spec) {
+  if (*spec.scene_path == '\0') return {"simulation", setting_key(spec)};
+  std::vector<std::string> keys(1);
+  for (const char* c = spec.scene_path; *c != '\0'; ++c) {
+    if (*c == '.') {
+      keys.emplace_back();
+    } else {
+      keys.back() += *c;
+    }
+  }
+  return keys;
+}
+
+void turn_on(const SettingSpec& spec, SimulationParams& params) {
+  if (spec.when_turned_on) spec.when_turned_on(params);
+  spec.set(params, true);
+}
+
 const SettingSpec* find_added_setting(const std::string& name) {
   for (const SettingSpec& spec : registry()) {
     if (spec.name == name || setting_key(spec) == name) return &spec;

@@ -21,8 +21,9 @@ struct SimulationParams;
 //                      (app/cli/command_line.h)
 //   --compare          NAME=VALUE, for either side (app/cli/compare_settings.h)
 //   the page's address ?NAME=VALUE (a switch: ?NAME) (app/web/page_arguments.h)
-//   scene files        "simulation": {"NAME_WITH_UNDERSCORES": VALUE}, read and written, for
-//                      those kept there (SettingPlace::scene)
+//   scene files        at its path ("simulation.NAME_WITH_UNDERSCORES" unless it says another:
+//                      "material.k", "simulation.wind.drag"), read, written and the only keys
+//                      a file's sections take, for those kept there (SettingPlace::in_scene)
 //   the panel          a control for the left and right sides (app/viewer/side_settings.h)
 //   --stats            "NAME_WITH_UNDERSCORES": VALUE
 //   Simulation::apply  which does what `cost` says when its value changes
@@ -68,7 +69,7 @@ enum SettingPlace : unsigned {
   in_address = 1u << 1,       // the page's ?NAME=
   in_panel = 1u << 2,         // a control in the panel (both sides when per_side)
   in_stats = 1u << 3,         // --stats
-  in_scene = 1u << 4,         // "simulation": {"NAME_WITH_UNDERSCORES": ...}, read and written
+  in_scene = 1u << 4,         // in a scene file at its scene_path, read and written
   everywhere = on_command_line | in_address | in_panel | in_stats | in_scene,
 };
 
@@ -111,6 +112,27 @@ struct SettingSpec {
   const char* applies_with = "";
   bool (*applies)(const SimulationParams& params) = nullptr;
   const char* why_not = "";
+  // Where a scene file keeps it (with in_scene): its key's path from the file's top, dotted
+  // ("material.k", "simulation.wind.drag"); empty for "simulation.NAME_WITH_UNDERSCORES". A
+  // section_switch's path is its section's ("simulation.wind").
+  const char* scene_path = "";
+  // A switch that is its section being in the file: the section, an object, turns it on by
+  // being there (and holds its "on" key when switch_key: the wind's, to keep its settings
+  // while off). A file keeps the section while the switch is on, or, with a key, while any of
+  // the section's settings differs from its default.
+  bool section_switch = false;
+  bool switch_key = false;
+  // A setting its section cannot do without: a file with the section must give it.
+  bool needed_in_section = false;
+  // A vector a file may also give as one number, that number times this direction (gravity: a
+  // number is the downward acceleration). Zero: three numbers only.
+  Eigen::Vector3d number_along = Eigen::Vector3d::Zero();
+  // What turning the switch on from the command line, the page's address, the panel or a key
+  // does besides (the wind: a calm scene's becomes the default breeze). Null: nothing.
+  void (*when_turned_on)(SimulationParams& params) = nullptr;
+  // A switch that setting this from the command line or the page's address turns on too
+  // (self-collision-thickness: self-collision). Empty: none.
+  const char* implies = "";
   // The field of SimulationParams it reads and writes (built_in_settings.cpp binds them).
   std::function<SettingValue(const SimulationParams&)> get = nullptr;
   std::function<void(SimulationParams&, const SettingValue&)> set = nullptr;
@@ -137,6 +159,11 @@ const std::vector<SettingSpec>& added_settings();
 const SettingSpec* find_added_setting(const std::string& name);
 // "tether_stiffness": the name as a scene file's and --stats' key.
 std::string setting_key(const SettingSpec& spec);
+// Where a scene file keeps the setting, as the keys from the file's top: {"material", "k"},
+// {"simulation", "tether_stiffness"}; a section switch's, its section's {"simulation", "wind"}.
+std::vector<std::string> scene_path(const SettingSpec& spec);
+// `params` with the switch turned on as a user turns it on: its when_turned_on done first.
+void turn_on(const SettingSpec& spec, SimulationParams& params);
 
 // The setting's value in params.
 SettingValue value_of(const SettingSpec& spec, const SimulationParams& params);
