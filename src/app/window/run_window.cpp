@@ -25,7 +25,7 @@ namespace {
 // The window as draw_frame's host: GLFW's input, sizes and swaps, and a clock from the start.
 class WindowHost : public FrameHost {
  public:
-  explicit WindowHost(GlfwWindow& window, std::string title)
+  WindowHost(GlfwWindow& window, std::string title)
       : window_(window), start_(std::chrono::steady_clock::now()), title_(std::move(title)) {}
 
   PolledInput poll(const Viewer& viewer, const FrameMeters& meters) override {
