@@ -26,11 +26,10 @@ struct PanelStats {
   int threads = 1;  // the solver's threads (--threads, OMP_NUM_THREADS or the processors)
   long steps = 0;
   double simulated_seconds = 0.0;
-  bool has_colliders = false;      // friction, the colliders' checkbox and contacts show only then
-  bool aerodynamic_wind = true;    // the wind has a speed and heading (the course's has neither)
+  bool has_colliders = false;      // the colliders' checkbox and contacts show only then
   int contacts = 0;                // vertices the last step moved out of a collider
   bool student_side = false;       // the right side is a student's step (--student)
-  bool course_scene = false;       // the course's format: no Chebyshev, no self-collision offered
+  bool course_scene = false;       // the course's format: what it keeps as the course has it greyed
   std::vector<std::string> notes;  // what the scene loader chose for the user
   std::string warning;             // why the simulation paused by itself, or empty
   std::string recording;           // while recording: "DIR/ (N frames)"
@@ -55,7 +54,6 @@ struct PanelStats {
 inline EnvironmentOffer environment_offer(const PanelStats& stats) {
   EnvironmentOffer offer;
   offer.colliders = stats.has_colliders;
-  offer.aerodynamic_wind = stats.aerodynamic_wind;
   offer.course_scene = stats.course_scene;
   return offer;
 }

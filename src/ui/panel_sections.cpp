@@ -195,6 +195,13 @@ void draw_setting_controls(std::vector<SettingControl>& controls, const char* su
                            bool course_scene) {
   for (SettingControl& control : controls) {
     if (!control.shown) continue;
+    if (!control.shown_with.empty()) {
+      const SettingControl* with = nullptr;
+      for (const SettingControl& other : controls) {
+        if (other.name == control.shown_with) with = &other;
+      }
+      if (with && !with->on) continue;
+    }
     if (control.kind == SettingControl::Kind::choice && control.choices.empty()) continue;
     const std::string label =
         control.label + (control.unit.empty() ? "" : " (" + control.unit + ")") + suffix;
@@ -204,7 +211,7 @@ void draw_setting_controls(std::vector<SettingControl>& controls, const char* su
     if (course_scene && control.course_locked) {
       why =
           "A course scene reproduces the course's program exactly:\n"
-          "plain local-global iterations only.";
+          "plain local-global iterations, no damping, friction or self-collision.";
     } else if (!control.applies_with.empty()) {
       const SettingControl* with = nullptr;
       for (const SettingControl& other : controls) {
@@ -235,6 +242,15 @@ void draw_setting_controls(std::vector<SettingControl>& controls, const char* su
         break;
       case SettingControl::Kind::toggle:
         ImGui::Checkbox(label.c_str(), &control.on);
+        if (why.empty() && !control.help.empty() && ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s", control.help.c_str());
+        break;
+      case SettingControl::Kind::heading:
+        ImGui::DragFloat(label.c_str(), &control.value, (control.high - control.low) / 400.0f,
+                         control.low, control.high, control.format.c_str(),
+                         ImGuiSliderFlags_AlwaysClamp);
+        ImGui::DragFloat((control.label + " heading" + suffix).c_str(), &control.heading, 1.0f,
+                         0.0f, 360.0f, "%.0f deg", ImGuiSliderFlags_AlwaysClamp);
         break;
       case SettingControl::Kind::choice: {
         const int count = static_cast<int>(control.choices.size());
@@ -287,34 +303,8 @@ bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
 }
 
 void draw_environment_section(EnvironmentSettings& settings, const EnvironmentOffer& offer) {
-  using Limits = EnvironmentSettings;
-  // Damping from a hundredth to ten per second: by a factor a pixel too.
-  log_drag("damping (1/s)", &settings.damping, 0.0f, Limits::max_damping, "%.3f");
-  log_drag_tooltip();
-  if (offer.colliders) {
-    ImGui::DragFloat("friction", &settings.friction, 0.005f, 0.0f, Limits::max_friction, "%.2f",
-                     ImGuiSliderFlags_AlwaysClamp);
-  }
-  ImGui::Checkbox("wind (W)", &settings.wind);
-  if (offer.aerodynamic_wind) {
-    ImGui::DragFloat("wind (m/s)", &settings.wind_speed, 0.05f, 0.0f, Limits::max_wind_speed,
-                     "%.1f", ImGuiSliderFlags_AlwaysClamp);
-    ImGui::DragFloat("wind heading", &settings.wind_heading, 1.0f, 0.0f, 360.0f, "%.0f deg",
-                     ImGuiSliderFlags_AlwaysClamp);
-  }
+  draw_setting_controls(settings.environment.controls, "", offer.course_scene);
   if (offer.colliders) ImGui::Checkbox("colliders", &settings.colliders);
-  // A course scene reproduces the course's program, which has no self-collision: not offered.
-  if (!offer.course_scene) {
-    ImGui::Checkbox("self-collision", &settings.self_collision);
-    if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("Keep the surface from passing through itself, a thickness apart");
-    }
-    if (settings.self_collision) {
-      log_drag("thickness (mm)", &settings.self_collision_mm, Limits::min_self_collision_mm,
-               Limits::max_self_collision_mm, "%.2f");
-      log_drag_tooltip();
-    }
-  }
 }
 
 void draw_view_section(ViewSettings& settings) {

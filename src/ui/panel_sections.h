@@ -67,21 +67,24 @@ struct PlayRequests {
 };
 PlayRequests draw_play_rows(PlaySettings& settings, const std::string& warning);
 
-// The control of one setting on one side of the view: the app fills a side's from the settings'
+// The control of one setting in the panel: the app fills a side's from the settings'
 // declarations (sim/settings/setting_registry.h), one per setting each side has its own of, in
-// their order (app/viewer/side_settings.h). Labelled "LABEL (UNIT)", and " right" after it on
-// the right side.
+// their order, and the environment's from those the sides share (app/viewer/side_settings.h).
+// Labelled "LABEL (UNIT)", and " right" after it on the right side.
 struct SettingControl {
-  enum class Kind { number, integer, toggle, choice };
+  // heading: a vector as two numbers, its speed (`value`, "LABEL (UNIT)") and its heading around
+  // y (`heading`, "LABEL heading", degrees: 0 +x, 90 +z).
+  enum class Kind { number, integer, toggle, choice, heading };
   Kind kind = Kind::number;
   std::string name;                  // the setting's: "k", "tether-stiffness"
   std::string label;                 // "k", "tether k"
   std::string unit;                  // "N/m", or "" for a plain factor
-  std::string help;                  // a choice's tooltip
+  std::string help;                  // a choice's or a switch's tooltip
   float low = 0.0f, high = 1.0f;     // a number's or an integer's range in the panel
   bool log_scale = false;            // a number moves by a factor a pixel (low > 0)
   std::string format = "%.4g";       // a number's
-  float value = 0.0f;                // a number's
+  float value = 0.0f;                // a number's, a heading's speed
+  float heading = 0.0f;              // a heading's, degrees
   int whole = 0;                     // an integer's; a choice's index into `choices`
   bool on = false;                   // a switch's
   std::vector<std::string> choices;  // a choice's labels
@@ -93,6 +96,7 @@ struct SettingControl {
   std::string why_not;
   bool course_locked = false;  // a course scene keeps it as the course has it: greyed out there
   bool shown = true;  // false: it does nothing for the scene shown (a solid's setting on cloth)
+  std::string shown_with;  // shown only while the switch of this name, in the same list, is on
 };
 
 // What one side of the view steps with: the left side's in SimulationSettings, the right side's
@@ -116,28 +120,17 @@ struct SimulationSettings : SideSliders {
 };
 bool draw_simulation_section(SimulationSettings& settings, bool course_scene);
 
-// "environment": damping, friction, wind, colliders and self-collision. Friction and the
-// colliders' checkbox show only with colliders, the wind's speed and heading only for the
-// aerodynamic wind, self-collision not in a course scene.
+// "environment": a control for each setting the two sides share (damping, friction, the wind's
+// switch, speed and heading, self-collision and its thickness: each shown where its declaration
+// offers it), then the colliders' checkbox where there are colliders. In a course scene those
+// `course_locked` are greyed out.
 struct EnvironmentSettings {
-  float damping = 0.0f;       // 1/s, mass-proportional
-  float friction = 0.0f;      // Coulomb μ against the colliders
-  bool wind = false;          // wind on
-  float wind_speed = 0.0f;    // m/s (aerodynamic wind only)
-  float wind_heading = 0.0f;  // degrees around y the wind blows towards: 0 +x, 90 +z
-  bool colliders = true;      // colliders shown
-  // Self-collision on, and its thickness in mm (the simulation's is in m).
-  bool self_collision = false;
-  float self_collision_mm = 10.0f;
-
-  static constexpr float max_damping = 10.0f, max_friction = 2.0f, max_wind_speed = 30.0f;
-  // limits::self_collision_thickness, 1e-5 to 1 m, in mm.
-  static constexpr float min_self_collision_mm = 0.01f, max_self_collision_mm = 1000.0f;
+  SideSliders environment;
+  bool colliders = true;  // colliders shown
 };
 struct EnvironmentOffer {
-  bool colliders = false;        // the scene has colliders
-  bool aerodynamic_wind = true;  // the wind has a speed and heading (the course's has neither)
-  bool course_scene = false;     // no self-collision
+  bool colliders = false;     // the scene has colliders
+  bool course_scene = false;  // the course's format
 };
 void draw_environment_section(EnvironmentSettings& settings, const EnvironmentOffer& offer);
 

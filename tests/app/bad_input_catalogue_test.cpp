@@ -726,7 +726,7 @@ std::vector<BadInput> contact_catalogue() {
       {"self_collision_unknown_key",
        {{"s.json", scene("\"self_collision\": {\"thicknes\": 0.02}")}},
        "{dir}/s.json",
-       {"s.json", "self_collision.thicknes", "unknown key", "\"thickness\""}},
+       {"s.json", "self_collision.thicknes", "unknown key", "takes thickness"}},
       {"self_collision_thickness_option_zero",
        {},
        "cloth --self-collision-thickness 0",

@@ -69,15 +69,34 @@ TEST(ViewerPanel, TheSplitViewsRightSideFollowsTheCheckbox) {
   EXPECT_FALSE(f.viewer.session().right_side()->params().self_collision.on);
 }
 
-TEST(ViewerPanel, ACourseSceneOffersNoSelfCollision) {
+// A course scene reproduces the course's program, as the command line keeps it (--damping and
+// --self-collision are refused for one): self-collision and damping are drawn greyed out, and
+// clicking or dragging them changes nothing.
+TEST(ViewerPanel, ACourseSceneKeepsSelfCollisionAndDampingOff) {
   PanelFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
   ASSERT_EQ(f.viewer.session().simulation().params().gravity_model,
             wobble::GravityModel::force_per_vertex);
-  // The search finds what the panel does draw ...
-  EXPECT_TRUE(f.find("iterations"));
-  // ... but not self-collision.
-  EXPECT_FALSE(f.find("self-collision"));
+  const std::optional<ImVec2> box = f.scroll_to("self-collision");
+  ASSERT_TRUE(box) << "drawn, greyed out";
+  f.click(*box);
   EXPECT_FALSE(f.viewer.session().simulation().params().self_collision.on);
+  const std::optional<ImVec2> damping = f.scroll_to("damping (1/s)");
+  ASSERT_TRUE(damping);
+  f.drag(*damping, 60.0f);
+  EXPECT_EQ(f.viewer.session().simulation().params().damping, 0.0);
+}
+
+// The same clicks and drags on the cloth turn self-collision on and damp it.
+TEST(ViewerPanel, TheClothTakesSelfCollisionAndDamping) {
+  PanelFixture f(wobble::make_builtin_scene("cloth"));
+  const std::optional<ImVec2> box = f.scroll_to("self-collision");
+  ASSERT_TRUE(box);
+  f.click(*box);
+  EXPECT_TRUE(f.viewer.session().simulation().params().self_collision.on);
+  const std::optional<ImVec2> damping = f.scroll_to("damping (1/s)");
+  ASSERT_TRUE(damping);
+  f.drag(*damping, 60.0f);
+  EXPECT_GT(f.viewer.session().simulation().params().damping, 0.0);
 }
 
 // The solver combo switches the running simulation from the next step on, keeping its state;

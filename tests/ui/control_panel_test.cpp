@@ -23,12 +23,18 @@ wobble::SettingControl& control(SideSliders& side, const char* name) {
   return *found;
 }
 
-// Every row the panel can show at once: the split view's, self-collision's, the colliders',
-// the solver combos, a warning, a recording and two notes.
+// Every row the panel can show at once: the split view's, self-collision's and its thickness, the
+// colliders' and friction, the wind's speed and heading, the solver combos, a warning, a
+// recording and two notes.
 void show_everything(PanelDriver& panel) {
   panel.stats.solver = "local-global";
   panel.settings.split = true;
-  panel.settings.self_collision = true;
+  wobble::SimulationParams environment;
+  environment.self_collision.on = true;
+  environment.contact.colliders.emplace_back();  // the ground
+  environment.contact.friction = 0.5;
+  environment.wind.velocity = Eigen::Vector3d(0.0, 0.0, 5.0);  // 5 m/s towards +z
+  panel.show_environment(environment);
   panel.stats.has_colliders = true;
   panel.stats.self_collision = true;
   panel.stats.warning = "the step diverged: positions over 1e6 m; paused";
@@ -212,8 +218,13 @@ TEST(ControlPanel, EveryDragOverDecadesMovesByTheSameFactor) {
   };
   const Case cases[] = {
       {"dt (s)", [](PanelSettings& s) -> float& { return control(s, "dt").value; }, 0.01f},
-      {"damping (1/s)", [](PanelSettings& s) -> float& { return s.damping; }, 0.1f},
-      {"thickness (mm)", [](PanelSettings& s) -> float& { return s.self_collision_mm; }, 10.0f},
+      {"damping (1/s)",
+       [](PanelSettings& s) -> float& { return control(s.environment, "damping").value; }, 0.1f},
+      {"thickness (mm)",
+       [](PanelSettings& s) -> float& {
+         return control(s.environment, "self-collision-thickness").value;
+       },
+       10.0f},
       {"k (N/m) right", [](PanelSettings& s) -> float& { return control(s.right, "k").value; },
        2000.0f},
       {"dt (s) right", [](PanelSettings& s) -> float& { return control(s.right, "dt").value; },
@@ -321,17 +332,16 @@ TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
       {"iterations",
        [](const PanelSettings& s) { return static_cast<float>(s.control("iterations")->whole); }},
       {"gravity (m/s^2)", [](const PanelSettings& s) { return s.gravity; }},
-      {"friction", [](const PanelSettings& s) { return s.friction; }},
-      {"wind (m/s)", [](const PanelSettings& s) { return s.wind_speed; }},
-      {"wind heading", [](const PanelSettings& s) { return s.wind_heading; }},
+      {"friction", [](const PanelSettings& s) { return s.environment.control("friction")->value; }},
+      {"wind (m/s)",
+       [](const PanelSettings& s) { return s.environment.control("wind-velocity")->value; }},
+      {"wind heading",
+       [](const PanelSettings& s) { return s.environment.control("wind-velocity")->heading; }},
       {"UI scale", [](const PanelSettings& s) { return s.ui_scale; }}};
   for (const Case& c : cases) {
     SCOPED_TRACE(c.label);
     PanelDriver panel(1280.0f, 720.0f, 1.0f);
     show_everything(panel);
-    panel.settings.wind_heading = 90.0f;
-    panel.settings.friction = 0.5f;
-    panel.settings.wind_speed = 5.0f;
     panel.settle();
     std::optional<ImVec2> at = panel.find(c.label);
     for (int notch = 0; !at && notch < 40; ++notch) {

@@ -20,15 +20,21 @@ namespace wobble::testing {
 // at a time. Nothing is drawn.
 class PanelDriver {
  public:
-  // Both sides' controls as the viewer fills them (app/viewer/side_settings.h): the cloth's
-  // k of 400 N/m, 50 iterations on the left and 5 on the right.
+  // Both sides' controls and the environment's as the viewer fills them
+  // (app/viewer/side_settings.h): the cloth's k of 400 N/m, 50 iterations on the left and 5 on
+  // the right, the default environment.
   PanelDriver(float width, float height, float scale) : imgui_(width, height), scale_(scale) {
     ImGui::GetIO().FontGlobalScale = scale;
     SimulationParams params;
     params.k = 400.0;
     show_settings(params, settings);
+    show_environment(params);
     params.iterations = 5;
     show_settings(params, settings.right);
+  }
+  // The environment section's controls showing `params`.
+  void show_environment(const SimulationParams& params) {
+    show_settings(params, settings.environment, false, PanelPart::environment);
   }
   PanelSettings settings;
   PanelStats stats;

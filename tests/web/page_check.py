@@ -124,6 +124,24 @@ class Chromium:
         result = self.call('Runtime.evaluate', {'expression': expression, 'returnByValue': True})
         return result['result'].get('value')
 
+    def file_chooser(self, open_it, timeout=10.0):
+        """The Page.fileChooserOpened event after open_it() (a key, a click) opened the page's
+        file chooser, intercepted so that no dialog shows; None if none opened within timeout
+        seconds."""
+        self.call('Page.enable')  # its events: the chooser opened
+        self.call('Page.setInterceptFileChooserDialog', {'enabled': True})
+        self.events.clear()
+        open_it()
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            self.evaluate('1')  # reads what arrived
+            chooser = next((event for event in self.events
+                            if event.get('method') == 'Page.fileChooserOpened'), None)
+            if chooser is not None:
+                return chooser
+            time.sleep(0.2)
+        return None
+
     def close(self):
         try:
             self.call('Browser.close')

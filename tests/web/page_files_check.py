@@ -155,17 +155,7 @@ def main():
             failures.append(f'Cmd+S: the page took {stepped} steps, as S does')
         # Ctrl+O opens the browser's file chooser, as "Open file..." does, and the view stays
         # (O alone is the scene's opening view).
-        browser.call('Page.enable')  # its events: the chooser opened
-        browser.call('Page.setInterceptFileChooserDialog', {'enabled': True})
-        browser.events.clear()
-        press_with(browser, 'Control', 'o')
-        deadline = time.monotonic() + 10
-        chooser = None
-        while chooser is None and time.monotonic() < deadline:
-            browser.evaluate('1')  # reads what arrived
-            chooser = next((event for event in browser.events
-                            if event.get('method') == 'Page.fileChooserOpened'), None)
-            time.sleep(0.2)
+        chooser = browser.file_chooser(lambda: press_with(browser, 'Control', 'o'))
         print(f'page_files_check: Ctrl+O: a file chooser opened: {chooser is not None}')
         if chooser is None:
             failures.append('Ctrl+O: no file chooser opened')

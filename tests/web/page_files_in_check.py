@@ -132,17 +132,8 @@ def files_in(site_url, native_program, assets, failures):
                             f'{share:.3e} of the diagonal from native (at most {TOLERANCE:g})')
         # The panel's "Open file..." opens the browser's chooser; a Wobble scene whose mesh is in
         # a subfolder, chosen there with its mesh, opens.
-        browser.call('Page.enable')  # its events: the chooser opened
-        browser.call('Page.setInterceptFileChooserDialog', {'enabled': True})
-        browser.events.clear()
-        click(browser, 60, 69)  # "Open file...", in the panel as it opens at 1280x720
-        deadline = time.monotonic() + 10
-        chooser = None
-        while chooser is None and time.monotonic() < deadline:
-            browser.evaluate('1')  # reads what arrived
-            chooser = next((event for event in browser.events
-                            if event.get('method') == 'Page.fileChooserOpened'), None)
-            time.sleep(0.2)
+        # "Open file...", in the panel as it opens at 1280x720.
+        chooser = browser.file_chooser(lambda: click(browser, 60, 69))
         if chooser is None:
             failures.append('files in: "Open file..." opened no file chooser')
             return

@@ -11,7 +11,7 @@
 #include "app/cli/scene_catalog.h"
 #include "app/cli/solver_choice.h"
 #include "io/output_target.h"
-#include "io/parse_number.h"
+#include "sim/parse_number.h"
 #include "sim/input_error.h"
 #include "sim/input_limits.h"
 #include "sim/parallel/worker_pool.h"

@@ -4,7 +4,7 @@
 #include <optional>
 #include <sstream>
 
-#include "io/parse_number.h"
+#include "sim/parse_number.h"
 #include "sim/input_error.h"
 
 namespace wobble::cli {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "io/parse_number.h"
+#include "sim/parse_number.h"
 #include "sim/input_error.h"
 
 namespace wobble {

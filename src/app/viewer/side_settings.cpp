@@ -3,24 +3,22 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/interaction/environment_controls.h"
 #include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
 namespace {
 
-// `value`, unless the control shows another: then the control's.
-double taken(double value, float shown) {
-  return static_cast<float>(value) == shown ? value : static_cast<double>(shown);
+// The settings a list of controls shows: those in the panel that each side has its own of, or
+// those the two sides share.
+bool in_part(const SettingSpec& spec, PanelPart part) {
+  return (spec.places & in_panel) != 0 && spec.per_side == (part == PanelPart::each_side);
 }
 
-// The settings a side's controls show: those each side has its own of, in the panel.
-bool on_a_side(const SettingSpec& spec) {
-  return spec.per_side && (spec.places & in_panel) != 0;
-}
-
-SettingControl::Kind control_kind(SettingType type) {
-  switch (type) {
+SettingControl::Kind control_kind(const SettingSpec& spec) {
+  if (spec.panel_view == PanelView::speed_and_heading) return SettingControl::Kind::heading;
+  switch (spec.type) {
     case SettingType::integer:
       return SettingControl::Kind::integer;
     case SettingType::toggle:
@@ -36,17 +34,20 @@ SettingControl::Kind control_kind(SettingType type) {
 
 }  // namespace
 
-void show_settings(const SimulationParams& params, SideSliders& sliders, bool solid) {
+void show_settings(const SimulationParams& params, SideSliders& sliders, bool solid,
+                   PanelPart part) {
   sliders.controls.clear();
   for (const SettingSpec& spec : all_settings()) {
-    if (!on_a_side(spec) || spec.type == SettingType::vector) continue;
+    if (!in_part(spec, part)) continue;
+    if (spec.type == SettingType::vector && spec.panel_view == PanelView::value) continue;
     SettingControl control;
-    control.kind = control_kind(spec.type);
+    control.kind = control_kind(spec);
     control.name = spec.name;
-    control.label = spec.label;
+    control.label = *spec.panel_label ? spec.panel_label : spec.label;
     control.help = spec.help;
-    const bool ranged = spec.type == SettingType::number || spec.type == SettingType::integer;
-    if (ranged) control.unit = spec.range.unit;
+    const bool ranged = spec.type == SettingType::number || spec.type == SettingType::integer ||
+                        spec.type == SettingType::vector;
+    if (ranged) control.unit = *spec.panel_unit ? spec.panel_unit : spec.range.unit;
     const ValueRange& range =
         spec.panel_range.high > spec.panel_range.low ? spec.panel_range : spec.range;
     control.low = static_cast<float>(range.low);
@@ -54,7 +55,13 @@ void show_settings(const SimulationParams& params, SideSliders& sliders, bool so
     control.log_scale = spec.log_scale;
     control.format = spec.panel_format;
     const SettingValue value = spec.get(params);
-    if (spec.type == SettingType::number) control.value = static_cast<float>(setting_number(value));
+    if (spec.type == SettingType::number)
+      control.value = static_cast<float>(setting_number(value) * spec.panel_scale);
+    if (control.kind == SettingControl::Kind::heading) {
+      const Eigen::Vector3d& v = std::get<Eigen::Vector3d>(value);
+      control.value = static_cast<float>(v.norm());
+      control.heading = static_cast<float>(heading_degrees(v));
+    }
     if (spec.type == SettingType::integer) control.whole = static_cast<int>(setting_number(value));
     if (spec.type == SettingType::toggle) control.on = std::get<bool>(value);
     if (spec.type == SettingType::choice) {
@@ -76,7 +83,8 @@ void show_settings(const SimulationParams& params, SideSliders& sliders, bool so
       }
     }
     control.course_locked = !spec.course_scene;
-    control.shown = solid || !spec.solids_only;
+    control.shown = (solid || !spec.solids_only) && (!spec.offered || spec.offered(params));
+    control.shown_with = spec.shown_with;
     sliders.controls.push_back(control);
   }
 }
@@ -94,7 +102,10 @@ SimulationParams settings_from_sliders(const SimulationParams& params, SideSlide
     };
     switch (spec->type) {
       case SettingType::number: {
-        const double now = setting_number(value), shown = taken(now, control.value);
+        const double now = setting_number(value), scale = spec->panel_scale;
+        const double shown = static_cast<float>(now * scale) == control.value
+                                 ? now
+                                 : static_cast<double>(control.value) / scale;
         // A float's rounding can fall just outside the range.
         if (shown != now) set(std::clamp(shown, spec->range.low, spec->range.high));
         break;
@@ -106,7 +117,14 @@ SimulationParams settings_from_sliders(const SimulationParams& params, SideSlide
         set(static_cast<double>(control.whole));
         break;
       case SettingType::toggle:
-        set(control.on);
+        // Turned on as a user turns it on (the wind over a calm scene: the breeze).
+        if (control.on != std::get<bool>(value)) {
+          if (control.on) {
+            turn_on(*spec, wanted);
+          } else {
+            spec->set(wanted, false);
+          }
+        }
         break;
       case SettingType::choice: {
         const std::vector<std::string> names = spec->choices();
@@ -114,8 +132,15 @@ SimulationParams settings_from_sliders(const SimulationParams& params, SideSlide
           set(names[control.whole]);
         break;
       }
-      case SettingType::vector:
+      case SettingType::vector: {
+        if (control.kind != SettingControl::Kind::heading) break;
+        const Eigen::Vector3d& v = std::get<Eigen::Vector3d>(value);
+        if (static_cast<float>(v.norm()) != control.value ||
+            static_cast<float>(heading_degrees(v)) != control.heading) {
+          set(with_speed_and_heading(v, control.value, control.heading));
+        }
         break;
+      }
     }
   }
   return wanted;

@@ -154,11 +154,8 @@ class Viewer {
   void saved(const std::string& what) { files_.tell(what); }
   // The panel's settings to the simulation, as one settings value (Simulation::apply).
   void apply_panel_settings();
-  // viewer_environment.cpp: damping, friction, wind and colliders.
+  // viewer_environment.cpp: the environment section's controls from the simulation's settings.
   void show_environment_in_panel();
-  // The environment section's values into `wanted`; returns whether the wind was turned on or
-  // off (the panel then shows the wind it got: the breeze, or the scene's).
-  bool environment_settings(SimulationParams& wanted);
   void place_ground();
   void update_collider_mesh();
   // viewer_compare.cpp: the split view.
@@ -177,15 +174,13 @@ class Viewer {
   PickAndDrag pick_and_drag_;     // the mouse's gesture in progress and what it holds
   bool paused_at_limit_ = false;  // paused by the step limit, not by the user
 
-  // viewer_environment.cpp, which main is changing, reads the components' state under the names
-  // it had as the viewer's own members: these refer to it. The wind's speed and heading are its
-  // own: as the panel last showed them, so that only a slider the user moved changes the wind.
+  // viewer_environment.cpp reads the components' state under the names it had as the viewer's
+  // own members: these refer to it.
   ViewerPanel::Settings& panel_;
   SimulationHost& host_;
   const Scene& scene_;
   GroundGrid& ground_;
   ColliderTriangles& collider_mesh_;
-  float shown_wind_speed_ = 0.0f, shown_wind_heading_ = 0.0f;
 };
 
 // The viewer of the scene the command line names, with its start-up settings and the scene

@@ -1,6 +1,6 @@
 // The viewer's mouse and keys: what each event does to the camera, the pins and the playback.
-#include "app/interaction/environment_controls.h"
 #include "app/viewer/viewer.h"
+#include "sim/settings/setting_registry.h"
 
 namespace wobble {
 
@@ -61,7 +61,7 @@ void Viewer::apply(ViewerCommand command) {
     case ViewerCommand::toggle_wind:
       change([this] {
         SimulationParams wanted = host_.simulation().params();
-        wanted.wind = toggled_wind(wanted.wind);
+        toggle(*find_setting("wind"), wanted);
         host_.simulation().apply(wanted);
         show_environment_in_panel();
       });

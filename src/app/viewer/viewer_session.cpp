@@ -65,7 +65,6 @@ PanelStats ViewerSession::simulation_stats() const {
   stats.simulated_seconds = simulation.time();
   stats.notes = scene_.notes;
   stats.has_colliders = !simulation.colliders().empty();
-  stats.aerodynamic_wind = simulation.params().wind.model == WindModel::aerodynamic;
   stats.contacts = simulation.contact_count();
   stats.self_collision = simulation.params().self_collision.on;
   stats.self_contacts = simulation.self_contact_count();

@@ -109,11 +109,13 @@ void Viewer::apply_panel_settings() {
   if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
     wanted.gravity = gravity_with_magnitude(scene_.params.gravity, panel_.gravity);
   }
-  const bool wind_toggled = environment_settings(wanted);
-  const bool new_dt = wanted.dt != params.dt;
+  // The environment's controls, then shown again where the change did more than the control
+  // (the wind turned on over a calm scene blows the breeze, whose speed the panel then shows).
+  wanted = settings_from_sliders(wanted, panel_.environment, simulation.max_iterations_for_mesh());
+  const bool new_dt = wanted.dt != params.dt, wind_switched = wanted.wind.on != params.wind.on;
   simulation.apply(wanted);
   if (new_dt) host_.restart_clock();
-  if (wind_toggled) show_environment_in_panel();
+  if (wind_switched) show_environment_in_panel();
   apply_split_settings();
 }
 

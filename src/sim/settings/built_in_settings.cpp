@@ -2,7 +2,7 @@
 // a user sets, with what each is called, takes and costs. Everything that sets or reads a
 // setting loops over this list and the added settings (sim/settings/setting_registry.h); nothing
 // else names them one by one.
-#include <array>
+#include <utility>
 
 #include "sim/settings/setting_registry.h"
 #include "sim/simulation_params.h"
@@ -13,52 +13,38 @@ namespace wobble {
 namespace {
 
 // Binds a declaration to a field of SimulationParams: `field` is a lambda
-// [](auto& params) -> auto& { return params.FIELD; }, which serves reading and writing alike.
-template <typename Field>
-SettingSpec number_field(SettingSpec spec, SettingType type, Field field) {
+// [](auto& params) -> auto& { return params.FIELD; }, which serves reading and writing alike. The
+// value is kept in a SettingValue as `Stored`: double (a number or an integer), bool (a switch),
+// std::string (a choice by name) or Eigen::Vector3d.
+template <typename Stored, typename Field>
+SettingSpec bound(SettingSpec spec, SettingType type, Field field) {
   spec.type = type;
   spec.get = [field](const SimulationParams& params) -> SettingValue {
-    return static_cast<double>(field(params));
+    return static_cast<Stored>(field(params));
   };
   spec.set = [field](SimulationParams& params, const SettingValue& value) {
     using Type = std::decay_t<decltype(field(params))>;
-    field(params) = static_cast<Type>(setting_number(value));
+    field(params) = static_cast<Type>(std::get<Stored>(value));
   };
   return spec;
 }
-
+template <typename Field>
+SettingSpec number_field(SettingSpec spec, SettingType type, Field field) {
+  return bound<double>(std::move(spec), type, field);
+}
 template <typename Field>
 SettingSpec toggle_field(SettingSpec spec, Field field) {
-  spec.type = SettingType::toggle;
-  spec.get = [field](const SimulationParams& params) -> SettingValue { return field(params); };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<bool>(value);
-  };
-  return spec;
+  return bound<bool>(std::move(spec), SettingType::toggle, field);
 }
-
 template <typename Field>
 SettingSpec vector_field(SettingSpec spec, Field field) {
-  spec.type = SettingType::vector;
-  spec.get = [field](const SimulationParams& params) -> SettingValue {
-    return Eigen::Vector3d(field(params));
-  };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<Eigen::Vector3d>(value);
-  };
-  return spec;
+  return bound<Eigen::Vector3d>(std::move(spec), SettingType::vector, field);
 }
-
 // A choice kept as a name (the solver's).
 template <typename Field>
 SettingSpec name_field(SettingSpec spec, std::vector<std::string> (*choices)(), Field field) {
-  spec.type = SettingType::choice;
   spec.choices = choices;
-  spec.get = [field](const SimulationParams& params) -> SettingValue { return field(params); };
-  spec.set = [field](SimulationParams& params, const SettingValue& value) {
-    field(params) = std::get<std::string>(value);
-  };
-  return spec;
+  return bound<std::string>(std::move(spec), SettingType::choice, field);
 }
 
 // A choice kept as an enumeration whose values are 0, 1, ... in the order of `choices()`.
@@ -176,6 +162,33 @@ SettingSpec implying(SettingSpec spec, const char* name) {
   spec.implies = name;
   return spec;
 }
+// The panel's words for it, when not its label and unit: "wind (W)"; a thickness in "mm" (1000).
+SettingSpec shown_as(SettingSpec spec, const char* label, const char* unit = "",
+                     double scale = 1.0) {
+  spec.panel_label = label;
+  spec.panel_unit = unit;
+  spec.panel_scale = scale;
+  return spec;
+}
+SettingSpec offered_when(SettingSpec spec, bool (*offered)(const SimulationParams&)) {
+  spec.offered = offered;
+  return spec;
+}
+SettingSpec shown_beside(SettingSpec spec, const char* switch_name) {
+  spec.shown_with = switch_name;
+  return spec;
+}
+SettingSpec as_speed_and_heading(SettingSpec spec) {
+  spec.panel_view = PanelView::speed_and_heading;
+  return spec;
+}
+bool has_colliders(const SimulationParams& params) {
+  return !params.contact.colliders.empty();
+}
+// The course's wind is a force with no speed or heading.
+bool aerodynamic_wind(const SimulationParams& params) {
+  return params.wind.model == WindModel::aerodynamic;
+}
 
 // The wind switched on over a calm scene blows the default breeze: the switch always shows wind.
 void breeze_if_calm(SimulationParams& params) {
@@ -230,30 +243,32 @@ std::vector<SettingSpec> declare_built_in_settings() {
           "solver", chebyshev_applies,
           "Chebyshev acceleration applies to the local-global iterations only"),
       // The environment, one for both sides.
-      logarithmic(number_field(setting("damping", "damping",
+      in_the_panel(logarithmic(number_field(setting("damping", "damping",
           "Damping in 1/s: velocities decay as (1 + C dt)^-steps (scene default otherwise, 0)",
           limits::damping, d.damping, Cost::factorization, everywhere, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.damping; })),
-      in_files_at(number_field(setting("friction", "friction",
+          {0.0, 10.0, ""}, "%.3f"),
+      offered_when(in_the_panel(in_files_at(number_field(setting("friction", "friction",
           "Coulomb friction coefficient against the colliders (scene default otherwise, 0)",
           limits::friction, d.contact.friction, Cost::friction, on_command_line | in_address |
           in_panel, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.contact.friction; }),
-          "material.friction"),
-      turned_on_with(section_switch(toggle_field(setting("wind", "wind",
+          "material.friction"), {0.0, 2.0, ""}, "%.2f"), has_colliders),
+      shown_as(turned_on_with(section_switch(toggle_field(setting("wind", "wind",
           "Turn the wind on: the scene's, or a default breeze (course scenes: the course wind)",
           no_range, 0.0, Cost::terms, on_command_line | in_address | in_panel, shared, allowed),
           [](auto& p) -> auto& { return p.wind.on; }), "simulation.wind", true),
-          breeze_if_calm),
+          breeze_if_calm), "wind (W)"),
       in_files_at(enum_field(setting("wind-model", "wind model",
           "aerodynamic, or the course's W-key force",
           no_range, 0.0, Cost::terms, applied_only, shared, allowed),
           wind_model_choices, [](auto& p) -> auto& { return p.wind.model; }),
           "simulation.wind.model"),
-      needed(in_files_at(vector_field(setting("wind-velocity", "wind velocity",
-          "The air's velocity in m/s",
-          limits::speed, 0.0, Cost::terms, applied_only, shared, allowed),
+      offered_when(shown_as(as_speed_and_heading(in_the_panel(needed(in_files_at(vector_field(
+          setting("wind-velocity", "wind velocity", "The air's velocity in m/s",
+          limits::speed, 0.0, Cost::terms, in_panel, shared, allowed),
           [](auto& p) -> auto& { return p.wind.velocity; }), "simulation.wind.velocity")),
+          {0.0, 30.0, ""}, "%.1f")), "wind"), aerodynamic_wind),
       in_files_at(number_field(setting("wind-drag", "wind drag", "The wind's drag coefficient C_d",
           limits::aerodynamic_coefficient, d.wind.drag, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.drag; }),
@@ -289,12 +304,14 @@ std::vector<SettingSpec> declare_built_in_settings() {
           "not for course scenes)",
           no_range, 0.0, Cost::self_collision, everywhere_but_files, shared, refused),
           [](auto& p) -> auto& { return p.self_collision.on; }), "self_collision", false),
-      implying(in_files_at(logarithmic(number_field(setting("self-collision-thickness",
+      shown_beside(shown_as(in_the_panel(implying(in_files_at(logarithmic(number_field(
+          setting("self-collision-thickness",
           "thickness", "Self-collision thickness in m, 1e-5 to 1; implies --self-collision",
           limits::self_collision_thickness, d.self_collision.thickness, Cost::self_collision,
           everywhere_but_files, shared, refused),
           SettingType::number, [](auto& p) -> auto& { return p.self_collision.thickness; })),
-          "self_collision.thickness"), "self-collision"),
+          "self_collision.thickness"), "self-collision"), {0.01, 1000.0, ""}, "%.2f"),
+          "thickness", "mm", 1000.0), "self-collision"),
   };
   // clang-format on
 }

@@ -1,13 +1,13 @@
 #include "sim/settings/setting_registry.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
 
 #include "sim/input_error.h"
+#include "sim/parse_number.h"
 #include "sim/simulation_params.h"
 
 namespace wobble {
@@ -32,17 +32,6 @@ bool well_formed(const std::string& name) {
 
 // Names the command line takes for itself beside the settings.
 const char* const other_option_names[] = {"threads", "frames", "scene"};
-
-// The whole of `text` as a T, or nothing (as io/parse_number.h reads, which sim/ cannot
-// include).
-template <typename T>
-std::optional<T> whole_text_as(const std::string& text) {
-  T value{};
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
-  if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
-  return value;
-}
 
 }  // namespace
 
@@ -130,6 +119,14 @@ std::vector<std::string> scene_path(const SettingSpec& spec) {
 void turn_on(const SettingSpec& spec, SimulationParams& params) {
   if (spec.when_turned_on) spec.when_turned_on(params);
   spec.set(params, true);
+}
+
+void toggle(const SettingSpec& spec, SimulationParams& params) {
+  if (std::get<bool>(spec.get(params))) {
+    spec.set(params, false);
+  } else {
+    turn_on(spec, params);
+  }
 }
 
 const SettingSpec* find_added_setting(const std::string& name) {
@@ -223,7 +220,7 @@ SettingValue read_setting(const SettingSpec& spec, const std::string& text,
   };
   switch (spec.type) {
     case SettingType::number: {
-      const std::optional<double> value = whole_text_as<double>(text);
+      const std::optional<double> value = parse_number<double>(text);
       // A setting that must be positive says so first, as the command line always has.
       if (spec.range.low > 0.0 && (!value || !std::isfinite(*value) || !(*value > 0.0)))
         refuse("a positive finite number");
@@ -231,7 +228,7 @@ SettingValue read_setting(const SettingSpec& spec, const std::string& text,
       return *value;
     }
     case SettingType::integer: {
-      const std::optional<long> value = whole_text_as<long>(text);
+      const std::optional<long> value = parse_number<long>(text);
       if (!value || !spec.range.contains(static_cast<double>(*value))) {
         refuse("a whole number from " + limit_text(spec.range.low) + " to " +
                limit_text(spec.range.high));
@@ -255,7 +252,7 @@ SettingValue read_setting(const SettingSpec& spec, const std::string& text,
         const std::size_t comma = i < 2 ? text.find(',', start) : text.size();
         if (comma == std::string::npos) refuse("three numbers X,Y,Z " + within_text(spec.range));
         const std::optional<double> value =
-            whole_text_as<double>(text.substr(start, comma - start));
+            parse_number<double>(text.substr(start, comma - start));
         if (!value || !spec.range.contains(*value))
           refuse("three numbers X,Y,Z " + within_text(spec.range));
         vector(i) = *value;

@@ -73,6 +73,10 @@ enum SettingPlace : unsigned {
   everywhere = on_command_line | in_address | in_panel | in_stats | in_scene,
 };
 
+// How the panel shows a setting: its value in a control of its type, or a vector as a speed and
+// a heading around y (the wind's velocity: "wind (m/s)" and "wind heading").
+enum class PanelView { value, speed_and_heading };
+
 // One setting, declared once.
 struct SettingSpec {
   std::string name;   // lower-case words joined by '-': "tether-stiffness"
@@ -102,10 +106,21 @@ struct SettingSpec {
   std::vector<std::string> (*choices)() = nullptr;  // a choice's names, in order
   // A choice's name as the panel shows it ("L-BFGS" for "lbfgs"); null: the name itself.
   std::string (*choice_label)(const std::string& name) = nullptr;
-  // The panel's control: its range when narrower than `range` (panel_range.high > low; the
-  // unit is range's), and a number's printf format.
+  // The panel's control: its range when narrower than `range` (panel_range.high > low; in the
+  // panel's unit), and a number's printf format.
   ValueRange panel_range{0.0, 0.0, ""};
   const char* panel_format = "%.4g";
+  // The panel's label when not `label` ("wind (W)": with its key), and its unit when not
+  // range's: the value times panel_scale ("mm" for a thickness in m: 1000).
+  const char* panel_label = "";
+  const char* panel_unit = "";
+  double panel_scale = 1.0;
+  PanelView panel_view = PanelView::value;
+  // Whether the panel offers it for `params` (friction: with colliders; the wind's speed: for
+  // the aerodynamic wind); null: always. And the switch it shows only beside, while that is on
+  // (self-collision's thickness: self-collision).
+  bool (*offered)(const SimulationParams& params) = nullptr;
+  const char* shown_with = "";
   // A switch that applies only with some values of another setting (Chebyshev with the
   // local-global solver): that setting's name, whether it applies to `params`, and why not, which
   // the panel says on the control it greys out.
@@ -164,6 +179,8 @@ std::string setting_key(const SettingSpec& spec);
 std::vector<std::string> scene_path(const SettingSpec& spec);
 // `params` with the switch turned on as a user turns it on: its when_turned_on done first.
 void turn_on(const SettingSpec& spec, SimulationParams& params);
+// The switch turned off, or on as turn_on does (the W key, the wind's checkbox).
+void toggle(const SettingSpec& spec, SimulationParams& params);
 
 // The setting's value in params.
 SettingValue value_of(const SettingSpec& spec, const SimulationParams& params);

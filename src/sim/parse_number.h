@@ -1,5 +1,5 @@
-#ifndef WOBBLE_IO_PARSE_NUMBER_H
-#define WOBBLE_IO_PARSE_NUMBER_H
+#ifndef WOBBLE_SIM_PARSE_NUMBER_H
+#define WOBBLE_SIM_PARSE_NUMBER_H
 
 #include <charconv>
 #include <optional>
