@@ -40,11 +40,12 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp"
 # on bad or large input: the simulation (wobble_sim_tests, its allocation test), the readers of
 # every file format (wobble_io_tests), the checker's sandbox and the student's step in its child
 # process (wobble_bounded_tests, wobble_student_*), the command line, outputs and viewer logic
-# driven through the real executable (wobble_app_tests, wobble_added_setting_test), picking and
-# the panel's logic and the camera's math (wobble_interaction_tests, wobble_ui_tests,
-# wobble_render_tests). Left to the plain pass of scripts/test.sh, which runs them all: the golden
-# images (their time is Mesa's software rasterizer, whose code is not Wobble's; the app tests
-# still render through it under the sanitizers), the tests that simulate or render a scene for
+# driven through the real executable (wobble_app_tests, wobble_video_tests,
+# wobble_added_setting_test), picking and the panel's logic and the camera's math
+# (wobble_interaction_tests, wobble_ui_tests, wobble_render_tests). Left to the plain pass of
+# scripts/test.sh, which runs them all: the golden images (their time is Mesa's software
+# rasterizer, whose code is not Wobble's; the app tests still render through it under the
+# sanitizers), the tests that simulate or render a scene for
 # many steps (tests/sanitizers/long_tests.txt: shorter tests run the same code here), the course
 # checker's scenarios
 # (CheckAssignment.*, labelled checker_scenario: scripts/check-assignment.sh compiles the
@@ -55,6 +56,7 @@ export LSAN_OPTIONS="suppressions=$root/tests/sanitizers/lsan.supp"
 # which no test runs.
 targets=(wobble_sim_tests wobble_sim_allocation_tests wobble_io_tests wobble_bounded_tests
   wobble_student_step_tests wobble_student_view_tests wobble_student_build_tests wobble_app_tests
+  wobble_video_tests
   wobble_added_setting_test wobble_interaction_tests wobble_ui_tests wobble_render_tests)
 cmake --build build-sanitize --parallel "$(nproc)" --target "${targets[@]}"
 # The long tests' names, anchored, as one regular expression (their only special character is

@@ -77,6 +77,16 @@ std::string course(const std::string& extra) {
   return "{\"obj\": \"tri.obj\", \"b\": [1], \"k\": 10, \"m\": 1" + extra + "}";
 }
 
+// A `prepare` that writes the file `name`, made by `make`, when the test runs: for the files of
+// hundreds of kilobytes, which every process of this program (one for each of its tests) would
+// otherwise make at its start.
+std::function<void(const std::filesystem::path&)> made_when_run(std::string name,
+                                                                std::string (*make)()) {
+  return [name, make](const std::filesystem::path& folder) {
+    std::ofstream(folder / name, std::ios::binary) << make();
+  };
+}
+
 // An OBJ with one face of `corners` corners.
 std::string obj_with_face(int corners) {
   std::string obj, face = "f";
@@ -358,21 +368,31 @@ std::vector<BadInput> catalogue() {
        {{Special::huge_file, "t.ele", "", wobble::tetgen_ele_file.max_bytes + 1}}},
       // Small files that ask for much more memory than their size.
       {"obj_face_above_corner_limit",
-       {{"big.obj", obj_with_face(30000)}},
+       {},
        "{dir}/big.obj",
-       {"big.obj", "line 30001", "30000 corners", std::to_string(wobble::max_face_corners)}},
+       {"big.obj", "line 30001", "30000 corners", std::to_string(wobble::max_face_corners)},
+       {},
+       true,
+       made_when_run("big.obj", [] { return obj_with_face(30000); })},
       {"obj_springs_above_limit",
-       {{"many.obj", obj_with_repeated_faces(wobble::max_face_springs / 32640 + 1)}},
+       {},
        "{dir}/many.obj",
        {"many.obj",
         "line " + std::to_string(wobble::max_face_corners + wobble::max_face_springs / 32640 + 1),
-        wobble::with_thousands_separators(wobble::max_face_springs)}},
+        wobble::with_thousands_separators(wobble::max_face_springs)},
+       {},
+       true,
+       made_when_run("many.obj",
+                     [] { return obj_with_repeated_faces(wobble::max_face_springs / 32640 + 1); })},
       // Memory that grows faster than the input through the springs' connections: refused by
       // the symbolic analysis before the factor's memory is taken.
       {"obj_whose_springs_fill_the_factor",
-       {{"random.obj", obj_of_random_triangles(20000, 40000)}},
+       {},
        "{dir}/random.obj",
-       {"random.obj", "Cholesky factor", "70,000,000", "3e+11"}},
+       {"random.obj", "Cholesky factor", "70,000,000", "3e+11"},
+       {},
+       true,
+       made_when_run("random.obj", [] { return obj_of_random_triangles(20000, 40000); })},
       {"texture_above_side_limit",
        {{"s.json",
          "{\"mesh\": {\"generator\": \"cloth\"}, \"appearance\": {\"texture\": \"big.png\"}}"},
@@ -861,7 +881,7 @@ std::vector<BadInput> strict_reader_catalogue() {
       {"scene_material_typo",
        {{"s.json", "{\"mesh\": {\"generator\": \"cloth\"}, \"material\": {\"densty\": 1}}"}},
        "{dir}/s.json",
-       {"s.json", "material.densty", "unknown key, material takes k, density"}},
+       {"s.json", "material.densty", "unknown key, material takes k, friction, density"}},
       // A comment is fine after any OBJ statement; other words after a face are not.
       {"obj_junk_after_a_face",
        {{"j.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0 # ok\nf 1 2 3 junk # comment\n"}},

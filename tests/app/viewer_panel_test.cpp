@@ -11,6 +11,7 @@
 
 #include "app/viewer/viewer.h"
 #include "io/load_scene.h"
+#include "sim/settings/setting_registry.h"
 #include "viewer_panel_fixture.h"
 
 namespace {
@@ -222,6 +223,93 @@ TEST(ViewerPanel, ANewDtLeavesTheSimulatedClockWhereItWas) {
   EXPECT_NEAR(f.viewer.session().stats().simulated_seconds, before + new_dt, 1e-12);
   EXPECT_EQ(f.viewer.session().stats().simulated_seconds, f.viewer.session().simulation().time())
       << "the plots' time axis and the stats agree";
+}
+
+}  // namespace
+
+namespace {
+
+// Whether the simulation's last step had the volume term: it reports its inverted tetrahedra.
+bool stepped_with_volume_term(const wobble::Simulation& simulation) {
+  for (const wobble::TermFigure& figure : simulation.last_step_timing().figures) {
+    if (std::string(figure.term) == "volume") return true;
+  }
+  return false;
+}
+
+double volume_setting(const wobble::Simulation& simulation, const char* name) {
+  return wobble::setting_value(simulation.params(), name);
+}
+
+// A solid's panel offers the volume term's switch and its stiffness (the jelly: on, 2e4 Pa);
+// unticked, the next step goes without the term; ticked again, with it.
+TEST(ViewerPanel, TheVolumeSwitchTurnsTheTermOffAndOnForAJelly) {
+  PanelFixture f(wobble::make_builtin_scene("jelly"));
+  f.viewer.advance();
+  ASSERT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  const std::optional<ImVec2> box = f.scroll_to("volume term");
+  ASSERT_TRUE(box) << "the panel offers the volume term's switch";
+  EXPECT_TRUE(f.scroll_to("volume k (Pa)")) << "and its stiffness beside it";
+
+  f.click(*f.scroll_to("volume term"));
+  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 0.0);
+  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume-stiffness"), 2e4) << "kept as it was";
+  f.viewer.advance();
+  EXPECT_FALSE(stepped_with_volume_term(f.viewer.simulation()));
+
+  f.click(*f.scroll_to("volume term"));
+  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 1.0);
+  f.viewer.advance();
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+}
+
+// The stiffness is dragged by a factor a pixel, as k is, and reaches the simulation.
+TEST(ViewerPanel, TheVolumeStiffnessDragReachesTheSimulation) {
+  PanelFixture f(wobble::make_builtin_scene("jelly"));
+  const std::optional<ImVec2> drag = f.scroll_to("volume k (Pa)");
+  ASSERT_TRUE(drag);
+  f.drag(*drag, 60.0f);  // 1% a pixel: 1.8 times
+  const double stiffness = volume_setting(f.viewer.simulation(), "volume-stiffness");
+  EXPECT_GT(stiffness, 1.5 * 2e4);
+  EXPECT_LE(stiffness, 1e6);
+  f.viewer.advance();
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+}
+
+// A surface without tetrahedra (the cloth, the course's banner) shows neither, and its settings
+// keep the term off.
+TEST(ViewerPanel, ASurfaceOffersNoVolumeTerm) {
+  {
+    PanelFixture cloth(wobble::make_builtin_scene("cloth"));
+    EXPECT_TRUE(cloth.find("iterations"));
+    EXPECT_FALSE(cloth.scroll_to("volume term"));
+    EXPECT_FALSE(cloth.find("volume k (Pa)"));
+    EXPECT_EQ(volume_setting(cloth.viewer.simulation(), "volume"), 0.0);
+  }
+  PanelFixture course(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
+  EXPECT_FALSE(course.scroll_to("volume term"));
+  EXPECT_EQ(volume_setting(course.viewer.simulation(), "volume"), 0.0);
+}
+
+// Each side of the split view has its own switch: the jelly with the term on the left and
+// without it on the right (--compare volume=off), and the right side's switch turns it on there
+// alone.
+TEST(ViewerPanel, EachSideOfTheSplitViewHasItsOwnVolumeSwitch) {
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings("volume=off");
+  PanelFixture f(wobble::make_builtin_scene("jelly"), settings);
+  ASSERT_NE(f.viewer.right_side(), nullptr);
+  f.viewer.advance();
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_FALSE(stepped_with_volume_term(*f.viewer.right_side()));
+  const std::optional<ImVec2> right = f.scroll_to("volume term right");
+  ASSERT_TRUE(right) << "the right side's own switch";
+  EXPECT_TRUE(f.scroll_to("volume k (Pa) right"));
+  f.click(*right);
+  f.viewer.advance();
+  EXPECT_EQ(wobble::setting_value(f.viewer.right_side()->params(), "volume"), 1.0);
+  EXPECT_TRUE(stepped_with_volume_term(*f.viewer.right_side()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation())) << "the left side kept it";
 }
 
 }  // namespace

@@ -41,7 +41,10 @@ SimulationParams block_params(const char* solver, bool volume, int iterations = 
   params.dt = 1.0 / 60.0;
   params.iterations = iterations;
   params.solver = solver;
-  if (volume) set_setting_value(params, "volume-stiffness", volume_stiffness);
+  if (volume) {
+    set_setting_value(params, "volume", 1.0);
+    set_setting_value(params, "volume-stiffness", volume_stiffness);
+  }
   return params;
 }
 

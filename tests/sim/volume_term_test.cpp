@@ -54,7 +54,7 @@ std::unique_ptr<Simulation> jelly(const std::string& solver, bool volume,
                                   wobble::SpringNetwork& rest,
                                   std::vector<wobble::Collider> colliders = {}) {
   wobble::Scene scene = wobble::make_builtin_scene("jelly");
-  if (!volume) wobble::set_setting_value(scene.params, "volume-stiffness", 0.0);
+  if (!volume) wobble::set_setting_value(scene.params, "volume", 0.0);
   scene.params.solver = solver;
   scene.params.contact.colliders = std::move(colliders);
   rest = scene.network;
@@ -205,14 +205,15 @@ TEST(VolumeTermEnergy, GradientMatchesFiniteDifferences) {
     }
   }
   EXPECT_LE(worst, 1e-5 * gradient.cwiseAbs().maxCoeff());
-  // And the local-global form agrees: K p − (its pull) is the same gradient.
+  // And the local-global form agrees: K p − (its pull) is the same gradient, to the rounding of
+  // the pull, which the local-global iterations take in single precision (tet_rotations.h).
   std::vector<Eigen::Triplet<double>> triplets;
   term.add_matrix(triplets);
   Eigen::SparseMatrix<double> K(p.rows(), p.rows());
   K.setFromTriplets(triplets.begin(), triplets.end());
   Eigen::MatrixXd pull = Eigen::MatrixXd::Zero(p.rows(), 3);
   term.add_targets(context, p, pull, nullptr);
-  EXPECT_LE((K * p - pull - gradient).norm(), 1e-8 * gradient.norm());
+  EXPECT_LE((K * p - pull - gradient).norm(), 1e-6 * pull.norm());
 }
 
 }  // namespace

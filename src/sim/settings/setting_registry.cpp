@@ -57,10 +57,12 @@ SettingRegistration::SettingRegistration(const SettingSpec& given) {
     throw std::logic_error("setting '" + given.name +
                            "': expected a number, an integer or a switch");
   }
+  const ValueRange& panel_range =
+      spec.panel_range.high > spec.panel_range.low ? spec.panel_range : spec.range;
   if (!(spec.range.low <= spec.range.high) || !spec.range.contains(spec.default_value) ||
       (spec.type == SettingType::toggle && spec.default_value != 0.0 &&
        spec.default_value != 1.0) ||
-      (spec.log_scale && !(spec.range.low > 0.0))) {
+      (spec.log_scale && !(panel_range.low > 0.0))) {
     throw std::logic_error("setting '" + given.name + "': its default or range is not a range");
   }
   // An added setting's value is a number kept by name in SimulationParams::added_settings (a

@@ -24,7 +24,8 @@ struct SimulationParams;
 //   scene files        at its path ("simulation.NAME_WITH_UNDERSCORES" unless it says another:
 //                      "material.k", "simulation.wind.drag"), read, written and the only keys
 //                      a file's sections take, for those kept there (SettingPlace::in_scene)
-//   the panel          a control for the left and right sides (app/viewer/side_settings.h)
+//   the panel          a control for the left and right sides, or one in the environment
+//                      section for those the sides share (app/viewer/side_settings.h)
 //   --stats            "NAME_WITH_UNDERSCORES": VALUE
 //   Simulation::apply  which does what `cost` says when its value changes
 
@@ -86,7 +87,8 @@ struct SettingSpec {
                       // each of a vector's numbers)
   double default_value = 0.0;  // a number's; a switch's is 0 or 1 (its field's default otherwise)
   SettingCost cost = SettingCost::terms;
-  bool log_scale = false;  // the panel's control moves by a factor a pixel (range.low > 0)
+  // The panel's control moves by a factor a pixel (the panel's range, below, starts above 0).
+  bool log_scale = false;
   // It acts only on a network with tetrahedra (SpringNetwork::T): the panel shows it only there.
   bool solids_only = false;
 

@@ -43,6 +43,7 @@ Scene make_jelly_scene() {
   scene.params.dt = 1.0 / 60.0;
   scene.params.iterations = 50;
   // The volume term beside the springs: a jelly turned inside out comes back (volume_term.h).
+  scene.params.added_settings["volume"] = 1.0;
   scene.params.added_settings["volume-stiffness"] = jelly_volume_stiffness;
   return scene;
 }

@@ -22,18 +22,33 @@ Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q
 // gradient w vₜ Gₜ (Fₜ − Rₜ)ᵀ, and the energy (w vₜ/2)‖Fₜ − Rₜ‖²_F (volume_term.h has the math).
 // The tetrahedra are kept four to a pack, one in each lane of the processor's vector registers
 // (AVX2 where the processor has it, the same bits without), so that a tetrahedron's update, some
-// two hundred multiplications and additions, runs on four at once. A tetrahedron's results do
+// two hundred multiplications and additions, runs on four at once; eight at once in single
+// precision for the local-global iterations' pull. A tetrahedron's results do
 // not depend on its pack's other lanes, nor on how the packs are shared out.
 class TetRotations {
  public:
   // V  #V by 3 rest positions; T  #T by 4 tetrahedra (none flat); weight  #T w vₜ (N·m).
   TetRotations(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, const Eigen::VectorXd& weight);
 
-  long packs() const { return static_cast<long>(packs_.size()); }
-  // Packs [begin, end) at the positions p (#V by 3): each rotation turned `most` times toward
-  // its Fₜ (fewer once a Newton update turns by less than `tolerance` rad), then for each
-  // tetrahedron t and corner c the pull, or with `gradient` the gradient, at out()[at(t, c) + 4i]
-  // for coordinate i (N), and with `energy` its energy for energy().
+  // Whether an update of `most` turns, without the gradient nor the energy, runs in single
+  // precision: the local-global iterations' case (one turn, the pull alone), eight tetrahedra a
+  // vector. The pull's rounding (a few parts in 10⁸ of it) is far below what the iterations
+  // leave; L-BFGS's energy and gradient, and anything asking for the energy, stay in double.
+  static bool single_precision(int most, bool gradient, bool energy) {
+    return most == 1 && !gradient && !energy;
+  }
+  // Before updates in that precision (see single_precision), on one thread: the last rotations
+  // handed over from the other precision's packs, if it was the other one's turn.
+  void prepare(bool single);
+  // The packs of that precision: the updates' units.
+  long packs(bool single) const {
+    return static_cast<long>(single ? single_packs_.size() : packs_.size());
+  }
+  // Packs [begin, end) of the precision prepare() chose, at the positions p (#V by 3): each
+  // rotation turned `most` times toward its Fₜ (fewer once a Newton update turns by less than
+  // `tolerance` rad), then for each tetrahedron t and corner c the pull, or with `gradient` the
+  // gradient, at out()[at(t, c) + 4i] for coordinate i (N), and with `energy` its energy for
+  // energy().
   void update(const Eigen::MatrixXd& p, long begin, long end, int most, double tolerance,
               bool gradient, bool energy);
   const double* out() const { return reinterpret_cast<const double*>(out_.data()); }
@@ -51,10 +66,19 @@ class TetRotations {
   struct Pack {
     Lane inverse_rest[9];  // Dm⁻¹, row by row
     Lane weight;           // w vₜ
-    Lane q[4];             // Rₜ as a unit quaternion (w, x, y, z)
+    Lane q[4];             // Rₜ as a quaternion (w, x, y, z), 1 to 2 long
     Lane R[9];             // and as a matrix, row by row
   };
-  // What the last update gave for a pack.
+  // The same of 8 tetrahedra in single precision, lane l the tetrahedron 8·pack + l: the double
+  // packs 2·pack and 2·pack + 1 side by side.
+  typedef float SingleLane __attribute__((vector_size(32), aligned(32)));
+  struct SinglePack {
+    SingleLane inverse_rest[9];
+    SingleLane weight;
+    SingleLane q[4];
+    SingleLane R[9];
+  };
+  // What the last update gave for a pack of 4, in double whichever precision made it.
   struct Out {
     Lane pull[12];  // corner c's coordinate i at 3c + i (N)
     Lane energy;    // J
@@ -62,9 +86,11 @@ class TetRotations {
 
  private:
   std::vector<Pack> packs_;
-  std::vector<Out> out_;
-  std::vector<int> corners_;  // 16 a pack: corner c of lane l at 16·pack + 4c + l
+  std::vector<SinglePack> single_packs_;
+  std::vector<Out> out_;      // 2 a single pack
+  std::vector<int> corners_;  // 16 a pack of 4: corner c of lane l at 16·pack + 4c + l
   long tets_;
+  bool single_current_ = false;  // whether single_packs_ hold the last rotations
 };
 
 }  // namespace wobble

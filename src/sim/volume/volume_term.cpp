@@ -12,17 +12,36 @@ namespace wobble {
 
 namespace {
 
-// The setting that turns the term on: off (0) unless a scene or the user sets it.
-const SettingRegistration volume_stiffness{
-    {"volume-stiffness",
-     "volume k",
-     "stiffness of the volume term that keeps each tetrahedron of a solid near a rotation of its "
-     "rest shape (0: off)",
-     {0.0, 1e7, "Pa"},
-     0.0,
-     SettingCost::refactorize,
-     /*log_scale=*/false,
-     /*solids_only=*/true}};
+// The panel's switch and its stiffness: the term acts when the switch is on and the stiffness is
+// above 0. Off unless a scene or the user turns it on (the shipped jellies do; the course's scenes
+// never), so every other scene steps exactly as without the term.
+const SettingRegistration volume_switch{{"volume",
+                                         "volume term",
+                                         "Keep each tetrahedron of a solid near a rotation of its "
+                                         "rest shape, so that a jelly turned inside out comes back "
+                                         "(the shipped jellies: on)",
+                                         {0.0, 1.0, ""},
+                                         0.0,
+                                         SettingCost::refactorize,
+                                         /*log_scale=*/false,
+                                         /*solids_only=*/true,
+                                         SettingType::toggle}};
+
+SettingSpec stiffness_spec() {
+  SettingSpec spec{"volume-stiffness",
+                   "volume k",
+                   "Stiffness of the volume term (0 leaves it out too)",
+                   {0.0, 1e7, "Pa"},
+                   volume_default_stiffness,
+                   SettingCost::refactorize,
+                   /*log_scale=*/true,
+                   /*solids_only=*/true};
+  // The panel's drag spans four decades around the shipped jellies' 2e4 Pa.
+  spec.panel_range = {100.0, 1e6, ""};
+  spec.panel_format = "%.0f";
+  return spec;
+}
+const SettingRegistration volume_stiffness{stiffness_spec()};
 
 // A fixed count of pieces, so that the work of each is the same for any thread count.
 constexpr int pieces = 16;
@@ -95,7 +114,9 @@ Eigen::Matrix3d VolumeTerm::deformation(const Eigen::MatrixXd& p, Eigen::Index t
 
 void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance, bool gradient,
                             bool energy) const {
-  const long count = rotations_.packs();
+  const bool single = TetRotations::single_precision(most, gradient, energy);
+  rotations_.prepare(single);
+  const long count = rotations_.packs(single);
   if (T_.rows() < min_tets_for_threads || pool_->threads() == 1) {
     rotations_.update(p, 0, count, most, tolerance, gradient, energy);
     return;
@@ -171,7 +192,9 @@ void VolumeTerm::report(std::vector<TermFigure>& figures) const {
 
 std::unique_ptr<StepTerm> make_volume_term(const TermSetup& setup) {
   const double stiffness = setting_value(setup.params, "volume-stiffness");
-  if (!(stiffness > 0.0) || setup.rest.T.rows() == 0) return nullptr;
+  if (setting_value(setup.params, "volume") == 0.0 || !(stiffness > 0.0) ||
+      setup.rest.T.rows() == 0)
+    return nullptr;
   return std::make_unique<VolumeTerm>(setup.rest.V, setup.rest.T, stiffness);
 }
 

@@ -67,9 +67,12 @@ class VolumeTerm : public StepTerm {
   long inverted_ = 0;
 };
 
-// The registered factory (sim/registered_terms.cpp): the volume term at the setting
-// "volume-stiffness" (Pa) for a network with tetrahedra, or nullptr when it is 0 or there are
-// none.
+// The volume stiffness (Pa) of the shipped jellies, the setting "volume-stiffness"'s default.
+constexpr double volume_default_stiffness = 2e4;
+
+// The registered factory (sim/registered_terms.cpp): the volume term for a network with
+// tetrahedra when the switch "volume" is on, at the setting "volume-stiffness" (Pa); nullptr
+// when the switch is off, the stiffness 0 or there are no tetrahedra.
 std::unique_ptr<StepTerm> make_volume_term(const TermSetup& setup);
 
 }  // namespace wobble
