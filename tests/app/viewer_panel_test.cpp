@@ -246,21 +246,22 @@ double volume_setting(const wobble::Simulation& simulation, const char* name) {
 TEST(ViewerPanel, TheVolumeSwitchTurnsTheTermOffAndOnForAJelly) {
   PanelFixture f(wobble::make_builtin_scene("jelly"));
   f.viewer.advance();
-  ASSERT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  ASSERT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
   const std::optional<ImVec2> box = f.scroll_to("volume term");
   ASSERT_TRUE(box) << "the panel offers the volume term's switch";
   EXPECT_TRUE(f.scroll_to("volume k (Pa)")) << "and its stiffness beside it";
 
   f.click(*f.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 0.0);
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume-stiffness"), 2e4) << "kept as it was";
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume"), 0.0);
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume-stiffness"), 2e4)
+      << "kept as it was";
   f.viewer.advance();
-  EXPECT_FALSE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_FALSE(stepped_with_volume_term(f.viewer.session().simulation()));
 
   f.click(*f.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 1.0);
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume"), 1.0);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
 }
 
 // The stiffness is dragged by a factor a pixel, as k is, and reaches the simulation.
@@ -269,11 +270,11 @@ TEST(ViewerPanel, TheVolumeStiffnessDragReachesTheSimulation) {
   const std::optional<ImVec2> drag = f.scroll_to("volume k (Pa)");
   ASSERT_TRUE(drag);
   f.drag(*drag, 60.0f);  // 1% a pixel: 1.8 times
-  const double stiffness = volume_setting(f.viewer.simulation(), "volume-stiffness");
+  const double stiffness = volume_setting(f.viewer.session().simulation(), "volume-stiffness");
   EXPECT_GT(stiffness, 1.5 * 2e4);
   EXPECT_LE(stiffness, 1e6);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
 }
 
 // A surface without tetrahedra (the cloth, the course's banner) shows neither, and its settings
@@ -284,11 +285,11 @@ TEST(ViewerPanel, ASurfaceOffersNoVolumeTerm) {
     EXPECT_TRUE(cloth.find("iterations"));
     EXPECT_FALSE(cloth.scroll_to("volume term"));
     EXPECT_FALSE(cloth.find("volume k (Pa)"));
-    EXPECT_EQ(volume_setting(cloth.viewer.simulation(), "volume"), 0.0);
+    EXPECT_EQ(volume_setting(cloth.viewer.session().simulation(), "volume"), 0.0);
   }
   PanelFixture course(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
   EXPECT_FALSE(course.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(course.viewer.simulation(), "volume"), 0.0);
+  EXPECT_EQ(volume_setting(course.viewer.session().simulation(), "volume"), 0.0);
 }
 
 // Each side of the split view has its own switch: the jelly with the term on the left and
@@ -298,18 +299,18 @@ TEST(ViewerPanel, EachSideOfTheSplitViewHasItsOwnVolumeSwitch) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("volume=off");
   PanelFixture f(wobble::make_builtin_scene("jelly"), settings);
-  ASSERT_NE(f.viewer.right_side(), nullptr);
+  ASSERT_NE(f.viewer.session().right_side(), nullptr);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
-  EXPECT_FALSE(stepped_with_volume_term(*f.viewer.right_side()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
+  EXPECT_FALSE(stepped_with_volume_term(*f.viewer.session().right_side()));
   const std::optional<ImVec2> right = f.scroll_to("volume term right");
   ASSERT_TRUE(right) << "the right side's own switch";
   EXPECT_TRUE(f.scroll_to("volume k (Pa) right"));
   f.click(*right);
   f.viewer.advance();
-  EXPECT_EQ(wobble::setting_value(f.viewer.right_side()->params(), "volume"), 1.0);
-  EXPECT_TRUE(stepped_with_volume_term(*f.viewer.right_side()));
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation())) << "the left side kept it";
+  EXPECT_EQ(wobble::setting_value(f.viewer.session().right_side()->params(), "volume"), 1.0);
+  EXPECT_TRUE(stepped_with_volume_term(*f.viewer.session().right_side()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation())) << "the left side kept it";
 }
 
 }  // namespace
