@@ -8,7 +8,7 @@
 #include "app/cli/command_line.h"
 #include "app/cli/thread_setting.h"
 #include "app/headless/run_headless.h"
-#include "app/viewer/run_window.h"
+#include "app/window/run_window.h"
 #include "io/atomic_file.h"
 #include "platform/context_error.h"
 #include "render/shader_program.h"

@@ -205,22 +205,22 @@ TEST(AddedSetting, ThePanelSlidersSetEachSide) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("test-air-drag=2");
   wobble::testing::PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
-  ASSERT_TRUE(f.viewer.right_side());
-  EXPECT_EQ(setting_value(f.viewer.right_side()->params(), "test-air-drag"), 2.0);
+  ASSERT_TRUE(f.viewer.session().right_side());
+  EXPECT_EQ(setting_value(f.viewer.session().right_side()->params(), "test-air-drag"), 2.0);
 
   const std::optional<ImVec2> left = f.scroll_to("air drag (1/s)");
   ASSERT_TRUE(left) << "the left side's slider";
   f.drag(*left, 80.0f);
-  const double dragged = setting_value(f.viewer.simulation().params(), "test-air-drag");
+  const double dragged = setting_value(f.viewer.session().simulation().params(), "test-air-drag");
   EXPECT_GT(dragged, 0.0);
-  EXPECT_EQ(setting_value(f.viewer.right_side()->params(), "test-air-drag"), 2.0)
+  EXPECT_EQ(setting_value(f.viewer.session().right_side()->params(), "test-air-drag"), 2.0)
       << "each side keeps its own";
 
   const std::optional<ImVec2> right = f.scroll_to("air drag (1/s) right");
   ASSERT_TRUE(right) << "the right side's slider";
   f.drag(*right, 80.0f);
-  EXPECT_GT(setting_value(f.viewer.right_side()->params(), "test-air-drag"), 2.0);
-  EXPECT_EQ(setting_value(f.viewer.simulation().params(), "test-air-drag"), dragged);
+  EXPECT_GT(setting_value(f.viewer.session().right_side()->params(), "test-air-drag"), 2.0);
+  EXPECT_EQ(setting_value(f.viewer.session().simulation().params(), "test-air-drag"), dragged);
 }
 
 // The sliders' translation keeps what they still show: an untouched panel changes nothing.
@@ -336,17 +336,17 @@ TEST(AddedSwitch, ThePanelCheckboxesSetEachSide) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("iterations=5");
   wobble::testing::PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
-  ASSERT_TRUE(f.viewer.right_side());
+  ASSERT_TRUE(f.viewer.session().right_side());
   const std::optional<ImVec2> left = f.scroll_to("still air");
   ASSERT_TRUE(left) << "the left side's checkbox";
   f.click(*left);
-  EXPECT_EQ(setting_value(f.viewer.simulation().params(), "test-still-air"), 1.0);
-  EXPECT_EQ(setting_value(f.viewer.right_side()->params(), "test-still-air"), 0.0)
+  EXPECT_EQ(setting_value(f.viewer.session().simulation().params(), "test-still-air"), 1.0);
+  EXPECT_EQ(setting_value(f.viewer.session().right_side()->params(), "test-still-air"), 0.0)
       << "each side keeps its own";
   const std::optional<ImVec2> right = f.scroll_to("still air right");
   ASSERT_TRUE(right) << "the right side's checkbox";
   f.click(*right);
-  EXPECT_EQ(setting_value(f.viewer.right_side()->params(), "test-still-air"), 1.0);
+  EXPECT_EQ(setting_value(f.viewer.session().right_side()->params(), "test-still-air"), 1.0);
 }
 
 }  // namespace

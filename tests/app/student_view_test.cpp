@@ -31,16 +31,19 @@ TEST(StudentView, TheSeedsOwnStepStaysOnWobbles) {
        {std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json", std::string("cloth")}) {
     SCOPED_TRACE(scene);
     const auto viewer = student_viewer(wobble::load_scene(scene), "reference");
-    ASSERT_NE(viewer->right_side(), nullptr);
-    EXPECT_EQ(viewer->simulation().params().first_iterate, wobble::FirstIterate::current_positions)
+    ASSERT_NE(viewer->session().right_side(), nullptr);
+    EXPECT_EQ(viewer->session().simulation().params().first_iterate,
+              wobble::FirstIterate::current_positions)
         << "Wobble's side takes the seed's step";
     for (int frame = 0; frame < 20; ++frame)
       viewer->advance();
-    EXPECT_EQ(viewer->right_side_warning(), "");
+    EXPECT_EQ(viewer->session().right_side_warning(), "");
     // The same function on both sides; only the order of sums may differ.
-    EXPECT_LT(viewer->student_distance(), 1e-9);
+    EXPECT_LT(viewer->session().student_distance(), 1e-9);
     // And the shape did move: the distance is measured on a falling cloth, not a resting one.
-    EXPECT_GT((viewer->right_side()->positions() - viewer->scene().network.V).norm(), 0.01);
+    EXPECT_GT(
+        (viewer->session().right_side()->positions() - viewer->session().scene().network.V).norm(),
+        0.01);
   }
 }
 
@@ -57,9 +60,9 @@ TEST(StudentView, ACrashStopsTheRightSideWithTheReasonAndTheLeftGoesOn) {
   const auto viewer = student_viewer(std::move(pendulum), "crashing");
   for (int frame = 0; frame < 30; ++frame)
     viewer->advance();
-  EXPECT_NE(viewer->right_side_warning().find("SIG"), std::string::npos)
-      << viewer->right_side_warning();
-  EXPECT_EQ(viewer->simulation().steps_taken(), 30);
+  EXPECT_NE(viewer->session().right_side_warning().find("SIG"), std::string::npos)
+      << viewer->session().right_side_warning();
+  EXPECT_EQ(viewer->session().simulation().steps_taken(), 30);
 }
 
 }  // namespace

@@ -22,25 +22,25 @@ using wobble::testing::PanelFixture;
 
 TEST(ViewerPanel, TheSelfCollisionCheckboxTurnsItOnAndOffInTheSimulation) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
-  ASSERT_FALSE(f.viewer.simulation().params().self_collision.on);
+  ASSERT_FALSE(f.viewer.session().simulation().params().self_collision.on);
   EXPECT_FALSE(f.find("thickness (mm)")) << "the thickness shows only when on";
   const std::optional<ImVec2> box = f.find("self-collision");
   ASSERT_TRUE(box) << "the panel offers self-collision";
 
   f.click(*box);
-  EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_TRUE(f.viewer.session().simulation().params().self_collision.on);
   // The checkbox alone keeps the thickness exactly as it was.
-  EXPECT_EQ(f.viewer.simulation().params().self_collision.thickness, 0.01);
-  EXPECT_TRUE(f.viewer.stats().self_collision);
+  EXPECT_EQ(f.viewer.session().simulation().params().self_collision.thickness, 0.01);
+  EXPECT_TRUE(f.viewer.session().stats().self_collision);
   for (int i = 0; i < 3; ++i)
     f.viewer.advance();
-  EXPECT_EQ(f.viewer.stats().self_contacts,
-            f.viewer.simulation().term<wobble::SelfContactTerm>()->contact_count());
+  EXPECT_EQ(f.viewer.session().stats().self_contacts,
+            f.viewer.session().simulation().term<wobble::SelfContactTerm>()->contact_count());
   EXPECT_TRUE(f.find("thickness (mm)"));
 
   f.click(*f.find("self-collision"));
-  EXPECT_FALSE(f.viewer.simulation().params().self_collision.on);
-  EXPECT_FALSE(f.viewer.stats().self_collision);
+  EXPECT_FALSE(f.viewer.session().simulation().params().self_collision.on);
+  EXPECT_FALSE(f.viewer.session().stats().self_collision);
 }
 
 // While a batch of steps runs on the stepping thread, the checkbox waits in the panel; the
@@ -49,11 +49,11 @@ TEST(ViewerPanel, TheCheckboxReachesASimulationSteppingOnItsThread) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
   const std::optional<ImVec2> box = f.find("self-collision");
   ASSERT_TRUE(box);
-  f.viewer.step_on_thread([] {});
+  f.viewer.session().step_on_thread([] {});
   ASSERT_TRUE(f.viewer.exchange(0.0, 1.0 / 60.0));  // starts a batch
   f.click(*box);
   f.viewer.finish_steps();
-  EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_TRUE(f.viewer.session().simulation().params().self_collision.on);
 }
 
 // The split view's right side follows the left's environment, self-collision included.
@@ -61,15 +61,15 @@ TEST(ViewerPanel, TheSplitViewsRightSideFollowsTheCheckbox) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("iterations=5");
   PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
-  ASSERT_NE(f.viewer.right_side(), nullptr);
+  ASSERT_NE(f.viewer.session().right_side(), nullptr);
   const std::optional<ImVec2> box = f.find("self-collision");
   ASSERT_TRUE(box);
   f.click(*box);
   f.viewer.advance();
-  EXPECT_TRUE(f.viewer.right_side()->params().self_collision.on);
+  EXPECT_TRUE(f.viewer.session().right_side()->params().self_collision.on);
   f.click(*f.find("self-collision"));
   f.viewer.advance();
-  EXPECT_FALSE(f.viewer.right_side()->params().self_collision.on);
+  EXPECT_FALSE(f.viewer.session().right_side()->params().self_collision.on);
 }
 
 // A course scene reproduces the course's program, as the command line keeps it (--damping and
@@ -77,15 +77,16 @@ TEST(ViewerPanel, TheSplitViewsRightSideFollowsTheCheckbox) {
 // clicking or dragging them changes nothing.
 TEST(ViewerPanel, ACourseSceneKeepsSelfCollisionAndDampingOff) {
   PanelFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
-  ASSERT_EQ(f.viewer.simulation().params().gravity_model, wobble::GravityModel::force_per_vertex);
+  ASSERT_EQ(f.viewer.session().simulation().params().gravity_model,
+            wobble::GravityModel::force_per_vertex);
   const std::optional<ImVec2> box = f.scroll_to("self-collision");
   ASSERT_TRUE(box) << "drawn, greyed out";
   f.click(*box);
-  EXPECT_FALSE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_FALSE(f.viewer.session().simulation().params().self_collision.on);
   const std::optional<ImVec2> damping = f.scroll_to("damping (1/s)");
   ASSERT_TRUE(damping);
   f.drag(*damping, 60.0f);
-  EXPECT_EQ(f.viewer.simulation().params().damping, 0.0);
+  EXPECT_EQ(f.viewer.session().simulation().params().damping, 0.0);
 }
 
 // The same clicks and drags on the cloth turn self-collision on and damp it.
@@ -94,55 +95,55 @@ TEST(ViewerPanel, TheClothTakesSelfCollisionAndDamping) {
   const std::optional<ImVec2> box = f.scroll_to("self-collision");
   ASSERT_TRUE(box);
   f.click(*box);
-  EXPECT_TRUE(f.viewer.simulation().params().self_collision.on);
+  EXPECT_TRUE(f.viewer.session().simulation().params().self_collision.on);
   const std::optional<ImVec2> damping = f.scroll_to("damping (1/s)");
   ASSERT_TRUE(damping);
   f.drag(*damping, 60.0f);
-  EXPECT_GT(f.viewer.simulation().params().damping, 0.0);
+  EXPECT_GT(f.viewer.session().simulation().params().damping, 0.0);
 }
 
 // The solver combo switches the running simulation from the next step on, keeping its state;
 // Chebyshev, which applies to local-global only, is greyed out meanwhile.
 TEST(ViewerPanel, TheSolverComboSwitchesTheSimulationWhileItRuns) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
-  ASSERT_EQ(f.viewer.simulation().params().solver, "local-global");
-  EXPECT_EQ(f.viewer.stats().solver, "local-global");
+  ASSERT_EQ(f.viewer.session().simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().stats().solver, "local-global");
   for (int i = 0; i < 5; ++i)
     f.viewer.advance();
-  const Eigen::MatrixXd before = f.viewer.simulation().positions();
+  const Eigen::MatrixXd before = f.viewer.session().simulation().positions();
   ASSERT_TRUE(f.choose("solver", "L-BFGS"));
-  EXPECT_EQ(f.viewer.simulation().params().solver, "lbfgs");
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 5);
-  EXPECT_EQ(f.viewer.simulation().positions(), before) << "the state is kept";
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "lbfgs");
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 5);
+  EXPECT_EQ(f.viewer.session().simulation().positions(), before) << "the state is kept";
   f.viewer.advance();
-  EXPECT_EQ(f.viewer.stats().solver, "L-BFGS");
+  EXPECT_EQ(f.viewer.session().stats().solver, "L-BFGS");
 
   // Greyed out: a click leaves Chebyshev off.
   const std::optional<ImVec2> chebyshev = f.find("Chebyshev acceleration");
   ASSERT_TRUE(chebyshev);
   f.click(*chebyshev);
-  EXPECT_FALSE(f.viewer.simulation().params().chebyshev);
+  EXPECT_FALSE(f.viewer.session().simulation().params().chebyshev);
   ASSERT_TRUE(f.choose("solver", "local-global"));
-  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "local-global");
   f.click(*f.find("Chebyshev acceleration"));
-  EXPECT_TRUE(f.viewer.simulation().params().chebyshev) << "local-global takes it again";
+  EXPECT_TRUE(f.viewer.session().simulation().params().chebyshev) << "local-global takes it again";
 }
 
 // While a batch runs on the stepping thread, the choice waits; the simulation takes it between
 // batches, as every panel edit.
 TEST(ViewerPanel, TheSolverReachesASimulationSteppingOnItsThread) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
-  f.viewer.step_on_thread([] {});
+  f.viewer.session().step_on_thread([] {});
   ASSERT_TRUE(f.viewer.exchange(0.0, 1.0 / 60.0));  // starts a batch
   ASSERT_TRUE(f.choose("solver", "L-BFGS"));
   f.viewer.finish_steps();
-  EXPECT_EQ(f.viewer.simulation().params().solver, "lbfgs");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "lbfgs");
   // Restore defaults brings back the scene's own.
   const std::optional<ImVec2> restore = f.find("Restore defaults");
   ASSERT_TRUE(restore);
   f.click(*restore);
   f.viewer.finish_steps();
-  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "local-global");
 }
 
 // The compare section's own combo: the right side's solver, the left's unchanged.
@@ -150,17 +151,17 @@ TEST(ViewerPanel, TheRightSolverComboSwitchesTheSplitViewsRightSide) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("solver=lbfgs");
   PanelFixture f(wobble::make_builtin_scene("cloth"), settings);
-  ASSERT_NE(f.viewer.right_side(), nullptr);
-  EXPECT_EQ(f.viewer.right_side()->params().solver, "lbfgs");
+  ASSERT_NE(f.viewer.session().right_side(), nullptr);
+  EXPECT_EQ(f.viewer.session().right_side()->params().solver, "lbfgs");
   f.viewer.advance();
   ASSERT_TRUE(f.choose("solver right", "local-global"));
   f.viewer.advance();
-  EXPECT_EQ(f.viewer.right_side()->params().solver, "local-global");
-  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().right_side()->params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "local-global");
   ASSERT_TRUE(f.choose("solver right", "L-BFGS"));
   f.viewer.advance();
-  EXPECT_EQ(f.viewer.right_side()->params().solver, "lbfgs");
-  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().right_side()->params().solver, "lbfgs");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "local-global");
 }
 
 // A course scene keeps the course's local-global: the combo is there but greyed out.
@@ -168,7 +169,7 @@ TEST(ViewerPanel, ACourseSceneKeepsLocalGlobal) {
   PanelFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
   EXPECT_TRUE(f.find("solver"));
   EXPECT_FALSE(f.choose("solver", "L-BFGS"));
-  EXPECT_EQ(f.viewer.simulation().params().solver, "local-global");
+  EXPECT_EQ(f.viewer.session().simulation().params().solver, "local-global");
 }
 
 // The viewer's own copy of the colours, taken between batches as for strain and speed: the
@@ -185,10 +186,13 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
   wobble::Viewer viewer(std::move(scene), settings, wobble::builtin_scene_names());
   for (int i = 0; i < 40; ++i)
     viewer.advance();
-  const std::vector<char>& flags = wobble::collider_contact_vertices(viewer.simulation().terms());
-  const std::vector<float>& colors = viewer.quantity_colors().vertex_colors();
+  const std::vector<char>& flags =
+      wobble::collider_contact_vertices(viewer.session().simulation().terms());
+  const std::vector<float>& colors = viewer.drawing().quantity_colors().vertex_colors();
   ASSERT_EQ(colors.size(), 3 * flags.size());
-  ASSERT_GT(viewer.simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count(), 0)
+  ASSERT_GT(
+      viewer.session().simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count(),
+      0)
       << "the cloth lies on the sphere";
   int coloured = 0;
   for (std::size_t i = 0; i < flags.size(); ++i) {
@@ -198,8 +202,11 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
     coloured += color == wobble::collider_contact_color();
     EXPECT_EQ(color, expected) << i;
   }
-  EXPECT_EQ(coloured,
-            viewer.simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count());
+  EXPECT_EQ(coloured, viewer.session()
+                          .simulation()
+                          .term<wobble::ColliderContactTerm>()
+                          ->colliders()
+                          .contact_count());
 }
 
 }  // namespace
@@ -213,18 +220,18 @@ TEST(ViewerPanel, ANewDtLeavesTheSimulatedClockWhereItWas) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));
   for (int i = 0; i < 30; ++i)
     f.viewer.advance();
-  const double before = f.viewer.stats().simulated_seconds;
+  const double before = f.viewer.session().stats().simulated_seconds;
   EXPECT_NEAR(before, 30.0 / 60.0, 1e-12);
-  const double dt = f.viewer.simulation().params().dt;
+  const double dt = f.viewer.session().simulation().params().dt;
   const std::optional<ImVec2> slider = f.find("dt (s)");
   ASSERT_TRUE(slider);
   f.drag(*slider, 60.0f);
-  const double new_dt = f.viewer.simulation().params().dt;
+  const double new_dt = f.viewer.session().simulation().params().dt;
   ASSERT_GT(new_dt, 1.5 * dt) << "the drag changed dt";
-  EXPECT_EQ(f.viewer.stats().simulated_seconds, before) << "no step, no time";
+  EXPECT_EQ(f.viewer.session().stats().simulated_seconds, before) << "no step, no time";
   f.viewer.advance();
-  EXPECT_NEAR(f.viewer.stats().simulated_seconds, before + new_dt, 1e-12);
-  EXPECT_EQ(f.viewer.stats().simulated_seconds, f.viewer.simulation().time())
+  EXPECT_NEAR(f.viewer.session().stats().simulated_seconds, before + new_dt, 1e-12);
+  EXPECT_EQ(f.viewer.session().stats().simulated_seconds, f.viewer.session().simulation().time())
       << "the plots' time axis and the stats agree";
 }
 
@@ -249,21 +256,22 @@ double volume_setting(const wobble::Simulation& simulation, const char* name) {
 TEST(ViewerPanel, TheVolumeSwitchTurnsTheTermOffAndOnForAJelly) {
   PanelFixture f(wobble::make_builtin_scene("jelly"));
   f.viewer.advance();
-  ASSERT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  ASSERT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
   const std::optional<ImVec2> box = f.scroll_to("volume term");
   ASSERT_TRUE(box) << "the panel offers the volume term's switch";
   EXPECT_TRUE(f.scroll_to("volume k (Pa)")) << "and its stiffness beside it";
 
   f.click(*f.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 0.0);
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume-stiffness"), 2e4) << "kept as it was";
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume"), 0.0);
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume-stiffness"), 2e4)
+      << "kept as it was";
   f.viewer.advance();
-  EXPECT_FALSE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_FALSE(stepped_with_volume_term(f.viewer.session().simulation()));
 
   f.click(*f.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(f.viewer.simulation(), "volume"), 1.0);
+  EXPECT_EQ(volume_setting(f.viewer.session().simulation(), "volume"), 1.0);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
 }
 
 // The stiffness is dragged by a factor a pixel, as k is, and reaches the simulation.
@@ -272,11 +280,11 @@ TEST(ViewerPanel, TheVolumeStiffnessDragReachesTheSimulation) {
   const std::optional<ImVec2> drag = f.scroll_to("volume k (Pa)");
   ASSERT_TRUE(drag);
   f.drag(*drag, 60.0f);  // 1% a pixel: 1.8 times
-  const double stiffness = volume_setting(f.viewer.simulation(), "volume-stiffness");
+  const double stiffness = volume_setting(f.viewer.session().simulation(), "volume-stiffness");
   EXPECT_GT(stiffness, 1.5 * 2e4);
   EXPECT_LE(stiffness, 1e6);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
 }
 
 // A surface without tetrahedra (the cloth, the course's banner) shows neither, and its settings
@@ -287,11 +295,11 @@ TEST(ViewerPanel, ASurfaceOffersNoVolumeTerm) {
     EXPECT_TRUE(cloth.find("iterations"));
     EXPECT_FALSE(cloth.scroll_to("volume term"));
     EXPECT_FALSE(cloth.find("volume k (Pa)"));
-    EXPECT_EQ(volume_setting(cloth.viewer.simulation(), "volume"), 0.0);
+    EXPECT_EQ(volume_setting(cloth.viewer.session().simulation(), "volume"), 0.0);
   }
   PanelFixture course(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json"));
   EXPECT_FALSE(course.scroll_to("volume term"));
-  EXPECT_EQ(volume_setting(course.viewer.simulation(), "volume"), 0.0);
+  EXPECT_EQ(volume_setting(course.viewer.session().simulation(), "volume"), 0.0);
 }
 
 // Each side of the split view has its own switch: the jelly with the term on the left and
@@ -301,18 +309,18 @@ TEST(ViewerPanel, EachSideOfTheSplitViewHasItsOwnVolumeSwitch) {
   wobble::ViewerSettings settings;
   settings.compare = wobble::parse_compare_settings("volume=off");
   PanelFixture f(wobble::make_builtin_scene("jelly"), settings);
-  ASSERT_NE(f.viewer.right_side(), nullptr);
+  ASSERT_NE(f.viewer.session().right_side(), nullptr);
   f.viewer.advance();
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation()));
-  EXPECT_FALSE(stepped_with_volume_term(*f.viewer.right_side()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation()));
+  EXPECT_FALSE(stepped_with_volume_term(*f.viewer.session().right_side()));
   const std::optional<ImVec2> right = f.scroll_to("volume term right");
   ASSERT_TRUE(right) << "the right side's own switch";
   EXPECT_TRUE(f.scroll_to("volume k (Pa) right"));
   f.click(*right);
   f.viewer.advance();
-  EXPECT_EQ(wobble::setting_value(f.viewer.right_side()->params(), "volume"), 1.0);
-  EXPECT_TRUE(stepped_with_volume_term(*f.viewer.right_side()));
-  EXPECT_TRUE(stepped_with_volume_term(f.viewer.simulation())) << "the left side kept it";
+  EXPECT_EQ(wobble::setting_value(f.viewer.session().right_side()->params(), "volume"), 1.0);
+  EXPECT_TRUE(stepped_with_volume_term(*f.viewer.session().right_side()));
+  EXPECT_TRUE(stepped_with_volume_term(f.viewer.session().simulation())) << "the left side kept it";
 }
 
 }  // namespace

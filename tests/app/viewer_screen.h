@@ -15,8 +15,9 @@ namespace wobble::testing {
 inline Eigen::Vector2f vertex_on_screen(const Viewer& viewer, int i,
                                         const Eigen::Vector2f& window) {
   const Eigen::Matrix4f view_projection =
-      projection_matrix(viewer.camera(), window.x() / window.y()) * view_matrix(viewer.camera());
-  const Eigen::Vector3f p = viewer.simulation().positions().row(i).cast<float>();
+      projection_matrix(viewer.drawing().camera(), window.x() / window.y()) *
+      view_matrix(viewer.drawing().camera());
+  const Eigen::Vector3f p = viewer.session().simulation().positions().row(i).cast<float>();
   return project_to_window(view_projection, p, window)->head<2>();
 }
 

@@ -70,63 +70,68 @@ TEST(ViewerThread, StepsOnTheirThreadGiveTheHeadlessPositionsToTheBit) {
   // them, the frames' clock made up.
   const auto threaded_viewer = cloth(with_a_scripted_drag());
   wobble::Viewer& threaded = *threaded_viewer;
-  threaded.step_on_thread({});
+  threaded.session().step_on_thread({});
   double now = 0.0;
-  for (int frame = 0; threaded.shown_steps() < 40; ++frame) {
+  for (int frame = 0; threaded.session().shown_steps() < 40; ++frame) {
     threaded.exchange(now, frame_seconds);
     now += frame_seconds;
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
     ASSERT_LT(frame, 60000) << "the steps never came";
   }
   threaded.finish_steps();
-  const long steps = threaded.simulation().steps_taken();
+  const long steps = threaded.session().simulation().steps_taken();
   ASSERT_GE(steps, 40);
 
   const auto headless_viewer = cloth(with_a_scripted_drag());
   wobble::Viewer& headless = *headless_viewer;
   for (long i = 0; i < steps; ++i)
     headless.advance();
-  ASSERT_EQ(headless.simulation().steps_taken(), steps);
-  EXPECT_TRUE(threaded.simulation().positions() == headless.simulation().positions())
+  ASSERT_EQ(headless.session().simulation().steps_taken(), steps);
+  EXPECT_TRUE(threaded.session().simulation().positions() ==
+              headless.session().simulation().positions())
       << "largest difference "
-      << (threaded.simulation().positions() - headless.simulation().positions())
+      << (threaded.session().simulation().positions() - headless.session().simulation().positions())
              .cwiseAbs()
              .maxCoeff();
   // The drag did move the cloth, so the comparison means something.
-  EXPECT_GT((headless.simulation().positions() - headless.scene().network.V).norm(), 0.1);
+  EXPECT_GT(
+      (headless.session().simulation().positions() - headless.session().scene().network.V).norm(),
+      0.1);
   // The state drawn is the simulation's.
-  const std::vector<float>& drawn = threaded.drawn_positions();
-  const Eigen::MatrixXd& p = threaded.simulation().positions();
+  const std::vector<float>& drawn = threaded.drawing().drawn_positions();
+  const Eigen::MatrixXd& p = threaded.session().simulation().positions();
   EXPECT_EQ(drawn[3 * 100 + 1], static_cast<float>(p(100, 1)));
 }
 
 TEST(ViewerThread, WithAStepLimitItStopsThere) {
   const auto owner = cloth();
   wobble::Viewer& viewer = *owner;
-  viewer.step_on_thread({});
-  viewer.set_step_limit(7);
+  viewer.session().step_on_thread({});
+  viewer.session().set_step_limit(7);
   double now = 0.0;
-  for (int frame = 0; frame < 60000 && viewer.shown_steps() < 7; ++frame, now += frame_seconds) {
+  for (int frame = 0; frame < 60000 && viewer.session().shown_steps() < 7;
+       ++frame, now += frame_seconds) {
     viewer.exchange(now, frame_seconds);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   for (int frame = 0; frame < 20; ++frame, now += frame_seconds)
     viewer.exchange(now, frame_seconds);
   viewer.finish_steps();
-  EXPECT_EQ(viewer.simulation().steps_taken(), 7);
+  EXPECT_EQ(viewer.session().simulation().steps_taken(), 7);
   // Stopped there, it says so: paused (the page's frames=N froze the cloth mid-swing while the
   // button still said Pause), and Play goes on.
-  EXPECT_TRUE(viewer.paused());
+  EXPECT_TRUE(viewer.panel().paused());
   wobble::InputEvent space;
   space.type = wobble::InputEvent::Type::key_press;
   space.code = GLFW_KEY_SPACE;
   viewer.handle_events({space}, false, false, window);
-  for (int frame = 0; frame < 60000 && viewer.shown_steps() < 10; ++frame, now += frame_seconds) {
+  for (int frame = 0; frame < 60000 && viewer.session().shown_steps() < 10;
+       ++frame, now += frame_seconds) {
     viewer.exchange(now, frame_seconds);
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
   viewer.finish_steps();
-  EXPECT_GE(viewer.simulation().steps_taken(), 10);
+  EXPECT_GE(viewer.session().simulation().steps_taken(), 10);
 }
 
 // While a batch is out, a reset and a Ctrl+click wait for it, then happen in the order done:
@@ -136,31 +141,31 @@ TEST(ViewerThread, ChangesDuringABatchWaitAndKeepTheirOrder) {
     SCOPED_TRACE(reset_first ? "R, then Ctrl+click" : "Ctrl+click, then R");
     const auto owner = cloth();
     wobble::Viewer& viewer = *owner;
-    viewer.step_on_thread({});
+    viewer.session().step_on_thread({});
     const int vertex = 40 * 20 + 20;  // the middle of the cloth, free
     const Eigen::Vector2f at = on_screen(viewer, vertex);
-    const int pins = viewer.stats().pins;
+    const int pins = viewer.session().stats().pins;
     ASSERT_TRUE(viewer.exchange(0.0, frame_seconds));  // a batch starts
     if (reset_first) press_key(viewer, GLFW_KEY_R);
     control_click(viewer, at);
     if (!reset_first) press_key(viewer, GLFW_KEY_R);
     // Until the batch is taken, the panel shows the state it started from.
-    EXPECT_EQ(viewer.stats().pins, pins);
-    EXPECT_EQ(viewer.stats().steps, 0);
+    EXPECT_EQ(viewer.session().stats().pins, pins);
+    EXPECT_EQ(viewer.session().stats().steps, 0);
     viewer.finish_steps();
-    EXPECT_EQ(viewer.simulation().steps_taken(), 0) << "the reset came after the step";
-    EXPECT_EQ(viewer.simulation().is_pinned(vertex), reset_first);
-    EXPECT_EQ(viewer.stats().pins, reset_first ? pins + 1 : pins);
+    EXPECT_EQ(viewer.session().simulation().steps_taken(), 0) << "the reset came after the step";
+    EXPECT_EQ(viewer.session().simulation().is_pinned(vertex), reset_first);
+    EXPECT_EQ(viewer.session().stats().pins, reset_first ? pins + 1 : pins);
   }
 }
 
 TEST(ViewerThread, ADragDuringBatchesMovesThePinOnceTheyFinish) {
   const auto owner = cloth();
   wobble::Viewer& viewer = *owner;
-  viewer.step_on_thread({});
-  const int corner = viewer.scene().pins[0];
+  viewer.session().step_on_thread({});
+  const int corner = viewer.session().scene().pins[0];
   const Eigen::Vector2f at = on_screen(viewer, corner);
-  const Eigen::Vector3d start = viewer.simulation().positions().row(corner);
+  const Eigen::Vector3d start = viewer.session().simulation().positions().row(corner);
   double now = 0.0;
   viewer.exchange(now, frame_seconds);
   InputEvent event;
@@ -184,8 +189,8 @@ TEST(ViewerThread, ADragDuringBatchesMovesThePinOnceTheyFinish) {
   event.type = InputEvent::Type::button_release;
   viewer.handle_events({event}, false, false, window);
   viewer.finish_steps();
-  EXPECT_TRUE(viewer.simulation().is_pinned(corner));
-  const Eigen::Vector3d target = viewer.simulation().pin_target(corner);
+  EXPECT_TRUE(viewer.session().simulation().is_pinned(corner));
+  const Eigen::Vector3d target = viewer.session().simulation().pin_target(corner);
   EXPECT_GT((target - start).norm(), 0.3) << "the last move reached the simulation";
   // The next step takes the corner there: where the cursor let go.
   viewer.advance();

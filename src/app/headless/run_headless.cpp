@@ -83,14 +83,15 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   const ObjSequence obj_sequence(command.export_obj_sequence);
   Viewer viewer = open_viewer(command);
   InstrumentCsv instruments(command.convergence_csv, command.energy_csv, frames,
-                            viewer.simulation().params().iterations);
-  viewer.set_convergence_required(instruments.wants_convergence());
-  instruments.start(viewer.simulation());
-  print_notes(viewer.scene(), progress);  // the scene, its texture and the simulation loaded
+                            viewer.session().simulation().params().iterations);
+  viewer.session().set_convergence_required(instruments.wants_convergence());
+  instruments.start(viewer.session().simulation());
+  print_notes(viewer.session().scene(),
+              progress);  // the scene, its texture and the simulation loaded
   // Each step's files and rows, as the window writes them.
   StepOutputs step_outputs(obj_sequence, instruments, command.stats);
   step_outputs.reserve(frames);
-  viewer.set_step_observer(
+  viewer.session().set_step_observer(
       [&](const Simulation& simulation) { step_outputs.after_step(simulation); });
 
   OffscreenOptions options;
@@ -109,14 +110,14 @@ int render_headless(const CommandLine& command, std::ostream& out, std::ostream&
   }
   instruments.write();
 
-  const Simulation& simulation = viewer.simulation();
+  const Simulation& simulation = viewer.session().simulation();
   if (!command.export_obj.empty()) {
-    write_obj(command.export_obj, simulation.positions(), viewer.scene().network.F,
-              viewer.scene().network.E);
+    write_obj(command.export_obj, simulation.positions(), viewer.session().scene().network.F,
+              viewer.session().scene().network.E);
   }
   if (command.stats) {
     nlohmann::ordered_json stats =
-        run_statistics(simulation, viewer.scene(), frames, step_outputs.times());
+        run_statistics(simulation, viewer.session().scene(), frames, step_outputs.times());
     stats["render_ms_median"] = median(report.render_ms);
     stats["width"] = command.width;
     stats["height"] = command.height;

@@ -12,8 +12,8 @@ class Simulation;
 // What a run writes of each accepted step, the same way in every mode: the OBJ of its positions
 // (--export-obj-sequence), its rows of the convergence and energy CSVs, and its timing for
 // --stats. It observes the simulation's steps: the window and headless images attach after_step
-// to the viewer's (Viewer::set_step_observer, on whichever thread steps), a headless run without
-// images calls it after each step. Each step is numbered by Simulation::steps_taken.
+// to the viewer's (ViewerSession::set_step_observer, on whichever thread steps), a headless run
+// without images calls it after each step. Each step is numbered by Simulation::steps_taken.
 class StepOutputs {
  public:
   // Both must outlive it; `stats`: keep each step's timing.

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "app/viewer/viewer.h"
 #include "render/offscreen_target.h"
@@ -58,58 +60,86 @@ void sharpen_glyphs(ImFontAtlas& atlas) {
 
 }  // namespace
 
-FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale) {
+FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters,
+                       const FramePolicy& policy, float ui_scale) {
   FrameResult result;
   // 1. poll
-  const std::vector<InputEvent> events = host.poll(viewer, meters);
+  const PolledInput input = host.poll(viewer, meters);
   result.start = host.now();
   meters.start_frame(result.start);
-  viewer.open_files(host.take_dropped_paths());  // a scene with its mesh, or a mesh
-  int width = 0, height = 0;
-  Eigen::Vector2f window = Eigen::Vector2f::Zero();
-  host.sizes(width, height, window);
-  result.drawn = width > 0 && height > 0;  // a minimized window has no pixels
+  viewer.files().open_files(input.dropped_paths);  // a scene with its mesh, or a mesh
+  const FrameSizes sizes = host.sizes();
+  result.drawn = sizes.width > 0 && sizes.height > 0;  // a minimized window has no pixels
   // 2. new frame
-  const bool imgui = host.uses_imgui();
+  const bool imgui = policy.ui != FramePolicy::Ui::none;
   if (imgui) {
-    host.new_platform_frame();
+    host.begin_frame();
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
-    viewer.handle_events(events, io.WantCaptureMouse, io.WantCaptureKeyboard, window);
+    viewer.handle_events(input.events, io.WantCaptureMouse, io.WantCaptureKeyboard, sizes.window);
     // 3. UI
-    host.before_panel();
-    if (host.builds_panel()) {
-      viewer.build_ui(host.timings(meters), ui_scale);
+    if (policy.ui == FramePolicy::Ui::panel) {
+      PanelStats timings = policy.wall_clock_figures ? meters.timings() : PanelStats();
+      timings.show_timings = policy.wall_clock_figures;
+      viewer.build_ui(timings, ui_scale);
     } else {
-      viewer.draw_overlays(ui_scale);
+      viewer.build_ui(PanelStats(), ui_scale, /*whole_panel=*/false);
     }
   } else {
-    viewer.handle_events(events, false, false, window);
+    viewer.handle_events(input.events, false, false, sizes.window);
   }
   // 4. simulation
-  result.new_state = host.advance(viewer, result.start);
+  if (policy.one_step_a_frame) {
+    viewer.advance();
+    result.new_state = true;
+  } else {
+    result.new_state = viewer.exchange(result.start, policy.frame_seconds);
+  }
+  if (policy.stop_on_failed_step && !viewer.session().step_warning().empty()) {
+    // The frames and rows so far stay written; nothing else is.
+    throw std::runtime_error("frame " + std::to_string(meters.frames) + ": " +
+                             viewer.session().step_warning());
+  }
   if (result.new_state) {
-    const PanelStats shown = viewer.stats();
+    const PanelStats shown = viewer.session().stats();
     meters.real_time.record(result.start, shown.simulated_seconds, shown.steps);
   }
-  // 5. legend, title, render
-  if (imgui) viewer.build_legend(ui_scale);
-  host.set_title("Wobble: " + viewer.scene().name);
-  if (imgui) ImGui::Render();
+  // 5. legend, render
+  if (imgui) {
+    viewer.build_legend(ui_scale);
+    ImGui::Render();
+  }
+  const bool wanted = policy.output != nullptr && policy.output->wants(viewer);
+  const auto read = [&host](RgbaImage& image) { host.read_picture(image); };
   if (result.drawn) {
-    const bool draw = host.bind_target();
-    const float pixel_ratio = window.x() > 0.0f ? width / window.x() : 1.0f;
-    viewer.render(width, height, window, pixel_ratio, host.mark_scale(pixel_ratio), draw);
+    const bool draw = policy.draw_unwanted || wanted;
+    if (draw) host.bind_target();
+    const float pixel_ratio = sizes.window.x() > 0.0f ? sizes.width / sizes.window.x() : 1.0f;
+    viewer.render(sizes.width, sizes.height, sizes.window, pixel_ratio,
+                  sizes.mark_scale.value_or(pixel_ratio), draw);
     if (imgui && draw) {
       // A recording of the scene alone takes it before the panel goes over it.
-      viewer.scene_drawn([width, height] { return read_shown_frame(width, height); });
+      viewer.files().scene_drawn([&host] {
+        RgbaImage image;
+        host.read_picture(image);
+        return image;
+      });
       // The current ImGui context's renderer (ImGuiSession's), as ImGui's own backends keep it.
       if (auto* renderer = static_cast<PanelRenderer*>(ImGui::GetIO().BackendRendererUserData))
         renderer->draw(*ImGui::GetDrawData());
     }
   }
-  // 6. present
-  host.present(viewer, result.drawn);
+  // 6. outputs, present
+  // F12 and the panel's PNG and record toggle (F9), from what is shown, panel included.
+  const ViewerSession& session = viewer.session();
+  viewer.files().write_frame(session.scene().name, session.shown_steps(), session.shown_time(),
+                             result.drawn, [&host] {
+                               RgbaImage image;
+                               host.read_picture(image);
+                               return image;
+                             });
+  if (wanted && result.drawn) policy.output->take(viewer, read);
+  host.present("Wobble: " + session.scene().name);
   meters.end_frame(result.start, host.now());
   return result;
 }

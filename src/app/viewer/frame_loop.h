@@ -2,7 +2,9 @@
 #define WOBBLE_APP_VIEWER_FRAME_LOOP_H
 
 #include <Eigen/Core>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,54 +19,87 @@ namespace wobble {
 class PanelRenderer;
 class Viewer;
 
-// What differs between the window (app/viewer/run_window.cpp), the page (app/web/run_browser.cpp)
-// and headless (app/headless/render_offscreen.cpp): where input comes from, the clock, how the
-// simulation moves on in a frame, where the picture is drawn and where it goes. The frame's
-// order is draw_frame's alone, the same for all three (MuJoCo's simulate over its platform
-// adapter, Polyscope's engine over GLFW or EGL).
+// What one poll brought: the input since the last frame and the files dropped on the window or
+// the page.
+struct PolledInput {
+  std::vector<InputEvent> events;
+  std::vector<std::string> dropped_paths;
+};
+
+// The picture's size in pixels, the window's in the units of the mouse events, and the
+// picture's pixels per pixel of a mark's size (pin dots, the held vertex): the pixel ratio where
+// window units are the screen's points; the page, whose window units are device pixels, gives
+// its device pixel ratio so that marks keep their CSS size (unset: the pixel ratio).
+struct FrameSizes {
+  int width = 0, height = 0;
+  Eigen::Vector2f window = Eigen::Vector2f::Zero();
+  std::optional<float> mark_scale;
+};
+
+// The platform under draw_frame, and only that: where input comes from, the clock, the sizes,
+// ImGui's platform part, the target drawn into, reading it back and showing it. The window
+// (app/window/run_window.cpp), the page (app/web/run_browser.cpp) and headless
+// (app/headless/render_offscreen.cpp) each are one (MuJoCo's simulate over its platform
+// adapter, Polyscope's engine over GLFW or EGL). How the simulation moves on and what a run
+// keeps of its pictures are the loop's (FramePolicy), never a host's.
 class FrameHost {
  public:
   virtual ~FrameHost() = default;
   // 1. The input since the last frame, after waiting as the host waits (the window waits while
   // nothing changes; the page and headless never wait).
-  virtual std::vector<InputEvent> poll(const Viewer& viewer, const FrameMeters& meters) = 0;
-  // Files dropped on the window or the page since the last poll.
-  virtual std::vector<std::string> take_dropped_paths() { return {}; }
+  virtual PolledInput poll(const Viewer& viewer, const FrameMeters& meters) = 0;
   // The loop's clock (s).
   virtual double now() const = 0;
-  // The picture's size in pixels and the window's in points (the page and headless: the same).
-  virtual void sizes(int& width, int& height, Eigen::Vector2f& window) = 0;
-  // The picture's pixels per pixel of a mark's size (pin dots, the held vertex): `pixel_ratio`
-  // (the picture's pixels per window point) where points are the screen's own; the page, whose
-  // window units are device pixels, gives its device pixel ratio, so marks keep their CSS size.
-  virtual float mark_scale(float pixel_ratio) const { return pixel_ratio; }
-  // Whether ImGui runs this frame (headless: only when the panel, the split view's labels or a
-  // legend show), and whether the whole panel is built or only the overlays (headless --ui).
-  virtual bool uses_imgui() const { return true; }
-  virtual bool builds_panel() const { return true; }
-  // 2. The platform backend's part of ImGui's new frame (GLFW's: display size, mouse, keys).
-  virtual void new_platform_frame() {}
-  // Just before the panel is built, after ImGui's new frame (the page folds the panel on a
-  // phone's first frame).
-  virtual void before_panel() {}
-  // The panel's figures from the wall clock (headless shows none, to keep the pixels the same).
-  virtual PanelStats timings(const FrameMeters& meters) const { return meters.timings(); }
-  // 4. The simulation's part of the frame: hand the UI's changes over and take the latest state
-  // (a batch on the stepping thread in the window, steps on this thread in the page), or take
-  // exactly one step (headless). Returns whether a new state is shown.
-  virtual bool advance(Viewer& viewer, double now) = 0;
-  // The window's title, whenever the scene on show changes.
-  virtual void set_title(const std::string& /*title*/) {}
-  // 5. Where the frame is drawn: the default framebuffer, or an offscreen target. Returns whether
-  // the frame is drawn at all: headless, a frame whose picture no output reads is laid out (the
-  // camera's framing, the panel) but not drawn, which is most of a headless run's time.
-  virtual bool bind_target() = 0;
-  // 6. The picture drawn: read back what is wanted (files, images), then show it (swap) or not.
-  virtual void present(Viewer& viewer, bool drawn) = 0;
+  virtual FrameSizes sizes() = 0;
+  // 2. The platform's part of a new frame (GLFW's for ImGui: display size, mouse, keys), before
+  // ImGui's new frame.
+  virtual void begin_frame() = 0;
+  // 5. Bind the target the frame is drawn into: the default framebuffer, or an offscreen one.
+  virtual void bind_target() = 0;
+  // The picture just drawn, read back into `image` (resized, its buffer kept).
+  virtual void read_picture(RgbaImage& image) = 0;
+  // 6. Show the frame (swap), or nothing where the browser shows it; `title` names the scene on
+  // show (the window's title).
+  virtual void present(const std::string& title) = 0;
+};
+
+// What a run keeps of its pictures (--record, --screenshot, the headless images), handed to the
+// loop by the run. The viewer's own files (F12, the panel's PNG and record toggle) the loop
+// writes itself.
+class PictureOutput {
+ public:
+  virtual ~PictureOutput() = default;
+  // Whether this frame's picture is read back, once the simulation moved on (step 4).
+  virtual bool wants(const Viewer& viewer) = 0;
+  // The frame's picture, drawn and wanted; `read` reads it back into an image.
+  virtual void take(const Viewer& viewer, const std::function<void(RgbaImage& image)>& read) = 0;
+};
+
+// How the loop runs for a mode: what ImGui draws, how the simulation moves on, when a run stops.
+struct FramePolicy {
+  // The whole panel; only what ImGui draws over the scene (the split view's labels, the legend,
+  // the plots: headless images without --ui); or no ImGui at all.
+  enum class Ui { panel, overlays, none } ui = Ui::panel;
+  // The panel's figures from the wall clock (fps, the real-time factor). Headless shows none, so
+  // that its pixels never depend on the clock.
+  bool wall_clock_figures = true;
+  // Batches of steps beside the UI (Viewer::exchange: the window's stepping thread, the page's
+  // one thread), or exactly one step a frame (Viewer::advance: headless).
+  bool one_step_a_frame = false;
+  // A step the simulation rolled back ends the run (headless, and the window's --frames), with
+  // the frame and the reason: runtime_error.
+  bool stop_on_failed_step = false;
+  // Draw every frame (a window or page someone looks at), or only the frames `output` wants,
+  // laying the others out as if drawn (the camera's framing, the panel), so that the pictures
+  // drawn are the same pixels: most of a headless run's time.
+  bool draw_unwanted = true;
+  PictureOutput* output = nullptr;  // not owned; none: nothing is kept
+  // Seconds a frame of the window or page is given (the real-time mode's batch fits in it).
+  double frame_seconds = 1.0 / 60.0;
 };
 
 // The picture just drawn into the default framebuffer, read back before it is shown (the window's
-// swap, the page's return to the browser): what the window and the page write their PNGs from.
+// swap, the page's return to the browser): what the window and the page read their pictures from.
 // `image` is resized to width by height pixels, its buffer kept.
 void read_shown_frame(int width, int height, RgbaImage& image);
 RgbaImage read_shown_frame(int width, int height);
@@ -78,13 +113,16 @@ struct FrameResult {
 
 // One frame, in this order:
 //   1. poll            the host's input; dropped files open as the picker's scenes do
-//   2. new frame       ImGui's (the platform's part from the host); the input to the viewer
+//   2. new frame       the host's platform part, ImGui's; the input to the viewer
 //   3. UI              the panel (or only the overlays)
-//   4. simulation      the host's advance; the real-time meter
-//   5. legend, render  the colour legend, the title, the scene, then ImGui over it
-//   6. present         the host reads back and shows the picture
+//   4. simulation      a batch exchanged or one step (the policy); a failed step may stop the
+//                      run; the real-time meter
+//   5. legend, render  the colour legend, the scene, then ImGui over it
+//   6. outputs,        the viewer's files (F12, record) and the run's pictures, read back from
+//      present         the host; then the host shows the picture
 // `ui_scale` multiplies the panel's own UI scale (the screen's content scale).
-FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters, float ui_scale);
+FrameResult draw_frame(Viewer& viewer, FrameHost& host, FrameMeters& meters,
+                       const FramePolicy& policy, float ui_scale);
 
 // ImGui for the life of a loop, set up the one way every host needs it: no imgui.ini left
 // anywhere, fonts and sizes scaled by `scale`, Wobble's own renderer (render/panel_renderer.h,

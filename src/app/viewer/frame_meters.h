@@ -15,9 +15,11 @@ struct FrameMeters {
   MovingMedian frame_ms;     // from one frame's start to the next (ms)
   MovingMedian ui_work_ms;   // a frame's own work, poll to the picture drawn (ms)
   double last_frame = -1.0;  // when the last frame started (s); < 0 before the first
+  long frames = 0;           // the frames started, the one drawing included
 
   // A frame starts at `now` (s, on the loop's clock).
   void start_frame(double now) {
+    ++frames;
     if (last_frame >= 0.0) frame_ms.add(static_cast<float>(1e3 * (now - last_frame)));
     last_frame = now;
   }

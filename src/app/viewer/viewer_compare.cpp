@@ -4,9 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cstdio>
 
-#include "app/cli/solver_choice.h"
 #include "app/viewer/quantity_colors.h"
 #include "app/viewer/viewer.h"
 #include "ui/color_legend.h"
@@ -15,94 +13,55 @@
 namespace wobble {
 
 void Viewer::start_split(const CompareSettings& settings) {
-  right_.start_compare(scene_, host_.simulation(), settings);
+  session_.right().start_compare(scene_, host_.simulation(), settings);
   // A shape framed beside the panel (or by the scene's own camera, made for the whole window)
   // would sit off centre in both halves: each half frames it in its middle, from the same
   // direction.
-  view_camera_.centre();
-  view_camera_.frame_next();
-  twin_positions_.resize(positions_.size());
-  twin_normals_.resize(normals_.size());
-  arrays_stale_ = true;  // the right side's arrays fill at the next refresh or render
+  drawing_.view_camera().centre();
+  drawing_.view_camera().frame_next();
+  drawing_.add_right_side();
+  drawing_.mark_stale();  // the right side's arrays fill at the next refresh or render
 }
 
 void Viewer::start_student() {
-  right_.start_student(scene_, host_.simulation());
-  twin_positions_.resize(positions_.size());
-  twin_normals_.resize(normals_.size());
+  session_.right().start_student(scene_, host_.simulation());
+  drawing_.add_right_side();
 }
 
 void Viewer::stop_split() {
-  right_.stop();
-  view_camera_.frame_next();  // the whole window again, beside the panel
-  right_.ask_split(false);
+  session_.right().stop();
+  drawing_.view_camera().frame_next();  // the whole window again, beside the panel
+  session_.right().ask_split(false);
 }
 
 void Viewer::apply_split_settings() {
-  if (right_.student()) {  // the student's side stays, with the seed's settings
-    right_.ask_split(true);
+  RightSide& right = session_.right();
+  if (right.student()) {  // the student's side stays, with the seed's settings
+    right.ask_split(true);
     return;
   }
-  if (right_.split_asked() && !right_.simulation()) {
+  if (right.split_asked() && !right.simulation()) {
     start_split(default_compare_settings(host_.simulation().params()));
   }
-  if (!right_.split_asked() && right_.simulation()) stop_split();
-  if (right_.simulation()) right_.apply();
+  if (!right.split_asked() && right.simulation()) stop_split();
+  if (right.simulation()) right.apply();
 }
 
 void Viewer::draw_overlays(float ui_scale) {
-  show_instruments(ui_scale);
-  if (!right_.simulation()) return;
+  // The plots' column keeps clear of the panel where it can (a projector's UI scale).
+  const PanelPlace place = panel_state_.place();
+  const float panel_right = place.shown ? place.x + place.width : 0.0f;
+  drawing_.set_plots_left(session_.plots().draw(ui_scale, panel_right));
+  if (!host_.batch_started()) session_.update_recording();
+  if (!split()) return;
   SideLabels labels;
-  labels.left = shown_left_label_;
-  labels.right = shown_right_label_;
-  labels.right_warning = shown_twin_warning_;
-  const SplitArea area = split_area(ImGui::GetIO().DisplaySize.x);
+  labels.left = session_.left_label();
+  labels.right = session_.right_label();
+  labels.right_warning = session_.right_side_warning();
+  const DrawState::SplitArea area = drawing_.split_area(ImGui::GetIO().DisplaySize.x, place);
   labels.area_left = area.left;
   labels.half = area.half;
   draw_side_labels(labels, ui_scale);
-}
-
-Viewer::SplitArea Viewer::split_area(float window) const {
-  float left = panel_place_.shown ? panel_place_.x + panel_place_.width : 0.0f;
-  float right = instruments_left_ >= 0.0f ? std::min(window, instruments_left_) : window;
-  // Two halves narrower than a sixth of the window each show too little: then the whole
-  // window, the panel and plots over it as before.
-  if (right - left < window / 3.0f) {
-    left = 0.0f;
-    right = window;
-  }
-  return SplitArea{left, 0.5f * (right - left)};
-}
-
-void Viewer::describe_sides() {
-  shown_left_label_.clear();
-  shown_right_label_.clear();
-  const Simulation* right_side = right_.simulation();
-  const SimulationParams& left = host_.simulation().params();
-  PlottedSides sides;
-  sides.split = right_side && !right_.student();
-  sides.left_solver = solver_label(left.solver, left.chebyshev);
-  if (sides.split) {
-    sides.right_solver = solver_label(right_side->params().solver, right_side->params().chebyshev);
-  }
-  instruments_.set_sides(sides);
-  if (!right_side) return;
-  // The corners name the solvers once they differ or are not the default; two local-global
-  // sides read as before, plain or Chebyshev.
-  const std::string& right_solver = right_side->params().solver;
-  const bool name_solver = left.solver != right_solver || left.solver != solver_names().front();
-  shown_left_label_ = describe_side(left, name_solver);
-  shown_right_label_ = describe_side(right_side->params(), name_solver);
-  if (!right_.student()) return;
-  const SimulationParams& params = right_side->params();
-  char right[200];
-  std::snprintf(right, sizeof(right),
-                "the student's fast_mass_springs_step_sparse\ndt %.3g ms, k %g N/m\n"
-                "largest distance from Wobble's: %.2g m",
-                1000.0 * params.dt, params.k, right_.student_distance());
-  shown_left_label_ = "Wobble's step (reference)\n" + shown_left_label_;
-  shown_right_label_ = right;
 }
 
 void Viewer::draw_student_legend(float ui_scale) {
@@ -115,12 +74,12 @@ void Viewer::draw_student_legend(float ui_scale) {
   }
   legend.title = "right: distance from Wobble's step (m)";
   legend.low = "0";
-  legend.high =
-      two_significant_digits(static_cast<float>(std::max(shown_student_distance_, distance_floor)));
-  legend.note = shown_student_distance_ <= distance_floor ? "the same as Wobble's (within 1e-6 m)"
-                                                          : "largest distance this step";
+  const double distance = session_.student_distance();
+  legend.high = two_significant_digits(static_cast<float>(std::max(distance, distance_floor)));
+  legend.note = distance <= distance_floor ? "the same as Wobble's (within 1e-6 m)"
+                                           : "largest distance this step";
   LegendClearance clearance;
-  clearance.instrument_column_left = instruments_left_;
+  clearance.instrument_column_left = drawing_.plots_left();
   clearance.side_labels = true;
   draw_color_legend(legend, ui_scale, clearance);
 }

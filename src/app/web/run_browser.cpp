@@ -67,16 +67,18 @@ void follow_page_size(GlfwWindow& window, float ratio) {
   }
 }
 
-// The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, steps on this
-// thread, and the canvas the browser shows once the frame returns.
+// The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, and the canvas
+// the browser shows once the frame returns (after the page's figures for its tests are set).
 class PageHost : public FrameHost {
  public:
   PageHost(GlfwWindow& window, ImGuiSession& ui) : window_(window), ui_(ui) {}
-  std::vector<InputEvent> poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
+  PolledInput poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
     // The pixel ratio changes with the browser's zoom, or a window moved to another screen.
     ui_.rescale(page_pixel_ratio());
     follow_page_size(window_, ui_.scale());
-    std::vector<InputEvent> events = window_.poll_events();
+    PolledInput input;
+    std::vector<InputEvent>& events = input.events;
+    events = window_.poll_events();
     scroll_under_finger();
     // The wheel, read by on_wheel from the browser's own event, in notches: to the camera and
     // to ImGui's panel (before its new frame) alike.
@@ -95,7 +97,8 @@ class PageHost : public FrameHost {
       events.push_back(event);
       pinch_notches_ = 0.0;
     }
-    return events;
+    input.dropped_paths = take_dropped_paths();
+    return input;
   }
   void wheel(double notches) {
     if (notches != 0.0) wheel_.push_back(notches);
@@ -111,7 +114,7 @@ class PageHost : public FrameHost {
   }
   // The files dropped onto the page or chosen with "Open file..." (index.html writes them into
   // the page's file system), and any emscripten's GLFW took.
-  std::vector<std::string> take_dropped_paths() override {
+  std::vector<std::string> take_dropped_paths() {
     std::vector<std::string> paths = window_.take_dropped_paths();
     const std::string opened = emscripten_run_script_string(
         "typeof Module.wobbleTakeOpened == 'function' ? Module.wobbleTakeOpened() : ''");
@@ -125,47 +128,35 @@ class PageHost : public FrameHost {
     return paths;
   }
   float scale() const { return ui_.scale(); }
-  // The window's units are device pixels here: marks are scaled by the device pixel ratio.
-  float mark_scale(float /*pixel_ratio*/) const override { return ui_.scale(); }
   double now() const override { return seconds_now(); }
-  void sizes(int& width, int& height, Eigen::Vector2f& window) override {
-    window_.window_size(width, height);
-    window = Eigen::Vector2f(static_cast<float>(width), static_cast<float>(height));
-    width_ = width;
-    height_ = height;
+  FrameSizes sizes() override {
+    window_.window_size(width_, height_);
+    FrameSizes sizes;
+    sizes.width = width_;
+    sizes.height = height_;
+    sizes.window = Eigen::Vector2f(static_cast<float>(width_), static_cast<float>(height_));
+    // The window's units are device pixels here: marks are scaled by the device pixel ratio.
+    sizes.mark_scale = ui_.scale();
+    return sizes;
   }
-  void new_platform_frame() override { ImGuiSession::new_glfw_frame(); }
-  void before_panel() override {
-    // A phone's screen is narrower than the panel: it opens folded (its title bar; a tap opens
-    // it), so that the scene shows. The panel is the first window build_ui begins.
-    if (frames_drawn_ == 0 && width_ < 600 * scale())
-      ImGui::SetNextWindowCollapsed(true, ImGuiCond_Once);
-  }
-  bool advance(Viewer& viewer, double now) override {
-    constexpr double frame_seconds = 1.0 / 60.0;
-    return viewer.exchange(now, frame_seconds);
-  }
-  void set_title(const std::string& title) override {
+  void begin_frame() override { ImGuiSession::new_glfw_frame(); }
+  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
+  // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
+  // its back buffer; the file is then offered as a download (offer_download).
+  void read_picture(RgbaImage& image) override { read_shown_frame(width_, height_, image); }
+  void present(const std::string& title) override {
     if (title != title_) window_.set_title(title_ = title);
   }
-  bool bind_target() override {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    return true;
-  }
-  void present(Viewer& viewer, bool drawn) override {
-    // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
-    // its back buffer; the file is then offered as a download (offer_download).
-    const int width = width_, height = height_;
-    viewer.write_window_files(drawn, [width, height] { return read_shown_frame(width, height); });
-    // For the page and its tests (tests/web/page_check.py): frames drawn, and the steps they
-    // show.
+  // For the page and its tests (tests/web/page_check.py), once a frame is drawn: frames drawn,
+  // the steps they show, the camera, the scene, the notices and the panel.
+  void report(Viewer& viewer) {
     ++frames_drawn_;
     EM_ASM(
         {
           Module.wobbleFrames = $0;
           Module.wobbleSteps = $1;
         },
-        frames_drawn_, static_cast<double>(viewer.shown_steps()));
+        frames_drawn_, static_cast<double>(viewer.session().shown_steps()));
     EM_ASM(
         {
           Module.wobbleCameraDistance = $0;
@@ -174,15 +165,16 @@ class PageHost : public FrameHost {
           Module.wobbleScene = UTF8ToString($3);
           Module.wobblePanelOpen = $4;
         },
-        static_cast<double>(viewer.camera().distance), static_cast<double>(viewer.camera().yaw),
-        static_cast<double>(scale()), viewer.scene().name.c_str(), viewer.panel_open() ? 1 : 0);
+        static_cast<double>(viewer.drawing().camera().distance),
+        static_cast<double>(viewer.drawing().camera().yaw), static_cast<double>(scale()),
+        viewer.session().scene().name.c_str(), viewer.panel().open() ? 1 : 0);
     // The notices on screen, one a line, as the user reads them over the view.
     std::string shown;
-    for (const std::string& notice : viewer.notices().shown(notice_clock()))
+    for (const std::string& notice : viewer.files().notices().shown(notice_clock()))
       shown += (shown.empty() ? "" : "\n") + notice;
     EM_ASM({ Module.wobbleNotices = UTF8ToString($0); }, shown.c_str());
     // Where the open panel is, in CSS pixels, for index.html's fingers (null while folded).
-    const PanelPlace place = viewer.panel_open() ? viewer.panel_place() : PanelPlace();
+    const PanelPlace place = viewer.panel().open() ? viewer.panel().place() : PanelPlace();
     EM_ASM(
         {
           Module.wobblePanelRect = $0 ? Array($1, $2, $3, $4) : null;
@@ -288,10 +280,10 @@ void run_bench(BrowserApp& app) {
       },
       json.str().c_str());
   std::ostringstream told;
-  told << "bench: a step of " << app.viewer.scene().name << " takes " << std::fixed
+  told << "bench: a step of " << app.viewer.session().scene().name << " takes " << std::fixed
        << std::setprecision(2) << median_ms << " ms (the median of "
        << app.command.frames.value_or(60) << " steps, one thread)";
-  app.viewer.tell(told.str());
+  app.viewer.files().tell(told.str());
   std::cerr << "wobble: " << told.str() << "\n";
 }
 
@@ -303,7 +295,8 @@ void frame_or_report(void* app_pointer) {
       app.bench = false;
       run_bench(app);
     }
-    draw_frame(app.viewer, *app.host, app.meters, app.host->scale());
+    draw_frame(app.viewer, *app.host, app.meters, FramePolicy(), app.host->scale());
+    app.host->report(app.viewer);
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << error.what() << "\n";
   }
@@ -312,26 +305,26 @@ void frame_or_report(void* app_pointer) {
 // "Copy link": an address that opens the scene with its settings as they are now, relative to
 // the scene's own (as the catalogue opens it), told on the page and put on the clipboard.
 void copy_link(BrowserApp& app) {
-  const std::string name = app.viewer.scene().name;
-  const std::string& source = app.viewer.scene_source();
+  const std::string name = app.viewer.session().scene().name;
+  const std::string& source = app.viewer.session().scene_source();
   const std::vector<std::string> catalog = scene_catalog();
   if (std::find(catalog.begin(), catalog.end(), source) == catalog.end()) {
-    app.viewer.tell("Copy link: " + name +
-                    " came from a file on this computer, which an address cannot open; "
-                    "Save scene gives the file to share");
+    app.viewer.files().tell("Copy link: " + name +
+                            " came from a file on this computer, which an address cannot open; "
+                            "Save scene gives the file to share");
     return;
   }
   const SimulationParams opened = load_scene(source).params;
-  const SimulationParams& current = app.viewer.simulation().params();
+  const SimulationParams& current = app.viewer.session().simulation().params();
   PageView view;
-  view.color_by = app.viewer.color_by();
-  const ViewLayers layers = app.viewer.layers();
+  view.color_by = app.viewer.panel().color_by();
+  const ViewLayers layers = app.viewer.panel().layers();
   view.wireframe = layers.wireframe;
   view.springs = layers.springs;
   view.points = layers.points;
-  view.plots = app.viewer.plots_open();
-  view.faceless = app.viewer.faceless();
-  const ViewCamera::Angles angles = app.viewer.camera_angles();
+  view.plots = app.viewer.session().plots_open();
+  view.faceless = app.viewer.panel().faceless();
+  const ViewCamera::Angles angles = app.viewer.drawing().camera_angles();
   view.yaw_degrees = angles.yaw_degrees;
   view.pitch_degrees = angles.pitch_degrees;
   view.zoom = angles.zoom;
@@ -349,20 +342,27 @@ void copy_link(BrowserApp& app) {
   for (std::size_t i = 0; i < lost.size(); ++i)
     told += (i == 0 ? " (an address cannot carry " : ", ") + lost[i] +
             (i + 1 == lost.size() ? ")" : "");
-  app.viewer.tell(told);
+  app.viewer.files().tell(told);
 }
 
 }  // namespace
 
 void run_browser(const CommandLine& command, const std::vector<std::string>& messages, bool bench) {
   static std::unique_ptr<BrowserApp> app;  // lives for the page's life
-  app.reset(new BrowserApp{open_viewer(command), nullptr, nullptr, nullptr, {}, command, bench});
-  the_app = app.get();
-  app->viewer.show_notices(true);
-  if (command.frames) app->viewer.set_step_limit(*command.frames);
   double css_width = 0.0, css_height = 0.0;
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
-  const std::string title = "Wobble: " + app->viewer.scene().name;
+  // The page's buttons, its keys, and on a phone's screen, narrower than the panel, the panel
+  // folded to its title bar (a tap opens it), so that the scene shows.
+  PageSettings page;
+  page.actions = {[] { EM_ASM({ Module.wobblePickFiles(); }); }, [] { copy_link(*the_app); }};
+  page.help = page_bindings();
+  page.panel_folded = css_width > 0 && css_width < 600;
+  app.reset(
+      new BrowserApp{open_viewer(command, page), nullptr, nullptr, nullptr, {}, command, bench});
+  the_app = app.get();
+  app->viewer.files().show_notices(true);
+  if (command.frames) app->viewer.session().set_step_limit(*command.frames);
+  const std::string title = "Wobble: " + app->viewer.session().scene().name;
   app->window =
       std::make_unique<GlfwWindow>(css_width > 0 ? static_cast<int>(css_width) : 1280,
                                    css_height > 0 ? static_cast<int>(css_height) : 720, title);
@@ -376,14 +376,11 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
   // window's callbacks) is turned off.
   glfwSetScrollCallback(app->window->handle(), nullptr);
   emscripten_set_wheel_callback("#canvas", app->host.get(), EM_TRUE, on_wheel);
-  app->viewer.set_file_written(offer_download);
-  app->viewer.set_page_actions(
-      {[] { EM_ASM({ Module.wobblePickFiles(); }); }, [] { copy_link(*the_app); }});
-  app->viewer.set_help(page_bindings());
-  print_notes(app->viewer.scene(), std::cerr);
+  app->viewer.files().set_written(offer_download);
+  print_notes(app->viewer.session().scene(), std::cerr);
   std::string told;
   for (const std::string& message : messages) {
-    app->viewer.tell(message);
+    app->viewer.files().tell(message);
     std::cerr << "wobble: " << message << "\n";
     told += (told.empty() ? "" : "\n") + message;
   }
@@ -393,8 +390,8 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
         Module.wobbleMessages = UTF8ToString($0);
         Module.wobbleScene = UTF8ToString($1);
       },
-      told.c_str(), app->viewer.scene().name.c_str());
-  app->viewer.attach_renderer();
+      told.c_str(), app->viewer.session().scene().name.c_str());
+  app->viewer.drawing().attach_renderer();
   // 0 frames a second: the browser's own rate (requestAnimationFrame); do not simulate an
   // infinite loop, so main returns and the page keeps running.
   emscripten_set_main_loop_arg(frame_or_report, app.get(), 0, 0);
@@ -407,10 +404,10 @@ void run_browser(const CommandLine& command, const std::vector<std::string>& mes
 extern "C" EMSCRIPTEN_KEEPALIVE void wobble_report_positions() {
   if (wobble::the_app == nullptr) return;
   const wobble::Viewer& viewer = wobble::the_app->viewer;
-  const Eigen::MatrixXd& positions = viewer.simulation().positions();
+  const Eigen::MatrixXd& positions = viewer.session().simulation().positions();
   std::ostringstream out;
-  out << std::setprecision(17) << "{\"scene\": \"" << viewer.scene().name
-      << "\", \"steps\": " << viewer.simulation().steps_taken() << ", \"positions\": [";
+  out << std::setprecision(17) << "{\"scene\": \"" << viewer.session().scene().name
+      << "\", \"steps\": " << viewer.session().simulation().steps_taken() << ", \"positions\": [";
   for (Eigen::Index i = 0; i < positions.rows(); ++i) {
     out << (i == 0 ? "" : ", ") << "[" << positions(i, 0) << ", " << positions(i, 1) << ", "
         << positions(i, 2) << "]";

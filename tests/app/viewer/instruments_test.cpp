@@ -36,12 +36,12 @@ using wobble::testing::press;
 TEST(Instruments, TheSplitViewPlotsBothSidesEachNamedByItsSolver) {
   const auto owner = split_viewer("solver=local-global,solver=lbfgs", true);
   wobble::Viewer& viewer = *owner;
-  ASSERT_NE(viewer.right_side(), nullptr);
-  EXPECT_EQ(viewer.simulation().params().solver, "local-global");
-  EXPECT_EQ(viewer.right_side()->params().solver, "lbfgs");
+  ASSERT_NE(viewer.session().right_side(), nullptr);
+  EXPECT_EQ(viewer.session().simulation().params().solver, "local-global");
+  EXPECT_EQ(viewer.session().right_side()->params().solver, "lbfgs");
   for (int frame = 0; frame < 6; ++frame)
     viewer.advance();
-  const wobble::Instruments& plots = viewer.instruments();
+  const wobble::Instruments& plots = viewer.session().instruments();
   const wobble::ConvergenceTrace& left = plots.shown_trace();
   const wobble::ConvergenceTrace& right = plots.shown_right_trace();
   EXPECT_EQ(std::string(left.solver), "local-global");
@@ -51,7 +51,9 @@ TEST(Instruments, TheSplitViewPlotsBothSidesEachNamedByItsSolver) {
   EXPECT_LE(right.iterations(), 50);
   // Each side's own step: after six steps by two methods the sides are apart, and so are the
   // first iterates' energies.
-  EXPECT_GT((viewer.simulation().positions() - viewer.right_side()->positions()).norm(), 1e-6);
+  EXPECT_GT((viewer.session().simulation().positions() - viewer.session().right_side()->positions())
+                .norm(),
+            1e-6);
   EXPECT_NE(left.energy.front(), right.energy.front());
   const wobble::EnergyHistory& left_energy = plots.energy_history();
   const wobble::EnergyHistory& right_energy = plots.right_energy_history();
@@ -68,28 +70,29 @@ TEST(Instruments, TheRightSideRecordsOnlyWhileThePlotsAreOpen) {
   wobble::Viewer& viewer = *owner;
   for (int frame = 0; frame < 3; ++frame)
     viewer.advance();
-  EXPECT_FALSE(viewer.right_side()->records_convergence());
-  EXPECT_TRUE(viewer.instruments().shown_right_trace().energy.empty());
-  EXPECT_TRUE(viewer.instruments().right_energy_history().time.empty());
+  EXPECT_FALSE(viewer.session().right_side()->records_convergence());
+  EXPECT_TRUE(viewer.session().instruments().shown_right_trace().energy.empty());
+  EXPECT_TRUE(viewer.session().instruments().right_energy_history().time.empty());
 
   press(viewer, GLFW_KEY_G);  // both plots open
   for (int frame = 0; frame < 2; ++frame)
     viewer.advance();
-  EXPECT_TRUE(viewer.right_side()->records_convergence());
-  EXPECT_EQ(std::string(viewer.instruments().shown_right_trace().solver), "lbfgs");
-  EXPECT_EQ(viewer.instruments().right_energy_history().time.size(), 2u);
+  EXPECT_TRUE(viewer.session().right_side()->records_convergence());
+  EXPECT_EQ(std::string(viewer.session().instruments().shown_right_trace().solver), "lbfgs");
+  EXPECT_EQ(viewer.session().instruments().right_energy_history().time.size(), 2u);
 
   press(viewer, GLFW_KEY_G);  // closed
   viewer.advance();
-  EXPECT_FALSE(viewer.right_side()->records_convergence());
+  EXPECT_FALSE(viewer.session().right_side()->records_convergence());
 
   press(viewer, GLFW_KEY_G);
   press(viewer, GLFW_KEY_2);  // no split view
   viewer.advance();
-  ASSERT_EQ(viewer.right_side(), nullptr);
-  EXPECT_TRUE(viewer.instruments().shown_right_trace().energy.empty());
-  EXPECT_TRUE(viewer.instruments().right_energy_history().time.empty());
-  EXPECT_FALSE(viewer.instruments().shown_trace().energy.empty()) << "the left side's stays";
+  ASSERT_EQ(viewer.session().right_side(), nullptr);
+  EXPECT_TRUE(viewer.session().instruments().shown_right_trace().energy.empty());
+  EXPECT_TRUE(viewer.session().instruments().right_energy_history().time.empty());
+  EXPECT_FALSE(viewer.session().instruments().shown_trace().energy.empty())
+      << "the left side's stays";
 }
 
 }  // namespace

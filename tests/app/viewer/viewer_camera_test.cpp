@@ -96,15 +96,15 @@ TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
   HeadlessImGui imgui;
   CameraFixture f;
   f.frame();  // framed with no panel: the whole window
-  const int left_pin =
-      f.on_screen(f.viewer.scene().pins[0]).x() < f.on_screen(f.viewer.scene().pins[1]).x()
-          ? f.viewer.scene().pins[0]
-          : f.viewer.scene().pins[1];
+  const int left_pin = f.on_screen(f.viewer.session().scene().pins[0]).x() <
+                               f.on_screen(f.viewer.session().scene().pins[1]).x()
+                           ? f.viewer.session().scene().pins[0]
+                           : f.viewer.session().scene().pins[1];
   ASSERT_LT(f.on_screen(left_pin).x(), panel_right) << "the pin starts behind the panel";
   f.frame(/*panel=*/true);
   f.press_key(GLFW_KEY_F);
   f.frame(/*panel=*/true);
-  for (const int pin : f.viewer.scene().pins) {
+  for (const int pin : f.viewer.session().scene().pins) {
     const Eigen::Vector2f at = f.on_screen(pin);
     EXPECT_GT(at.x(), panel_right + 20.0f) << "pin " << pin;
     EXPECT_LT(at.x(), window.x()) << "pin " << pin;
@@ -112,8 +112,8 @@ TEST(ViewerCamera, FFramesTheClothBesideThePanel) {
     EXPECT_LT(at.y(), window.y()) << "pin " << pin;
   }
   // The shape sits in the middle of what the panel leaves free.
-  const Eigen::Vector2f middle =
-      0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
+  const Eigen::Vector2f middle = 0.5f * (f.on_screen(f.viewer.session().scene().pins[0]) +
+                                         f.on_screen(f.viewer.session().scene().pins[1]));
   EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x());
 }
 
@@ -134,7 +134,7 @@ TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
   const float plots_left = columns->plots_left, panel_right = columns->panel_right;
   ASSERT_GT(plots_left - panel_right, 0.25f * window.x());
   const auto in_between = [&] {
-    for (const int pin : f.viewer.scene().pins) {
+    for (const int pin : f.viewer.session().scene().pins) {
       const Eigen::Vector2f at = f.on_screen(pin);
       EXPECT_GT(at.x(), panel_right) << "pin " << pin;
       EXPECT_LT(at.x(), plots_left) << "pin " << pin;
@@ -149,8 +149,8 @@ TEST(ViewerCamera, OpeningThePlotsMovesTheClothBetweenThePanelAndThem) {
   f.press_key(GLFW_KEY_G);
   for (int i = 0; i < 3; ++i)
     frame();
-  const Eigen::Vector2f middle =
-      0.5f * (f.on_screen(f.viewer.scene().pins[0]) + f.on_screen(f.viewer.scene().pins[1]));
+  const Eigen::Vector2f middle = 0.5f * (f.on_screen(f.viewer.session().scene().pins[0]) +
+                                         f.on_screen(f.viewer.session().scene().pins[1]));
   EXPECT_NEAR(middle.x(), 0.5f * (panel_right + window.x()), 0.1f * window.x())
       << "centred beside the panel again";
 }
@@ -176,7 +176,7 @@ TEST(ViewerCamera, AtAProjectorsScaleGThenFShowsTheShapeBetweenPanelAndPlots) {
     const float plots_left = columns->plots_left, panel_right = columns->panel_right;
     EXPECT_GE(plots_left - panel_right, 0.25f * window.x()) << name;
     EXPECT_GT(columns->plots_width, 0.25f * window.x()) << name << ": the plots still readable";
-    const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+    const int n = static_cast<int>(f.viewer.session().simulation().positions().rows());
     for (int i = 0; i < n; ++i) {
       const Eigen::Vector2f at = f.on_screen(i);
       ASSERT_GT(at.x(), panel_right) << name << ": vertex " << i << " behind the panel";
@@ -193,8 +193,8 @@ TEST(ViewerCamera, TabHidingThePanelFramesAgain) {
   CameraFixture f;
   const auto frame = [&f] { f.frame(/*panel=*/true, false, 1.0f); };
   const auto middle_x = [&f] {
-    return 0.5f *
-           (f.on_screen(f.viewer.scene().pins[0]).x() + f.on_screen(f.viewer.scene().pins[1]).x());
+    return 0.5f * (f.on_screen(f.viewer.session().scene().pins[0]).x() +
+                   f.on_screen(f.viewer.session().scene().pins[1]).x());
   };
   for (int i = 0; i < 2; ++i)
     frame();
@@ -220,7 +220,7 @@ TEST(ViewerCamera, ASceneCameraOpensBesideThePanel) {
   CameraFixture f(wobble::load_scene(std::string(WOBBLE_ASSETS_DIR) + "/flag.json"));
   f.frame(/*panel=*/true);
   f.frame(/*panel=*/true);
-  const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+  const int n = static_cast<int>(f.viewer.session().simulation().positions().rows());
   float lowest_x = window.x(), highest_x = 0.0f;
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector2f at = f.on_screen(i);
@@ -241,19 +241,19 @@ TEST(ViewerCamera, ACollapsedPanelCoversNothing) {
   f.frame(/*panel=*/true, /*collapsed=*/true);
   f.press_key(GLFW_KEY_F);
   f.frame(/*panel=*/true, /*collapsed=*/true);
-  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+  EXPECT_TRUE(f.viewer.drawing().camera().lens_shift.isZero());
 }
 
 TEST(ViewerCamera, TheSplitViewCentresTheShapeInEachHalf) {
   HeadlessImGui imgui;
   CameraFixture f;
   f.frame(/*panel=*/true);
-  ASSERT_GT(f.viewer.camera().lens_shift.x(), 0.1f) << "framed beside the panel";
+  ASSERT_GT(f.viewer.drawing().camera().lens_shift.x(), 0.1f) << "framed beside the panel";
   f.press_key(GLFW_KEY_2);
-  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+  EXPECT_TRUE(f.viewer.drawing().camera().lens_shift.isZero());
   f.press_key(GLFW_KEY_F);
   f.frame(/*panel=*/true);
-  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero()) << "F frames each half whole";
+  EXPECT_TRUE(f.viewer.drawing().camera().lens_shift.isZero()) << "F frames each half whole";
 }
 
 TEST(ViewerCamera, FRightAfterResetKeepsTheFallingClothInView) {
@@ -264,7 +264,7 @@ TEST(ViewerCamera, FRightAfterResetKeepsTheFallingClothInView) {
   f.press_key(GLFW_KEY_F);
   f.frame();
   // Over the fall and the first swings, every vertex stays in the window.
-  const int n = static_cast<int>(f.viewer.simulation().positions().rows());
+  const int n = static_cast<int>(f.viewer.session().simulation().positions().rows());
   for (int step = 0; step < 120; ++step) {
     f.frame();
     for (int i = 0; i < n; i += 7) {
@@ -278,17 +278,17 @@ TEST(ViewerCamera, FRightAfterResetKeepsTheFallingClothInView) {
 TEST(ViewerCamera, OGoesBackToTheOpeningView) {
   CameraFixture f;
   f.frame();
-  const wobble::OrbitCamera opening = f.viewer.camera();
+  const wobble::OrbitCamera opening = f.viewer.drawing().camera();
   f.drag(Eigen::Vector2f(20, 700), Eigen::Vector2f(200, -150));  // orbit
   f.wheel(3.0);
-  ASSERT_GT(std::abs(f.viewer.camera().yaw - opening.yaw), 0.5f);
+  ASSERT_GT(std::abs(f.viewer.drawing().camera().yaw - opening.yaw), 0.5f);
   f.press_key(GLFW_KEY_O);
   f.frame();
-  EXPECT_NEAR(f.viewer.camera().yaw, opening.yaw, 1e-6f);
-  EXPECT_NEAR(f.viewer.camera().pitch, opening.pitch, 1e-6f);
+  EXPECT_NEAR(f.viewer.drawing().camera().yaw, opening.yaw, 1e-6f);
+  EXPECT_NEAR(f.viewer.drawing().camera().pitch, opening.pitch, 1e-6f);
   // Framed with room to move around the shape as it is now, which has fallen a little.
-  EXPECT_GT(f.viewer.camera().distance, 0.9f * opening.distance);
-  EXPECT_LT(f.viewer.camera().distance, 1.5f * opening.distance);
+  EXPECT_GT(f.viewer.drawing().camera().distance, 0.9f * opening.distance);
+  EXPECT_LT(f.viewer.drawing().camera().distance, 1.5f * opening.distance);
 }
 
 TEST(ViewerCamera, OGoesBackToASceneOwnCamera) {
@@ -302,11 +302,11 @@ TEST(ViewerCamera, OGoesBackToASceneOwnCamera) {
   f.frame();
   f.press_key(GLFW_KEY_O);
   f.frame();
-  EXPECT_TRUE(f.viewer.camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
-  EXPECT_NEAR(f.viewer.camera().distance, 4.0f, 1e-5f);
-  EXPECT_NEAR(f.viewer.camera().yaw, 0.0f, 1e-6f);
-  EXPECT_NEAR(f.viewer.camera().pitch, 0.0f, 1e-6f);
-  EXPECT_TRUE(f.viewer.camera().lens_shift.isZero());
+  EXPECT_TRUE(f.viewer.drawing().camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
+  EXPECT_NEAR(f.viewer.drawing().camera().distance, 4.0f, 1e-5f);
+  EXPECT_NEAR(f.viewer.drawing().camera().yaw, 0.0f, 1e-6f);
+  EXPECT_NEAR(f.viewer.drawing().camera().pitch, 0.0f, 1e-6f);
+  EXPECT_TRUE(f.viewer.drawing().camera().lens_shift.isZero());
 }
 
 TEST(ViewerCamera, OrbitKeepsTheEyeAboveTheGround) {
@@ -315,20 +315,21 @@ TEST(ViewerCamera, OrbitKeepsTheEyeAboveTheGround) {
   // Drag up across the window many times over: the camera would go round under the cloth.
   for (int i = 0; i < 5; ++i)
     f.drag(Eigen::Vector2f(20, 700), Eigen::Vector2f(0, -700));
-  EXPECT_GE(wobble::camera_eye(f.viewer.camera()).y(), f.viewer.ground().height);
-  EXPECT_LT(f.viewer.camera().pitch, 0.2f) << "it does get down near the ground";
+  EXPECT_GE(wobble::camera_eye(f.viewer.drawing().camera()).y(),
+            f.viewer.drawing().ground().height);
+  EXPECT_LT(f.viewer.drawing().camera().pitch, 0.2f) << "it does get down near the ground";
 }
 
 TEST(ViewerCamera, ZoomStopsOutsideTheShapeAndBeforeItIsADot) {
   CameraFixture f;
   f.frame();
-  const Eigen::MatrixXd& V = f.viewer.scene().network.V;
+  const Eigen::MatrixXd& V = f.viewer.session().scene().network.V;
   const float radius =
       0.5f * static_cast<float>((V.colwise().maxCoeff() - V.colwise().minCoeff()).norm());
   f.wheel(100.0);
-  EXPECT_NEAR(f.viewer.camera().distance, 0.6f * radius, 1e-4f);
+  EXPECT_NEAR(f.viewer.drawing().camera().distance, 0.6f * radius, 1e-4f);
   f.wheel(-200.0);
-  EXPECT_NEAR(f.viewer.camera().distance, 20.0f * radius, 1e-3f);
+  EXPECT_NEAR(f.viewer.drawing().camera().distance, 20.0f * radius, 1e-3f);
 }
 
 }  // namespace

@@ -36,8 +36,8 @@ struct Fixture {
   }
   Eigen::Vector2f on_screen(const Eigen::Vector3d& point) const {
     const Eigen::Matrix4f view_projection =
-        wobble::projection_matrix(viewer.camera(), window.x() / window.y()) *
-        wobble::view_matrix(viewer.camera());
+        wobble::projection_matrix(viewer.drawing().camera(), window.x() / window.y()) *
+        wobble::view_matrix(viewer.drawing().camera());
     return wobble::project_to_window(view_projection, point.cast<float>(), window)->head<2>();
   }
   void send(InputEvent::Type type, const Eigen::Vector2f& at, int code = 0, bool alt = false) {
@@ -56,7 +56,7 @@ struct Fixture {
     viewer.handle_events({event}, false, false, window);
   }
   Eigen::Vector3d sphere_center() const {
-    return wobble::colliders_in(viewer.simulation().terms())[0].center;
+    return wobble::colliders_in(viewer.session().simulation().terms())[0].center;
   }
   wobble::Viewer viewer;
 };
@@ -67,10 +67,10 @@ TEST(ViewerEnvironment, AltDragMovesTheSphereInThePlaneFacingTheCamera) {
   const Eigen::Vector2f at = f.on_screen(start);
   // The point of the sphere's surface under the cursor.
   const wobble::Ray ray = wobble::cursor_ray(
-      wobble::view_matrix(f.viewer.camera()),
-      wobble::projection_matrix(f.viewer.camera(), window.x() / window.y()), at, window);
+      wobble::view_matrix(f.viewer.drawing().camera()),
+      wobble::projection_matrix(f.viewer.drawing().camera(), window.x() / window.y()), at, window);
   const auto grabbed =
-      wobble::pick_collider(ray, wobble::colliders_in(f.viewer.simulation().terms()));
+      wobble::pick_collider(ray, wobble::colliders_in(f.viewer.session().simulation().terms()));
   ASSERT_TRUE(grabbed);
   f.send(InputEvent::Type::cursor_move, at);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*alt=*/true);
@@ -86,11 +86,12 @@ TEST(ViewerEnvironment, AltDragMovesTheSphereInThePlaneFacingTheCamera) {
   const Eigen::Vector3d grabbed_now = grabbed->point.cast<double>() + (moved - start);
   EXPECT_NEAR((f.on_screen(grabbed_now) - at).x(), 150.0f, 1.0f);
   EXPECT_NEAR((f.on_screen(grabbed_now) - at).y(), 0.0f, 1.0f);
-  EXPECT_NEAR((moved - start).cast<float>().dot(wobble::camera_forward(f.viewer.camera())), 0.0f,
-              1e-4f);
+  EXPECT_NEAR(
+      (moved - start).cast<float>().dot(wobble::camera_forward(f.viewer.drawing().camera())), 0.0f,
+      1e-4f);
   EXPECT_GT((moved - start).norm(), 0.2);
   // The camera did not orbit, and the cloth was not grabbed.
-  EXPECT_EQ(f.viewer.simulation().pin_count(), 2);
+  EXPECT_EQ(f.viewer.session().simulation().pin_count(), 2);
   // After release, moving the mouse moves nothing.
   f.send(InputEvent::Type::cursor_move, at, 0, true);
   EXPECT_EQ(f.sphere_center(), moved);
@@ -103,22 +104,22 @@ TEST(ViewerEnvironment, WithoutAltOrWithTheCollidersHiddenTheSphereStays) {
   Fixture f(cloth_over_a_sphere());
   const Eigen::Vector3d start = f.sphere_center();
   const Eigen::Vector2f at = f.on_screen(start);
-  const float yaw = f.viewer.camera().yaw;
+  const float yaw = f.viewer.drawing().camera().yaw;
   // A plain drag over the sphere orbits the camera.
   f.send(InputEvent::Type::cursor_move, at);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT);
   f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(50, 0));
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
   EXPECT_EQ(f.sphere_center(), start);
-  EXPECT_NE(f.viewer.camera().yaw, yaw);
+  EXPECT_NE(f.viewer.drawing().camera().yaw, yaw);
 
   f.viewer.render(1280, 720, window, 1.0f);
-  EXPECT_GT(f.viewer.collider_mesh().triangle_count(), 0);
-  EXPECT_TRUE(f.viewer.layers().solids);
+  EXPECT_GT(f.viewer.drawing().collider_mesh().triangle_count(), 0);
+  EXPECT_TRUE(f.viewer.panel().layers().solids);
   f.press_key(GLFW_KEY_C);  // hide
   f.viewer.render(1280, 720, window, 1.0f);
-  EXPECT_FALSE(f.viewer.layers().solids);
-  EXPECT_EQ(f.viewer.collider_mesh().triangle_count(), 0);
+  EXPECT_FALSE(f.viewer.panel().layers().solids);
+  EXPECT_EQ(f.viewer.drawing().collider_mesh().triangle_count(), 0);
   const Eigen::Vector2f now = f.on_screen(start);
   f.send(InputEvent::Type::cursor_move, now);
   f.send(InputEvent::Type::button_press, now, GLFW_MOUSE_BUTTON_LEFT, true);
@@ -126,13 +127,13 @@ TEST(ViewerEnvironment, WithoutAltOrWithTheCollidersHiddenTheSphereStays) {
   f.send(InputEvent::Type::button_release, now, GLFW_MOUSE_BUTTON_LEFT, true);
   EXPECT_EQ(f.sphere_center(), start);
   f.press_key(GLFW_KEY_C);  // shown again
-  EXPECT_TRUE(f.viewer.layers().solids);
+  EXPECT_TRUE(f.viewer.panel().layers().solids);
 }
 
 TEST(ViewerEnvironment, TheDrawnSphereFollowsTheCollider) {
   Fixture f(cloth_over_a_sphere());
   const auto mean = [&] {
-    const wobble::ColliderTriangles& mesh = f.viewer.collider_mesh();
+    const wobble::ColliderTriangles& mesh = f.viewer.drawing().collider_mesh();
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     for (int i = 0; i < mesh.vertex_count(); ++i)
       sum += Eigen::Vector3d(mesh.positions[3 * i], mesh.positions[3 * i + 1],
@@ -152,16 +153,16 @@ TEST(ViewerEnvironment, TheDrawnSphereFollowsTheCollider) {
 
 TEST(ViewerEnvironment, WTogglesTheWindAndETheWireframe) {
   Fixture f(wobble::make_builtin_scene("cloth"));
-  ASSERT_FALSE(f.viewer.simulation().params().wind.on);
+  ASSERT_FALSE(f.viewer.session().simulation().params().wind.on);
   f.press_key(GLFW_KEY_W);
-  const wobble::WindParams& wind = f.viewer.simulation().params().wind;
+  const wobble::WindParams& wind = f.viewer.session().simulation().params().wind;
   EXPECT_TRUE(wind.on);
   EXPECT_TRUE(wind.velocity.isApprox(wobble::WindParams::default_breeze().velocity));
-  EXPECT_FALSE(f.viewer.layers().wireframe);  // W no longer toggles the wireframe
+  EXPECT_FALSE(f.viewer.panel().layers().wireframe);  // W no longer toggles the wireframe
   f.press_key(GLFW_KEY_W);
-  EXPECT_FALSE(f.viewer.simulation().params().wind.on);
+  EXPECT_FALSE(f.viewer.session().simulation().params().wind.on);
   f.press_key(GLFW_KEY_E);
-  EXPECT_TRUE(f.viewer.layers().wireframe);
+  EXPECT_TRUE(f.viewer.panel().layers().wireframe);
 }
 
 TEST(ViewerEnvironment, TheGroundIsBelowTheHangingClothOrAtTheGroundCollider) {
@@ -169,15 +170,15 @@ TEST(ViewerEnvironment, TheGroundIsBelowTheHangingClothOrAtTheGroundCollider) {
   const double rest_lowest = cloth.network.V.col(1).minCoeff();
   Fixture free_hanging(cloth);
   // The 1 m cloth hangs from its corners at 1.2 m: its far edge can swing down about 1 m.
-  EXPECT_LT(free_hanging.viewer.ground().height, rest_lowest - 1.0);
+  EXPECT_LT(free_hanging.viewer.drawing().ground().height, rest_lowest - 1.0);
 
   wobble::Scene on_ground = cloth;
   wobble::Collider ground;
   ground.height = 0.4;
   on_ground.params.contact.colliders.push_back(ground);
   Fixture with_ground(on_ground);
-  EXPECT_FLOAT_EQ(with_ground.viewer.ground().height, 0.4f);
-  EXPECT_EQ(with_ground.viewer.collider_mesh().triangle_count(), 0);  // drawn as the grid
+  EXPECT_FLOAT_EQ(with_ground.viewer.drawing().ground().height, 0.4f);
+  EXPECT_EQ(with_ground.viewer.drawing().collider_mesh().triangle_count(), 0);  // drawn as the grid
 }
 
 }  // namespace

@@ -22,9 +22,8 @@ using wobble::InputEvent;
 using wobble::testing::window;
 
 struct ViewerFixture {
-  ViewerFixture()
-      : viewer(wobble::make_builtin_scene("cloth"), wobble::ViewerSettings(),
-               wobble::builtin_scene_names()) {
+  explicit ViewerFixture(const wobble::ViewerSettings& settings = wobble::ViewerSettings())
+      : viewer(wobble::make_builtin_scene("cloth"), settings, wobble::builtin_scene_names()) {
     // Without a renderer, render() still sets up the camera and the picking arrays.
     viewer.render(1280, 720, window, 1.0f);
   }
@@ -58,9 +57,9 @@ struct ViewerFixture {
 
 TEST(Viewer, DraggingAPinnedCornerMovesItAndTheClothFollows) {
   ViewerFixture f;
-  const int corner = f.viewer.scene().pins[0];
-  const Eigen::Vector3d start = f.viewer.simulation().positions().row(corner);
-  const int factorizations = f.viewer.simulation().numeric_factorizations();
+  const int corner = f.viewer.session().scene().pins[0];
+  const Eigen::Vector3d start = f.viewer.session().simulation().positions().row(corner);
+  const int factorizations = f.viewer.session().simulation().numeric_factorizations();
   const Eigen::Vector2f at = f.on_screen(corner) + Eigen::Vector2f(3, 2);  // a few pixels off
 
   f.send(InputEvent::Type::cursor_move, at);
@@ -70,95 +69,97 @@ TEST(Viewer, DraggingAPinnedCornerMovesItAndTheClothFollows) {
     f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(10.0f * i, 0));
     f.frame();
   }
-  const Eigen::Vector3d moved = f.viewer.simulation().positions().row(corner);
+  const Eigen::Vector3d moved = f.viewer.session().simulation().positions().row(corner);
   // The corner went where the cursor went: 300 px to the right on screen ...
   EXPECT_NEAR((f.on_screen(corner) - at).x(), 300.0f - 3.0f, 2.0f);
   EXPECT_NEAR((f.on_screen(corner) - at).y(), -2.0f, 2.0f);
   // ... which is a large move in the world, in the plane facing the camera.
   EXPECT_GT((moved - start).norm(), 0.5);
-  EXPECT_NEAR((moved - start).cast<float>().dot(wobble::camera_forward(f.viewer.camera())), 0.0f,
-              1e-3f);
+  EXPECT_NEAR(
+      (moved - start).cast<float>().dot(wobble::camera_forward(f.viewer.drawing().camera())), 0.0f,
+      1e-3f);
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_TRUE(f.viewer.simulation().is_pinned(corner));
-  EXPECT_EQ(f.viewer.simulation().numeric_factorizations(), factorizations)
+  EXPECT_TRUE(f.viewer.session().simulation().is_pinned(corner));
+  EXPECT_EQ(f.viewer.session().simulation().numeric_factorizations(), factorizations)
       << "moving a pin must not re-factorize";
   // The cloth follows: its centre of mass moved the same way.
-  const double centre = f.viewer.simulation().positions().col(0).mean();
-  EXPECT_GT(centre, f.viewer.scene().network.V.col(0).mean() + 0.1);
+  const double centre = f.viewer.session().simulation().positions().col(0).mean();
+  EXPECT_GT(centre, f.viewer.session().scene().network.V.col(0).mean() + 0.1);
 }
 
 TEST(Viewer, ControlClickTogglesAPin) {
   ViewerFixture f;
   const int vertex = 40 * 20 + 20;  // the middle of the cloth, free
-  ASSERT_FALSE(f.viewer.simulation().is_pinned(vertex));
+  ASSERT_FALSE(f.viewer.session().simulation().is_pinned(vertex));
   const Eigen::Vector2f at = f.on_screen(vertex);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*control=*/true);
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_TRUE(f.viewer.simulation().is_pinned(vertex));
-  EXPECT_EQ(f.viewer.simulation().pin_count(), 3);
+  EXPECT_TRUE(f.viewer.session().simulation().is_pinned(vertex));
+  EXPECT_EQ(f.viewer.session().simulation().pin_count(), 3);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, /*control=*/true);
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_FALSE(f.viewer.simulation().is_pinned(vertex));
+  EXPECT_FALSE(f.viewer.session().simulation().is_pinned(vertex));
 }
 
 TEST(Viewer, MouseOverThePanelDoesNothingToTheScene) {
   ViewerFixture f;
-  const int corner = f.viewer.scene().pins[0];
+  const int corner = f.viewer.session().scene().pins[0];
   const Eigen::Vector2f at = f.on_screen(corner);
-  const wobble::OrbitCamera before = f.viewer.camera();
+  const wobble::OrbitCamera before = f.viewer.drawing().camera();
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT, true, /*ui=*/true);
   f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(100, 50), 0, false, true);
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT, false, true);
-  EXPECT_EQ(f.viewer.simulation().pin_count(), 2);
-  EXPECT_TRUE(f.viewer.simulation().pin_target(corner).isApprox(
-      f.viewer.scene().network.V.row(corner).transpose()));
-  EXPECT_EQ(f.viewer.camera().yaw, before.yaw);
+  EXPECT_EQ(f.viewer.session().simulation().pin_count(), 2);
+  EXPECT_TRUE(f.viewer.session().simulation().pin_target(corner).isApprox(
+      f.viewer.session().scene().network.V.row(corner).transpose()));
+  EXPECT_EQ(f.viewer.drawing().camera().yaw, before.yaw);
 }
 
 TEST(Viewer, DraggingEmptySpaceOrbitsAndTheWheelZooms) {
   ViewerFixture f;
-  const wobble::OrbitCamera before = f.viewer.camera();
+  const wobble::OrbitCamera before = f.viewer.drawing().camera();
   const Eigen::Vector2f corner_of_window(20, 700);  // nothing drawn there but the ground
   f.send(InputEvent::Type::cursor_move, corner_of_window);
   f.send(InputEvent::Type::button_press, corner_of_window, GLFW_MOUSE_BUTTON_LEFT);
   f.send(InputEvent::Type::cursor_move, corner_of_window + Eigen::Vector2f(72, 0));
   f.send(InputEvent::Type::button_release, corner_of_window, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_NEAR(f.viewer.camera().yaw, before.yaw - 72 * 3.14159265f / 720, 1e-4f);
+  EXPECT_NEAR(f.viewer.drawing().camera().yaw, before.yaw - 72 * 3.14159265f / 720, 1e-4f);
   InputEvent wheel;
   wheel.type = InputEvent::Type::scroll;
   wheel.y = 1.0;
   f.viewer.handle_events({wheel}, false, false, window);
-  EXPECT_NEAR(f.viewer.camera().distance, before.distance / 1.15f, 1e-4f);
+  EXPECT_NEAR(f.viewer.drawing().camera().distance, before.distance / 1.15f, 1e-4f);
 }
 
 TEST(Viewer, KeysPauseStepAndReset) {
   ViewerFixture f;
   f.frame();
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 1);
   f.press_key(GLFW_KEY_SPACE);  // pause
   f.frame();
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 1);
   f.press_key(GLFW_KEY_S);  // one step, still paused
   f.frame();
   f.frame();
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 2);
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 2);
   f.press_key(GLFW_KEY_R);
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 0);
-  EXPECT_TRUE(f.viewer.simulation().positions().isApprox(f.viewer.scene().network.V));
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 0);
+  EXPECT_TRUE(
+      f.viewer.session().simulation().positions().isApprox(f.viewer.session().scene().network.V));
   f.press_key(GLFW_KEY_SPACE);  // play
   f.frame();
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 1);
-  EXPECT_FALSE(f.viewer.quit_requested());
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 1);
+  EXPECT_FALSE(f.viewer.panel().quit_requested());
   // Esc backs out of things (the help here) and never ends a demo; Ctrl+Q does.
   f.press_key(GLFW_KEY_H);
-  EXPECT_TRUE(f.viewer.help_shown());
+  EXPECT_TRUE(f.viewer.panel().help_shown());
   f.press_key(GLFW_KEY_ESCAPE);
-  EXPECT_FALSE(f.viewer.help_shown());
-  EXPECT_FALSE(f.viewer.quit_requested());
+  EXPECT_FALSE(f.viewer.panel().help_shown());
+  EXPECT_FALSE(f.viewer.panel().quit_requested());
   f.press_key(GLFW_KEY_Q);
-  EXPECT_FALSE(f.viewer.quit_requested());
+  EXPECT_FALSE(f.viewer.panel().quit_requested());
   f.press_key(GLFW_KEY_Q, /*control=*/true);
-  EXPECT_TRUE(f.viewer.quit_requested());
+  EXPECT_TRUE(f.viewer.panel().quit_requested());
 }
 
 }  // namespace
@@ -170,16 +171,16 @@ TEST(Viewer, ASceneCameraIsUsedAndTheCommandLineCanTurnIt) {
   scene.look.camera_position = Eigen::Vector3d(0.0, 1.0, 4.0);
   scene.look.camera_target = Eigen::Vector3d(0.0, 1.0, 0.0);
   const wobble::Viewer from_scene(scene, wobble::ViewerSettings(), {"cloth"});
-  EXPECT_TRUE(from_scene.camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
-  EXPECT_NEAR(from_scene.camera().distance, 4.0f, 1e-5f);
-  EXPECT_NEAR(from_scene.camera().yaw, 0.0f, 1e-6f);
-  EXPECT_NEAR(from_scene.camera().pitch, 0.0f, 1e-6f);
+  EXPECT_TRUE(from_scene.drawing().camera().target.isApprox(Eigen::Vector3f(0, 1, 0)));
+  EXPECT_NEAR(from_scene.drawing().camera().distance, 4.0f, 1e-5f);
+  EXPECT_NEAR(from_scene.drawing().camera().yaw, 0.0f, 1e-6f);
+  EXPECT_NEAR(from_scene.drawing().camera().pitch, 0.0f, 1e-6f);
 
   wobble::ViewerSettings turned;
   turned.camera_yaw_degrees = 90.0f;
   const wobble::Viewer overridden(scene, turned, {"cloth"});
-  EXPECT_NEAR(overridden.camera().yaw, 3.14159265f / 2, 1e-5f);
-  EXPECT_NEAR(overridden.camera().distance, 4.0f, 1e-5f);
+  EXPECT_NEAR(overridden.drawing().camera().yaw, 3.14159265f / 2, 1e-5f);
+  EXPECT_NEAR(overridden.drawing().camera().distance, 4.0f, 1e-5f);
 }
 
 }  // namespace
@@ -193,29 +194,29 @@ TEST(Viewer, AFailedStepPausesWithAWarningAndResetClearsIt) {
   wobble::Viewer viewer(wobble::make_builtin_scene("cloth"), settings,
                         wobble::builtin_scene_names());
   viewer.advance();
-  ASSERT_EQ(viewer.simulation().steps_taken(), 1);
-  EXPECT_EQ(viewer.step_warning(), "");
-  const Eigen::MatrixXd after_one = viewer.simulation().positions();
+  ASSERT_EQ(viewer.session().simulation().steps_taken(), 1);
+  EXPECT_EQ(viewer.session().step_warning(), "");
+  const Eigen::MatrixXd after_one = viewer.session().simulation().positions();
 
   viewer.advance();
-  EXPECT_EQ(viewer.simulation().last_step_status(), wobble::StepStatus::jumped);
-  EXPECT_EQ(viewer.simulation().steps_taken(), 1);
-  EXPECT_EQ(viewer.simulation().positions(), after_one) << "rolled back";
-  EXPECT_NE(viewer.step_warning().find("Paused at step 2"), std::string::npos)
-      << viewer.step_warning();
+  EXPECT_EQ(viewer.session().simulation().last_step_status(), wobble::StepStatus::jumped);
+  EXPECT_EQ(viewer.session().simulation().steps_taken(), 1);
+  EXPECT_EQ(viewer.session().simulation().positions(), after_one) << "rolled back";
+  EXPECT_NE(viewer.session().step_warning().find("Paused at step 2"), std::string::npos)
+      << viewer.session().step_warning();
   // The corner was flung by a drag: the advice says so, not "a smaller dt".
-  EXPECT_NE(viewer.step_warning().find("drag more slowly"), std::string::npos)
-      << viewer.step_warning();
-  EXPECT_EQ(viewer.stats().warning, viewer.step_warning());
+  EXPECT_NE(viewer.session().step_warning().find("drag more slowly"), std::string::npos)
+      << viewer.session().step_warning();
+  EXPECT_EQ(viewer.session().stats().warning, viewer.session().step_warning());
   viewer.advance();
-  EXPECT_EQ(viewer.simulation().steps_taken(), 1) << "paused";
+  EXPECT_EQ(viewer.session().simulation().steps_taken(), 1) << "paused";
 
   InputEvent reset;
   reset.type = InputEvent::Type::key_press;
   reset.code = GLFW_KEY_R;
   viewer.handle_events({reset}, false, false, window);
-  EXPECT_EQ(viewer.step_warning(), "");
-  EXPECT_EQ(viewer.simulation().steps_taken(), 0);
+  EXPECT_EQ(viewer.session().step_warning(), "");
+  EXPECT_EQ(viewer.session().simulation().steps_taken(), 0);
 }
 
 }  // namespace
@@ -240,16 +241,16 @@ TEST(Viewer, AMeshWithoutFacesShowsItsSpringsAndVertices) {
   for (const std::string& file : faceless_scene_files(folder)) {
     SCOPED_TRACE(file);
     const wobble::Viewer viewer(wobble::load_scene(file), wobble::ViewerSettings(), {});
-    ASSERT_EQ(viewer.scene().network.F.rows(), 0);
-    ASSERT_GT(viewer.scene().network.E.rows(), 0);
-    EXPECT_TRUE(viewer.layers().springs);
-    EXPECT_TRUE(viewer.layers().points);
+    ASSERT_EQ(viewer.session().scene().network.F.rows(), 0);
+    ASSERT_GT(viewer.session().scene().network.E.rows(), 0);
+    EXPECT_TRUE(viewer.panel().layers().springs);
+    EXPECT_TRUE(viewer.panel().layers().points);
   }
   // A mesh with faces keeps the plain defaults: surface only.
   const wobble::Viewer cloth(wobble::make_builtin_scene("cloth"), wobble::ViewerSettings(), {});
-  EXPECT_FALSE(cloth.layers().springs);
-  EXPECT_FALSE(cloth.layers().points);
-  EXPECT_TRUE(cloth.layers().surface);
+  EXPECT_FALSE(cloth.panel().layers().springs);
+  EXPECT_FALSE(cloth.panel().layers().points);
+  EXPECT_TRUE(cloth.panel().layers().surface);
 }
 
 TEST(Viewer, TheUserCanHideThemAndAMeshWithFacesGetsItsOwnLayersBack) {
@@ -258,29 +259,29 @@ TEST(Viewer, TheUserCanHideThemAndAMeshWithFacesGetsItsOwnLayersBack) {
   wobble::ViewerSettings settings;
   settings.layers.points = true;  // as --points asks
   wobble::Viewer viewer(wobble::load_scene(chain), settings, {});
-  ASSERT_TRUE(viewer.layers().springs);
+  ASSERT_TRUE(viewer.panel().layers().springs);
   press(viewer, GLFW_KEY_L);
   press(viewer, GLFW_KEY_P);
-  EXPECT_FALSE(viewer.layers().springs);
-  EXPECT_FALSE(viewer.layers().points);
+  EXPECT_FALSE(viewer.panel().layers().springs);
+  EXPECT_FALSE(viewer.panel().layers().points);
 
   // The cloth gets what the command line chose, not what was toggled for the chain ...
   viewer.load(wobble::make_builtin_scene("cloth"));
-  EXPECT_FALSE(viewer.layers().springs);
-  EXPECT_TRUE(viewer.layers().points);
+  EXPECT_FALSE(viewer.panel().layers().springs);
+  EXPECT_TRUE(viewer.panel().layers().points);
   // ... a chain again shows both ...
   press(viewer, GLFW_KEY_L);  // springs on, for meshes with faces
   viewer.load(wobble::load_scene(chain));
-  EXPECT_TRUE(viewer.layers().springs);
-  EXPECT_TRUE(viewer.layers().points);
+  EXPECT_TRUE(viewer.panel().layers().springs);
+  EXPECT_TRUE(viewer.panel().layers().points);
   // ... and the next mesh with faces has what was chosen for the cloth.
   viewer.load(wobble::make_builtin_scene("jelly"));
-  EXPECT_TRUE(viewer.layers().springs);
-  EXPECT_TRUE(viewer.layers().points);
+  EXPECT_TRUE(viewer.panel().layers().springs);
+  EXPECT_TRUE(viewer.panel().layers().points);
   press(viewer, GLFW_KEY_P);
   viewer.load(wobble::make_builtin_scene("cloth"));
-  EXPECT_TRUE(viewer.layers().springs);
-  EXPECT_FALSE(viewer.layers().points);
+  EXPECT_TRUE(viewer.panel().layers().springs);
+  EXPECT_FALSE(viewer.panel().layers().points);
 }
 
 }  // namespace
@@ -290,48 +291,48 @@ namespace {
 TEST(Viewer, VCyclesTheColouringAndMaterialComputesNoColours) {
   ViewerFixture fixture;
   wobble::Viewer& viewer = fixture.viewer;
-  const std::size_t vertices = viewer.scene().network.V.rows();
-  const std::size_t springs = viewer.scene().network.E.rows();
+  const std::size_t vertices = viewer.session().scene().network.V.rows();
+  const std::size_t springs = viewer.session().scene().network.E.rows();
   fixture.frame();
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
-  EXPECT_TRUE(viewer.quantity_colors().vertex_colors().empty());
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::material);
+  EXPECT_TRUE(viewer.drawing().quantity_colors().vertex_colors().empty());
 
   fixture.press_key(GLFW_KEY_V);
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::strain);
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::strain);
   fixture.frame();
-  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
+  EXPECT_EQ(viewer.drawing().quantity_colors().vertex_colors().size(), 3 * vertices);
   // The springs are not drawn, so they get no colours.
-  EXPECT_TRUE(viewer.quantity_colors().spring_colors().empty());
+  EXPECT_TRUE(viewer.drawing().quantity_colors().spring_colors().empty());
   fixture.press_key(GLFW_KEY_L);
   fixture.frame();
-  EXPECT_EQ(viewer.quantity_colors().spring_colors().size(), 3 * springs);
+  EXPECT_EQ(viewer.drawing().quantity_colors().spring_colors().size(), 3 * springs);
 
   fixture.press_key(GLFW_KEY_V);
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::speed);
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::speed);
   fixture.frame();
-  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::speed);
-  EXPECT_GT(viewer.quantity_colors().range(), wobble::QuantityColors::speed_floor)
+  EXPECT_EQ(viewer.drawing().quantity_colors().quantity(), wobble::ColorQuantity::speed);
+  EXPECT_GT(viewer.drawing().quantity_colors().range(), wobble::QuantityColors::speed_floor)
       << "the cloth is falling";
 
   fixture.press_key(GLFW_KEY_V);
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::contacts);
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::contacts);
   fixture.frame();
-  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::contacts);
-  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
-  EXPECT_EQ(viewer.quantity_colors().range(), 0.0f);
+  EXPECT_EQ(viewer.drawing().quantity_colors().quantity(), wobble::ColorQuantity::contacts);
+  EXPECT_EQ(viewer.drawing().quantity_colors().vertex_colors().size(), 3 * vertices);
+  EXPECT_EQ(viewer.drawing().quantity_colors().range(), 0.0f);
 
   // The cloth has no tetrahedra: coloured by volume it is neutral, at the range's floor.
   fixture.press_key(GLFW_KEY_V);
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::volume);
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::volume);
   fixture.frame();
-  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3 * vertices);
-  EXPECT_EQ(viewer.quantity_colors().range(), wobble::QuantityColors::volume_floor);
+  EXPECT_EQ(viewer.drawing().quantity_colors().vertex_colors().size(), 3 * vertices);
+  EXPECT_EQ(viewer.drawing().quantity_colors().range(), wobble::QuantityColors::volume_floor);
 
   fixture.press_key(GLFW_KEY_V);
-  EXPECT_EQ(viewer.color_by(), wobble::ColorQuantity::material);
+  EXPECT_EQ(viewer.panel().color_by(), wobble::ColorQuantity::material);
   fixture.frame();
-  EXPECT_TRUE(viewer.quantity_colors().vertex_colors().empty());
-  EXPECT_TRUE(viewer.quantity_colors().spring_colors().empty());
+  EXPECT_TRUE(viewer.drawing().quantity_colors().vertex_colors().empty());
+  EXPECT_TRUE(viewer.drawing().quantity_colors().spring_colors().empty());
 }
 
 TEST(Viewer, StartsColouredAsAskedAndColoursAPausedShape) {
@@ -344,9 +345,10 @@ TEST(Viewer, StartsColouredAsAskedAndColoursAPausedShape) {
   space.code = GLFW_KEY_SPACE;
   viewer.handle_events({space}, false, false, window);
   viewer.advance();
-  EXPECT_EQ(viewer.simulation().steps_taken(), 0);
-  EXPECT_EQ(viewer.quantity_colors().quantity(), wobble::ColorQuantity::strain);
-  EXPECT_EQ(viewer.quantity_colors().vertex_colors().size(), 3u * viewer.scene().network.V.rows());
+  EXPECT_EQ(viewer.session().simulation().steps_taken(), 0);
+  EXPECT_EQ(viewer.drawing().quantity_colors().quantity(), wobble::ColorQuantity::strain);
+  EXPECT_EQ(viewer.drawing().quantity_colors().vertex_colors().size(),
+            3u * viewer.session().scene().network.V.rows());
 }
 
 }  // namespace
@@ -372,22 +374,24 @@ double largest_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 TEST(SplitView, SameSettingsOnBothSidesStepAlikeToTheBit) {
   const auto owner = split_viewer("iterations=50");
   wobble::Viewer& viewer = *owner;
-  ASSERT_NE(viewer.right_side(), nullptr);
+  ASSERT_NE(viewer.session().right_side(), nullptr);
   for (int frame = 0; frame < 20; ++frame)
     viewer.advance();
-  EXPECT_EQ(viewer.right_side()->steps_taken(), 20);
-  EXPECT_EQ(largest_difference(viewer.simulation().positions(), viewer.right_side()->positions()),
+  EXPECT_EQ(viewer.session().right_side()->steps_taken(), 20);
+  EXPECT_EQ(largest_difference(viewer.session().simulation().positions(),
+                               viewer.session().right_side()->positions()),
             0.0);
 }
 
 TEST(SplitView, FewerIterationsOnTheRightFallDifferently) {
   const auto owner = split_viewer("iterations=5");
   wobble::Viewer& viewer = *owner;
-  EXPECT_EQ(viewer.simulation().params().iterations, 50);
-  EXPECT_EQ(viewer.right_side()->params().iterations, 5);
+  EXPECT_EQ(viewer.session().simulation().params().iterations, 50);
+  EXPECT_EQ(viewer.session().right_side()->params().iterations, 5);
   for (int frame = 0; frame < 30; ++frame)
     viewer.advance();
-  EXPECT_GT(largest_difference(viewer.simulation().positions(), viewer.right_side()->positions()),
+  EXPECT_GT(largest_difference(viewer.session().simulation().positions(),
+                               viewer.session().right_side()->positions()),
             0.05);
 }
 
@@ -399,22 +403,22 @@ TEST(SplitView, HalfTheTimeStepStepsTwiceAFrameAndKeepsTheSameClock) {
   wobble::Viewer& viewer = *owner;
   for (int frame = 0; frame < 12; ++frame)
     viewer.advance();
-  EXPECT_EQ(viewer.right_side()->steps_taken(), 24);
-  EXPECT_NEAR(viewer.right_side()->time(), viewer.simulation().time(), 1e-12);
+  EXPECT_EQ(viewer.session().right_side()->steps_taken(), 24);
+  EXPECT_NEAR(viewer.session().right_side()->time(), viewer.session().simulation().time(), 1e-12);
 }
 
 TEST(SplitView, ADragActsOnBothSides) {
   const auto owner = split_viewer("iterations=5");
   wobble::Viewer& viewer = *owner;
-  const std::vector<int> pins = viewer.simulation().pinned_vertices();
+  const std::vector<int> pins = viewer.session().simulation().pinned_vertices();
   ASSERT_FALSE(pins.empty());
   const int pin = pins.front();
   // Where the pin is drawn in the right half: the same place as in the left, half a window on.
   const Eigen::Vector2f half(640.0f, 720.0f);
   const Eigen::Matrix4f view_projection =
-      wobble::projection_matrix(viewer.camera(), half.x() / half.y()) *
-      wobble::view_matrix(viewer.camera());
-  const Eigen::Vector3f p = viewer.simulation().positions().row(pin).cast<float>();
+      wobble::projection_matrix(viewer.drawing().camera(), half.x() / half.y()) *
+      wobble::view_matrix(viewer.drawing().camera());
+  const Eigen::Vector3f p = viewer.session().simulation().positions().row(pin).cast<float>();
   const Eigen::Vector2f at =
       wobble::project_to_window(view_projection, p, half)->head<2>() + Eigen::Vector2f(640, 0);
   const auto send = [&](InputEvent::Type type, const Eigen::Vector2f& where) {
@@ -425,7 +429,7 @@ TEST(SplitView, ADragActsOnBothSides) {
     event.y = where.y();
     viewer.handle_events({event}, false, false, window);
   };
-  const Eigen::Vector3d before = viewer.simulation().pin_target(pin);
+  const Eigen::Vector3d before = viewer.session().simulation().pin_target(pin);
   send(InputEvent::Type::cursor_move, at);
   send(InputEvent::Type::button_press, at);
   for (int step = 1; step <= 10; ++step) {
@@ -434,28 +438,28 @@ TEST(SplitView, ADragActsOnBothSides) {
     viewer.render(1280, 720, window, 1.0f);
   }
   send(InputEvent::Type::button_release, at + Eigen::Vector2f(0.0f, 100.0f));
-  const Eigen::Vector3d after = viewer.simulation().pin_target(pin);
+  const Eigen::Vector3d after = viewer.session().simulation().pin_target(pin);
   EXPECT_LT(after.y(), before.y() - 0.05) << "dragged down in the right half";
-  EXPECT_EQ((viewer.right_side()->pin_target(pin) - after).norm(), 0.0);
+  EXPECT_EQ((viewer.session().right_side()->pin_target(pin) - after).norm(), 0.0);
   // The right side's pinned corner is where the left side's is: both were pulled.
-  EXPECT_LT((viewer.right_side()->positions().row(pin).transpose() - after).norm(), 1e-6);
+  EXPECT_LT((viewer.session().right_side()->positions().row(pin).transpose() - after).norm(), 1e-6);
 }
 
 TEST(SplitView, KeyTwoTogglesItAndResetStartsBothSidesAgain) {
   ViewerFixture fixture;
-  EXPECT_EQ(fixture.viewer.right_side(), nullptr);
+  EXPECT_EQ(fixture.viewer.session().right_side(), nullptr);
   fixture.press_key(GLFW_KEY_2);
-  ASSERT_NE(fixture.viewer.right_side(), nullptr);
-  EXPECT_EQ(fixture.viewer.right_side()->params().iterations, 5);  // a tenth of 50
+  ASSERT_NE(fixture.viewer.session().right_side(), nullptr);
+  EXPECT_EQ(fixture.viewer.session().right_side()->params().iterations, 5);  // a tenth of 50
   for (int frame = 0; frame < 5; ++frame)
     fixture.frame();
   fixture.press_key(GLFW_KEY_R);
-  EXPECT_EQ(fixture.viewer.right_side()->steps_taken(), 0);
-  EXPECT_EQ(largest_difference(fixture.viewer.right_side()->positions(),
-                               fixture.viewer.simulation().positions()),
+  EXPECT_EQ(fixture.viewer.session().right_side()->steps_taken(), 0);
+  EXPECT_EQ(largest_difference(fixture.viewer.session().right_side()->positions(),
+                               fixture.viewer.session().simulation().positions()),
             0.0);
   fixture.press_key(GLFW_KEY_2);
-  EXPECT_EQ(fixture.viewer.right_side(), nullptr);
+  EXPECT_EQ(fixture.viewer.session().right_side(), nullptr);
 }
 
 TEST(SplitView, EachSideIsColouredByItsOwnShapeInOneRange) {
@@ -468,10 +472,10 @@ TEST(SplitView, EachSideIsColouredByItsOwnShapeInOneRange) {
   for (int frame = 0; frame < 20; ++frame)
     viewer.advance();
   // The left side's colours are its own: they differ from what the right side's shape gives.
-  const wobble::QuantityColors& left = viewer.quantity_colors();
+  const wobble::QuantityColors& left = viewer.drawing().quantity_colors();
   wobble::QuantityColors right;
-  right.measure(wobble::ColorQuantity::strain, *viewer.right_side());
-  right.paint(*viewer.right_side(), left.range(), false);
+  right.measure(wobble::ColorQuantity::strain, *viewer.session().right_side());
+  right.paint(*viewer.session().right_side(), left.range(), false);
   EXPECT_EQ(left.vertex_colors().size(), right.vertex_colors().size());
   EXPECT_NE(left.vertex_colors(), right.vertex_colors());
   // One range for both: five iterations leave the right side stretchier, so the left side is
@@ -482,33 +486,34 @@ TEST(SplitView, EachSideIsColouredByItsOwnShapeInOneRange) {
 // Issue 16: what a class hits in a demo.
 TEST(Viewer, RestoreDefaultsBringsBackTheSceneAsItOpened) {
   ViewerFixture f;
-  const wobble::SimulationParams opened = f.viewer.simulation().params();
+  const wobble::SimulationParams opened = f.viewer.session().simulation().params();
   // Change k, the iterations and the pins as the panel's sliders and a Ctrl+click would (the
   // panel needs an ImGui frame, so the test reaches the simulation directly).
-  wobble::Simulation& simulation = const_cast<wobble::Simulation&>(f.viewer.simulation());
+  wobble::Simulation& simulation = const_cast<wobble::Simulation&>(f.viewer.session().simulation());
   simulation.apply(wobble::with_setting(simulation.params(), "k", 5000.0));
   simulation.apply(wobble::with_setting(simulation.params(), "iterations", 7.0));
   simulation.unpin(simulation.pinned_vertices().front());
   for (int frame = 0; frame < 5; ++frame)
     f.frame();
-  f.viewer.restore_defaults();
-  EXPECT_EQ(f.viewer.simulation().params().k, opened.k);
-  EXPECT_EQ(f.viewer.simulation().params().iterations, opened.iterations);
-  EXPECT_EQ(f.viewer.simulation().pin_count(), 2);
-  EXPECT_EQ(f.viewer.simulation().steps_taken(), 0);
+  // What "Restore defaults" loads: the scene as it opened, which the session keeps.
+  f.viewer.load(wobble::Scene(f.viewer.session().scene()));
+  EXPECT_EQ(f.viewer.session().simulation().params().k, opened.k);
+  EXPECT_EQ(f.viewer.session().simulation().params().iterations, opened.iterations);
+  EXPECT_EQ(f.viewer.session().simulation().pin_count(), 2);
+  EXPECT_EQ(f.viewer.session().simulation().steps_taken(), 0);
 }
 
 TEST(Viewer, AFreeVertexHeldByTheMouseIsNotCountedAsAPin) {
   ViewerFixture f;
   const int corner = 40 * 39;  // a bottom corner of the 40×40 cloth, free
-  ASSERT_FALSE(f.viewer.simulation().is_pinned(corner));
+  ASSERT_FALSE(f.viewer.session().simulation().is_pinned(corner));
   const Eigen::Vector2f at = f.on_screen(corner);
   f.send(InputEvent::Type::cursor_move, at);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT);
-  ASSERT_EQ(f.viewer.simulation().pin_count(), 3) << "held: pinned for the drag";
-  EXPECT_EQ(f.viewer.stats().pins, 2);
+  ASSERT_EQ(f.viewer.session().simulation().pin_count(), 3) << "held: pinned for the drag";
+  EXPECT_EQ(f.viewer.session().stats().pins, 2);
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
-  EXPECT_EQ(f.viewer.stats().pins, 2);
+  EXPECT_EQ(f.viewer.session().stats().pins, 2);
 }
 
 TEST(Viewer, PausedAndUntouchedItNeedsNoFrames) {
@@ -531,14 +536,15 @@ TEST(Viewer, PausedAndUntouchedItNeedsNoFrames) {
 
 TEST(Viewer, AFileDroppedOrTypedOpensAndABadOneLeavesTheSceneRunning) {
   ViewerFixture f;
-  EXPECT_TRUE(f.viewer.open_file(std::string(WOBBLE_ASSETS_DIR) + "/course/rope.json"));
-  EXPECT_EQ(f.viewer.scene().name, "rope");
-  const std::size_t notes = f.viewer.scene().notes.size();
-  EXPECT_FALSE(f.viewer.open_file("/nonexistent/scene.json"));
-  EXPECT_EQ(f.viewer.scene().name, "rope") << "the current scene keeps running";
-  ASSERT_EQ(f.viewer.scene().notes.size(), notes + 1);
-  EXPECT_NE(f.viewer.scene().notes.back().find("/nonexistent/scene.json"), std::string::npos)
-      << f.viewer.scene().notes.back();
+  EXPECT_TRUE(f.viewer.files().open_file(std::string(WOBBLE_ASSETS_DIR) + "/course/rope.json"));
+  EXPECT_EQ(f.viewer.session().scene().name, "rope");
+  const std::size_t notes = f.viewer.session().scene().notes.size();
+  EXPECT_FALSE(f.viewer.files().open_file("/nonexistent/scene.json"));
+  EXPECT_EQ(f.viewer.session().scene().name, "rope") << "the current scene keeps running";
+  ASSERT_EQ(f.viewer.session().scene().notes.size(), notes + 1);
+  EXPECT_NE(f.viewer.session().scene().notes.back().find("/nonexistent/scene.json"),
+            std::string::npos)
+      << f.viewer.session().scene().notes.back();
 }
 
 // The page puts dropped files in a folder of its own; what went wrong names them as the user
@@ -551,10 +557,11 @@ TEST(Viewer, ADroppedFilesReasonNamesItWithoutThePagesFolder) {
   std::filesystem::copy_file(std::string(WOBBLE_ASSETS_DIR) + "/course/banner.json",
                              dropped + "/banner.json");
   for (const bool page : {true, false}) {
-    ViewerFixture f;
-    if (page) f.viewer.set_page_actions(wobble::Viewer::PageActions{[] {}, [] {}});
-    EXPECT_FALSE(f.viewer.open_files({dropped + "/banner.json"}));
-    const std::string& told = f.viewer.scene().notes.back();
+    wobble::ViewerSettings settings;
+    if (page) settings.page = wobble::PageActions{[] {}, [] {}};
+    ViewerFixture f(settings);
+    EXPECT_FALSE(f.viewer.files().open_files({dropped + "/banner.json"}));
+    const std::string& told = f.viewer.session().scene().notes.back();
     if (page) {
       EXPECT_EQ(told.find(dropped), std::string::npos) << told;
       EXPECT_EQ(told.rfind("banner.json", 0), 0u) << told;
@@ -576,9 +583,9 @@ TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
     f.press_key(GLFW_KEY_F11);
     EXPECT_TRUE(std::filesystem::exists("wobble-cloth-0001.obj"));
     EXPECT_TRUE(std::filesystem::exists("wobble-cloth-0002.obj"));
-    EXPECT_NE(f.viewer.scene().notes.back().find("exported ./wobble-cloth-0002.obj"),
+    EXPECT_NE(f.viewer.session().scene().notes.back().find("exported ./wobble-cloth-0002.obj"),
               std::string::npos)
-        << f.viewer.scene().notes.back();
+        << f.viewer.session().scene().notes.back();
     // The file holds the positions after the step, not the rest shape.
     std::ifstream obj("wobble-cloth-0001.obj");
     std::string line;
@@ -587,7 +594,7 @@ TEST(Viewer, F11ExportsTheCurrentPositionsWithoutReplacingAnEarlierExport) {
     char v = 0;
     obj >> v >> x >> y >> z;
     EXPECT_EQ(v, 'v');
-    EXPECT_DOUBLE_EQ(y, f.viewer.simulation().positions()(0, 1));
+    EXPECT_DOUBLE_EQ(y, f.viewer.session().simulation().positions()(0, 1));
   }
   std::filesystem::current_path(before);
 }
@@ -607,63 +614,66 @@ TEST(Viewer, CtrlSSavesTheSceneWithItsPinsAndSettingsAndItOpensSo) {
     f.press_key(GLFW_KEY_S, /*control=*/true);
     f.press_key(GLFW_KEY_S, /*control=*/true);
     ASSERT_TRUE(std::filesystem::exists("wobble-cloth-scene-0001.json"))
-        << f.viewer.scene().notes.back();
+        << f.viewer.session().scene().notes.back();
     EXPECT_TRUE(std::filesystem::exists("wobble-cloth-scene-0001.obj"));
     EXPECT_TRUE(std::filesystem::exists("wobble-cloth-scene-0002.json"));
-    EXPECT_NE(f.viewer.scene().notes.back().find("saved the scene as ./wobble-cloth-scene-0002"),
+    EXPECT_NE(f.viewer.session().scene().notes.back().find(
+                  "saved the scene as ./wobble-cloth-scene-0002"),
               std::string::npos)
-        << f.viewer.scene().notes.back();
+        << f.viewer.session().scene().notes.back();
     // It says so on screen for a while, and the picker offers it under its own name.
-    const std::vector<std::string> shown = f.viewer.notices().shown(wobble::notice_clock());
+    const std::vector<std::string> shown = f.viewer.files().notices().shown(wobble::notice_clock());
     ASSERT_EQ(shown.size(), 2u);
     EXPECT_NE(shown.back().find("wobble-cloth-scene-0002.json"), std::string::npos) << shown.back();
-    EXPECT_TRUE(f.viewer.notices().shown(wobble::notice_clock() + 60.0).empty());
-    const std::vector<std::string>& labels = f.viewer.scene_labels();
+    EXPECT_TRUE(f.viewer.files().notices().shown(wobble::notice_clock() + 60.0).empty());
+    const std::vector<std::string>& labels = f.viewer.session().scene_labels();
     EXPECT_NE(std::find(labels.begin(), labels.end(), "wobble-cloth-scene-0001"), labels.end());
     const wobble::Scene saved = wobble::load_scene("wobble-cloth-scene-0001.json");
     EXPECT_EQ(saved.name, "wobble-cloth-scene-0001");
     std::vector<int> pins = saved.pins;
     std::sort(pins.begin(), pins.end());
-    EXPECT_EQ(pins, f.viewer.simulation().pinned_vertices());
+    EXPECT_EQ(pins, f.viewer.session().simulation().pinned_vertices());
     EXPECT_TRUE(std::find(pins.begin(), pins.end(), vertex) != pins.end());
     EXPECT_TRUE(saved.params.wind.on);
-    EXPECT_EQ(saved.params.k, f.viewer.simulation().params().k);
+    EXPECT_EQ(saved.params.k, f.viewer.session().simulation().params().k);
     // It opens at the camera the window had.
     ASSERT_TRUE(saved.look.camera_position.has_value());
-    EXPECT_LT(
-        (saved.look.camera_position->cast<float>() - wobble::camera_eye(f.viewer.camera())).norm(),
-        1e-4f);
+    EXPECT_LT((saved.look.camera_position->cast<float>() -
+               wobble::camera_eye(f.viewer.drawing().camera()))
+                  .norm(),
+              1e-4f);
   }
   std::filesystem::current_path(before);
 }
 
 TEST(Viewer, TabHidesThePanel) {
   ViewerFixture f;
-  EXPECT_TRUE(f.viewer.panel_shown());
+  EXPECT_TRUE(f.viewer.panel().shown());
   f.press_key(GLFW_KEY_TAB);
-  EXPECT_FALSE(f.viewer.panel_shown());
+  EXPECT_FALSE(f.viewer.panel().shown());
   f.press_key(GLFW_KEY_TAB);
-  EXPECT_TRUE(f.viewer.panel_shown());
+  EXPECT_TRUE(f.viewer.panel().shown());
 }
 
 TEST(Viewer, APinDraggedWhilePausedIsDrawnAtItsTargetAndStepMovesIt) {
   ViewerFixture f;
   f.press_key(GLFW_KEY_SPACE);  // pause
-  const int pin = f.viewer.simulation().pinned_vertices().front();
-  const Eigen::Vector3d before = f.viewer.simulation().positions().row(pin).transpose();
+  const int pin = f.viewer.session().simulation().pinned_vertices().front();
+  const Eigen::Vector3d before = f.viewer.session().simulation().positions().row(pin).transpose();
   const Eigen::Vector2f at = f.on_screen(pin);
   f.send(InputEvent::Type::cursor_move, at);
   f.send(InputEvent::Type::button_press, at, GLFW_MOUSE_BUTTON_LEFT);
   f.send(InputEvent::Type::cursor_move, at + Eigen::Vector2f(0.0f, 80.0f));
   f.viewer.render(1280, 720, window, 1.0f);
-  const Eigen::Vector3d target = f.viewer.simulation().pin_target(pin);
+  const Eigen::Vector3d target = f.viewer.session().simulation().pin_target(pin);
   ASSERT_GT((target - before).norm(), 0.05) << "the drag moved the target";
-  EXPECT_EQ(f.viewer.simulation().positions().row(pin).transpose(), before) << "paused";
-  const std::vector<float>& drawn = f.viewer.drawn_positions();
+  EXPECT_EQ(f.viewer.session().simulation().positions().row(pin).transpose(), before) << "paused";
+  const std::vector<float>& drawn = f.viewer.drawing().drawn_positions();
   EXPECT_NEAR(drawn[3 * pin + 1], target.y(), 1e-6) << "drawn at the target while paused";
   f.press_key(GLFW_KEY_S);
   f.frame();
-  EXPECT_LT((f.viewer.simulation().positions().row(pin).transpose() - target).norm(), 1e-6)
+  EXPECT_LT((f.viewer.session().simulation().positions().row(pin).transpose() - target).norm(),
+            1e-6)
       << "one step takes the pin to its target";
   f.send(InputEvent::Type::button_release, at, GLFW_MOUSE_BUTTON_LEFT);
 }

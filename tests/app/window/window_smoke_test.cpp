@@ -1,9 +1,9 @@
 // The real window, under a virtual X server (xvfb-run), as a user on a desktop would see it.
 #include <gtest/gtest.h>
 
-#include "cloth_pixels.h"
+#include "../cloth_pixels.h"
+#include "../run_wobble.h"
 #include "io/png_image.h"
-#include "run_wobble.h"
 
 namespace {
 
