@@ -16,6 +16,7 @@ cd "$(dirname "$0")/.."
 source scripts/ensure-packages.sh
 ensure_packages test
 build_wobble -DWOBBLE_BUILD_TESTS=ON
+cmake --build build --parallel "$(nproc)" --target wobble_benchmark wobble_busy_neighbour
 if [ "${1:-}" = --busy-neighbour ]; then
   shift
   exec build/tests/wobble_busy_neighbour "$@"

@@ -35,6 +35,9 @@ class GlfwWindow {
   static void wake();
   // Paths of the files dropped on the window since the last call, in the order dropped.
   std::vector<std::string> take_dropped_paths();
+  // Whether events or dropped files wait for the next poll_events or take_dropped_paths (those
+  // the window system has already handed over: the page's are, as they happen).
+  bool input_waiting() const { return !events_.empty() || !dropped_.empty(); }
   void window_size(int& width, int& height) const;       // in window coordinates
   void framebuffer_size(int& width, int& height) const;  // in pixels
   float content_scale() const;  // 1 on ordinary screens, 2 on most high-DPI ones

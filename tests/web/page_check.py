@@ -79,6 +79,7 @@ class Chromium:
         self.writer = os.fdopen(to_chromium_write, 'wb')
         self.reader = os.fdopen(from_chromium_read, 'rb')
         self.next_id = 0
+        self.pending = bytearray()  # read from the pipe, not yet a whole message
         self.console = []
         self.events = []  # the protocol's events, as call() read them past its replies
         self.session = None
@@ -88,14 +89,18 @@ class Chromium:
                                  {'targetId': page['targetId'], 'flatten': True})['sessionId']
 
     def _read_message(self):
-        data = bytearray()
+        # Messages end with a NUL. Read in blocks: a screenshot is megabytes, which a byte at a
+        # time took a second of Python each.
         while True:
-            byte = self.reader.read(1)
-            if not byte:
+            end = self.pending.find(b'\0')
+            if end >= 0:
+                message = self.pending[:end]
+                del self.pending[:end + 1]
+                return json.loads(message)
+            block = self.reader.read1(1 << 20)
+            if not block:
                 raise RuntimeError('Chromium closed its protocol pipe')
-            if byte == b'\0':
-                return json.loads(data)
-            data += byte
+            self.pending += block
 
     def call(self, method, params=None):
         self.next_id += 1
@@ -175,6 +180,29 @@ def compare(actual, golden, tolerance):
     return differing / (width * height), diff
 
 
+def idle_failure(browser):
+    """At rest (the address's steps taken, no input) the page draws a frame about once a second,
+    not at the browser's rate (in software, two cores drawing the same picture); a mouse moving
+    over it draws at the browser's rate (in SwiftShader about 12 frames a second at 1280x720).
+    The failure, or None."""
+    frames = 'Module.wobbleFrames'
+    before = browser.evaluate(frames)
+    time.sleep(3.0)
+    at_rest = browser.evaluate(frames) - before
+    before = browser.evaluate(frames)
+    for step in range(10):
+        browser.call('Input.dispatchMouseEvent',
+                     {'type': 'mouseMoved', 'x': 1000 + 5 * step, 'y': 400})
+        time.sleep(0.1)
+    moved = browser.evaluate(frames) - before
+    print(f'page_check: at rest {at_rest} frames in 3 s; {moved} in the second the mouse moved')
+    if at_rest > 5:
+        return f'the page at rest drew {at_rest} frames in 3 s (at most 5: about one a second)'
+    if moved < 6:
+        return f'the page drew {moved} frames in the second the mouse moved (at least 6)'
+    return None
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     parser.add_argument('site')
@@ -190,6 +218,9 @@ def main():
     parser.add_argument('--out', default=None, help='where a failure writes its images')
     parser.add_argument('--update', action='store_true', help='write the golden image')
     parser.add_argument('--expect-mismatch', action='store_true')
+    parser.add_argument('--idle-check', action='store_true',
+                        help='also check that the page at rest redraws about once a second, and '
+                             'at the browser\'s rate again once the mouse moves')
     args = parser.parse_args()
     width, height = (int(value) for value in args.size.split('x'))
     steps = int(dict(pair.split('=') for pair in args.query.split('&') if '=' in pair)
@@ -240,6 +271,8 @@ def main():
             failure = failure or (f'first frame after {first_frame:.1f} s, more than '
                                   f'{args.first_frame_limit:.0f} s')
         shot = base64.b64decode(browser.call('Page.captureScreenshot', {'format': 'png'})['data'])
+        if args.idle_check and not failure:
+            failure = idle_failure(browser)
     finally:
         console = browser.console
         browser.close()

@@ -55,16 +55,32 @@ float page_pixel_ratio() {
 // device pixels, so that a high-DPI screen shows it sharp. The window's units are then device
 // pixels too (emscripten's GLFW scales the mouse to the drawing buffer), and the panel is drawn
 // `ratio` times larger, so it keeps its size on the screen.
-void follow_page_size(GlfwWindow& window, float ratio) {
+struct PageSize {
+  int width = 0, height = 0;
+};
+
+// The drawing buffer's size the page asks for at pixel ratio `ratio`, or 0 x 0 before the canvas
+// has one.
+PageSize wanted_page_size(float ratio) {
   double css_width = 0.0, css_height = 0.0;
   emscripten_get_element_css_size("#canvas", &css_width, &css_height);
+  return {static_cast<int>(std::lround(css_width * ratio)),
+          static_cast<int>(std::lround(css_height * ratio))};
+}
+
+// Whether the drawing buffer must change size: the page asks for another.
+bool page_size_changed(const GlfwWindow& window, float ratio) {
+  const PageSize wanted = wanted_page_size(ratio);
   int width = 0, height = 0;
   window.window_size(width, height);
-  const int wanted_width = static_cast<int>(std::lround(css_width * ratio)),
-            wanted_height = static_cast<int>(std::lround(css_height * ratio));
-  if (wanted_width > 0 && wanted_height > 0 && (wanted_width != width || wanted_height != height)) {
-    glfwSetWindowSize(window.handle(), wanted_width, wanted_height);
-  }
+  return wanted.width > 0 && wanted.height > 0 &&
+         (wanted.width != width || wanted.height != height);
+}
+
+void follow_page_size(GlfwWindow& window, float ratio) {
+  if (!page_size_changed(window, ratio)) return;
+  const PageSize wanted = wanted_page_size(ratio);
+  glfwSetWindowSize(window.handle(), wanted.width, wanted.height);
 }
 
 // The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, and the canvas
@@ -99,6 +115,18 @@ class PageHost : public FrameHost {
     }
     input.dropped_paths = take_dropped_paths();
     return input;
+  }
+  // Whether anything waits that poll would take: input, a wheel's notches, a pinch or swipe, files
+  // opened, or a page of another size or pixel ratio.
+  bool input_waiting() const {
+    return window_.input_waiting() || !wheel_.empty() || pinch_notches_ != 0.0 ||
+           panel_swipe_ != 0.0f || page_pixel_ratio() != ui_.scale() ||
+           page_size_changed(window_, ui_.scale()) ||
+           EM_ASM_INT({
+             return typeof Module.wobbleOpenedWaiting == 'function' && Module.wobbleOpenedWaiting()
+                        ? 1
+                        : 0;
+           }) != 0;
   }
   void wheel(double notches) {
     if (notches != 0.0) wheel_.push_back(notches);
@@ -222,7 +250,9 @@ struct BrowserApp {
   std::unique_ptr<PageHost> host;
   FrameMeters meters;  // the panel's fps, UI frame time and real-time factor
   CommandLine command;
-  bool bench = false;  // ?bench: measure the step once the page shows the scene
+  bool bench = false;       // ?bench: measure the step once the page shows the scene
+  int quiet_frames = 0;     // frames drawn since the last input
+  double last_drawn = 0.0;  // when the last frame was drawn (s, seconds_now)
 };
 
 BrowserApp* the_app = nullptr;  // for the page's calls into the program (wobble_pinch)
@@ -295,8 +325,25 @@ void frame_or_report(void* app_pointer) {
       app.bench = false;
       run_bench(app);
     }
+    // With nothing new to show (paused, at the address's step limit or by the user, and no
+    // input for a few frames) the page draws the same picture only every idle_redraw_seconds,
+    // as the window waits for input: a page left open in a lecture keeps no core busy (it took
+    // nearly two cores drawing the same frame in software at the browser's rate). ImGui settles
+    // a click or a hover over a few frames, so the page only idles after settle_frames frames
+    // without input; the periodic frame shows a notice that timed out.
+    constexpr int settle_frames = 3;
+    constexpr double idle_redraw_seconds = 1.0;
+    const double now = seconds_now();
+    if (app.host->input_waiting()) {
+      app.quiet_frames = 0;
+    } else if (app.quiet_frames >= settle_frames && !app.viewer.animating() &&
+               now - app.last_drawn < idle_redraw_seconds) {
+      return;
+    }
     draw_frame(app.viewer, *app.host, app.meters, FramePolicy(), app.host->scale());
     app.host->report(app.viewer);
+    app.last_drawn = now;
+    ++app.quiet_frames;
   } catch (const std::exception& error) {
     std::cerr << "wobble: error: " << error.what() << "\n";
   }
