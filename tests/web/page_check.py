@@ -198,8 +198,8 @@ def idle_failure(browser):
     print(f'page_check: at rest {at_rest} frames in 3 s; {moved} in the second the mouse moved')
     if at_rest > 5:
         return f'the page at rest drew {at_rest} frames in 3 s (at most 5: about one a second)'
-    if moved < 6:
-        return f'the page drew {moved} frames in the second the mouse moved (at least 6)'
+    if moved < 4:
+        return f'the page drew {moved} frames in the second the mouse moved (at least 4)'
     return None
 
 
