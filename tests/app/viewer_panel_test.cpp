@@ -190,9 +190,12 @@ TEST(ViewerColors, ContactsColourTheVerticesOnACollider) {
       wobble::collider_contact_vertices(viewer.session().simulation().terms());
   const std::vector<float>& colors = viewer.drawing().quantity_colors().vertex_colors();
   ASSERT_EQ(colors.size(), 3 * flags.size());
-  ASSERT_GT(
-      viewer.session().simulation().term<wobble::ColliderContactTerm>()->colliders().contact_count(),
-      0)
+  ASSERT_GT(viewer.session()
+                .simulation()
+                .term<wobble::ColliderContactTerm>()
+                ->colliders()
+                .contact_count(),
+            0)
       << "the cloth lies on the sphere";
   int coloured = 0;
   for (std::size_t i = 0; i < flags.size(); ++i) {

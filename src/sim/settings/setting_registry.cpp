@@ -253,8 +253,7 @@ SettingValue read_setting(const SettingSpec& spec, const std::string& text,
       for (int i = 0; i < 3; ++i) {
         const std::size_t comma = i < 2 ? text.find(',', start) : text.size();
         if (comma == std::string::npos) refuse("three numbers X,Y,Z " + within_text(spec.range));
-        const std::optional<double> value =
-            parse_number<double>(text.substr(start, comma - start));
+        const std::optional<double> value = parse_number<double>(text.substr(start, comma - start));
         if (!value || !spec.range.contains(*value))
           refuse("three numbers X,Y,Z " + within_text(spec.range));
         vector(i) = *value;
