@@ -68,19 +68,22 @@ PageSize wanted_page_size(float ratio) {
           static_cast<int>(std::lround(css_height * ratio))};
 }
 
-// Whether the drawing buffer must change size: the page asks for another.
-bool page_size_changed(const GlfwWindow& window, float ratio) {
-  const PageSize wanted = wanted_page_size(ratio);
+// Whether the drawing buffer must change to `wanted`.
+bool differs_from(const GlfwWindow& window, PageSize wanted) {
   int width = 0, height = 0;
   window.window_size(width, height);
   return wanted.width > 0 && wanted.height > 0 &&
          (wanted.width != width || wanted.height != height);
 }
 
+// Whether the page asks for another drawing buffer size at pixel ratio `ratio`.
+bool page_size_changed(const GlfwWindow& window, float ratio) {
+  return differs_from(window, wanted_page_size(ratio));
+}
+
 void follow_page_size(GlfwWindow& window, float ratio) {
-  if (!page_size_changed(window, ratio)) return;
   const PageSize wanted = wanted_page_size(ratio);
-  glfwSetWindowSize(window.handle(), wanted.width, wanted.height);
+  if (differs_from(window, wanted)) glfwSetWindowSize(window.handle(), wanted.width, wanted.height);
 }
 
 // The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, and the canvas
