@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "../io/temporary_folder.h"
+#include "../sim/volume_outcome.h"
 #include "run_wobble.h"
 #include "sim/instruments/rigid_fit.h"
 #include "sim/shapes/builtin_scenes.h"
@@ -27,10 +28,7 @@ namespace {
 using wobble::testing::read_text;
 using wobble::testing::run_wobble;
 
-struct Outcome {
-  double shape_error = 1.0;  // RMS from the best rigid placement of the rest shape / diagonal
-  long inverted = -1;        // tetrahedra whose signed volume lost its rest sign
-};
+using Outcome = wobble::testing::VolumeOutcome;
 
 // The `v` lines of an OBJ file, in order (#V by 3).
 Eigen::MatrixXd obj_positions(const std::string& text) {
@@ -48,13 +46,6 @@ Eigen::MatrixXd obj_positions(const std::string& text) {
   for (std::size_t i = 0; i < rows.size(); ++i)
     positions.row(static_cast<Eigen::Index>(i)) = rows[i].transpose();
   return positions;
-}
-
-double signed_volume(const Eigen::MatrixXi& T, const Eigen::MatrixXd& p, Eigen::Index t) {
-  Eigen::Matrix3d D;
-  for (int c = 0; c < 3; ++c)
-    D.col(c) = (p.row(T(t, c + 1)) - p.row(T(t, 0))).transpose();
-  return D.determinant();
 }
 
 // Vertex (i, j, k) of the shipped jelly, a block of resolution 8 (jelly_block.h); j is up.
@@ -77,19 +68,12 @@ Outcome run_jelly(const std::vector<std::string>& drags, long frames, const std:
   EXPECT_EQ(result.exit_code, 0) << arguments << "\n" << result.err;
   const wobble::Scene scene = wobble::make_builtin_scene("jelly");
   const Eigen::MatrixXd p = obj_positions(read_text(obj));
-  Outcome outcome;
   if (p.rows() != scene.network.V.rows()) {
     ADD_FAILURE() << "the OBJ holds " << p.rows() << " vertices, the jelly "
                   << scene.network.V.rows();
-    return outcome;
+    return Outcome();
   }
-  const wobble::SpringNetwork& rest = scene.network;
-  outcome.shape_error = wobble::rigid_fit_rms(rest.V, p) / wobble::bounding_diagonal(rest.V);
-  outcome.inverted = 0;
-  for (Eigen::Index t = 0; t < rest.T.rows(); ++t) {
-    if (!(signed_volume(rest.T, p, t) * signed_volume(rest.T, rest.V, t) > 0.0)) ++outcome.inverted;
-  }
-  return outcome;
+  return wobble::testing::volume_outcome(scene.network, p);
 }
 
 // A drag of `vertex` by `offset` (m) over frames first to last, then held where it is for
@@ -106,15 +90,8 @@ constexpr long two_seconds = 2 * frames_a_second;
 
 void expect_back(const char* name, const std::vector<std::string>& drags, long frames,
                  const std::string& solver) {
-  const Outcome with = run_jelly(drags, frames, solver, true);
-  const Outcome without = run_jelly(drags, frames, solver, false);
-  std::printf("[%s] %s: with the term %.4f (%ld inverted), without %.4f (%ld inverted)\n",
-              solver.c_str(), name, with.shape_error, with.inverted, without.shape_error,
-              without.inverted);
-  EXPECT_LE(with.shape_error, 0.03) << name;
-  EXPECT_EQ(with.inverted, 0) << name;
-  // Without the term the network keeps the inside-out shape as a rest state.
-  EXPECT_TRUE(without.shape_error > 0.03 || without.inverted > 0) << name;
+  wobble::testing::expect_comes_back(name, solver, run_jelly(drags, frames, solver, true),
+                                     run_jelly(drags, frames, solver, false));
 }
 
 class VolumeInversionCommandLine : public ::testing::TestWithParam<std::string> {};

@@ -18,36 +18,16 @@
 #include "sim/shapes/jelly_block.h"
 #include "sim/simulation.h"
 #include "sim/volume/volume_term.h"
+#include "volume_outcome.h"
 
 namespace {
 
 using wobble::Simulation;
 
-struct Outcome {
-  double shape_error = 0.0;  // RMS from the best rigid placement of the rest shape / diagonal
-  long inverted = 0;         // tetrahedra with det F <= 0
-};
-
-// Signed volume (times 6) of tetrahedron t at positions p.
-double signed_volume(const Eigen::MatrixXi& T, const Eigen::MatrixXd& p, Eigen::Index t) {
-  Eigen::Matrix3d D;
-  for (int c = 0; c < 3; ++c)
-    D.col(c) = (p.row(T(t, c + 1)) - p.row(T(t, 0))).transpose();
-  return D.determinant();
-}
-
-// The tetrahedra whose signed volume no longer has its rest sign.
-long inverted_tets(const wobble::SpringNetwork& rest, const Eigen::MatrixXd& p) {
-  long inverted = 0;
-  for (Eigen::Index t = 0; t < rest.T.rows(); ++t) {
-    if (!(signed_volume(rest.T, p, t) * signed_volume(rest.T, rest.V, t) > 0.0)) ++inverted;
-  }
-  return inverted;
-}
+using Outcome = wobble::testing::VolumeOutcome;
 
 Outcome outcome(const wobble::SpringNetwork& rest, const Simulation& simulation) {
-  return {wobble::rigid_fit_rms(rest.V, simulation.positions()) / wobble::bounding_diagonal(rest.V),
-          inverted_tets(rest, simulation.positions())};
+  return wobble::testing::volume_outcome(rest, simulation.positions());
 }
 
 // The shipped jelly (its base pinned), with the term at its scene's stiffness or off.
@@ -136,15 +116,7 @@ class VolumeTerm : public ::testing::TestWithParam<std::string> {};
 
 void expect_back(const char* name, Outcome (*scenario)(const std::string&, bool),
                  const std::string& solver) {
-  const Outcome with = scenario(solver, true);
-  const Outcome without = scenario(solver, false);
-  std::printf("[%s] %s: with the term %.4f (%ld inverted), without %.4f (%ld inverted)\n",
-              solver.c_str(), name, with.shape_error, with.inverted, without.shape_error,
-              without.inverted);
-  EXPECT_LE(with.shape_error, 0.03) << name;
-  EXPECT_EQ(with.inverted, 0) << name;
-  // Without the term the network keeps the inside-out shape as a rest state.
-  EXPECT_TRUE(without.shape_error > 0.03 || without.inverted > 0) << name;
+  wobble::testing::expect_comes_back(name, solver, scenario(solver, true), scenario(solver, false));
 }
 
 TEST_P(VolumeTerm, TheIssuesDragComesBack) {
