@@ -12,8 +12,9 @@ namespace wobble {
 // a right-handed R, and a term pulling F toward it turns the tetrahedron the right way out.
 // Turned toward it from `q`, the last answer (warm start), which receives the new one: Newton's
 // update of tr(RᵀF) where it is concave, else Müller et al.'s ("A Robust Method to Extract the
-// Rotational Part of Deformations", 2016). Stops after a Newton update that turned by less than
-// `tolerance` (rad) or after `most` updates.
+// Rotational Part of Deformations", 2016). Stops after `most` updates, or after a Newton update
+// that turned by θ with θ² ≤ `tolerance` (rad), when the next would turn by less than
+// `tolerance`.
 Eigen::Matrix3d nearest_rotation(const Eigen::Matrix3d& F, Eigen::Quaterniond& q, int most = 20,
                                  double tolerance = 1e-12);
 
@@ -45,10 +46,10 @@ class TetRotations {
     return static_cast<long>(single ? single_packs_.size() : packs_.size());
   }
   // Packs [begin, end) of the precision prepare() chose, at the positions p (#V by 3): each
-  // rotation turned `most` times toward its Fₜ (fewer once a Newton update turns by less than
-  // `tolerance` rad), then for each tetrahedron t and corner c the pull, or with `gradient` the
-  // gradient, at out()[at(t, c) + 4i] for coordinate i (N), and with `energy` its energy for
-  // energy().
+  // rotation turned `most` times toward its Fₜ (fewer once the next Newton update would turn by
+  // less than `tolerance` rad: see nearest_rotation), then for each tetrahedron t and corner c the
+  // pull, or with `gradient` the gradient, at out()[at(t, c) + 4i] for coordinate i (N), and with
+  // `energy` its energy for energy().
   void update(const Eigen::MatrixXd& p, long begin, long end, int most, double tolerance,
               bool gradient, bool energy);
   const double* out() const { return reinterpret_cast<const double*>(out_.data()); }

@@ -167,9 +167,9 @@ void VolumeTerm::add_targets(const StepContext& /*step*/, const Eigen::MatrixXd&
 
 double VolumeTerm::add_energy(const StepContext& /*step*/, const Eigen::MatrixXd& p,
                               Eigen::MatrixXd* gradient) const {
-  // Warm-started from the last evaluation's, the rotations are found in two or three Newton
-  // updates; one that turns by less than 1e-7 rad leaves an error of the order of its square,
-  // far below what the energy and the gradient can show.
+  // Warm-started from the last evaluation's, the rotations are found in one to three Newton
+  // updates, stopping once the next would turn by less than 1e-7 rad: an error far below what
+  // the energy and the gradient can show (the energy's is of the order of its square).
   local_step(p, 20, 1e-7, /*gradient=*/true, /*energy=*/true);
   if (gradient) gather(*gradient);
   return rotations_.energy();
