@@ -217,19 +217,11 @@ WOBBLE_TET_INLINE SingleLane to_single(Lane low, Lane high) {
   const HalfSingle b = __builtin_convertvector(high, HalfSingle);
   return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
 }
-WOBBLE_TET_INLINE Lane low_half(SingleLane v) {
-  return __builtin_convertvector(__builtin_shufflevector(v, v, 0, 1, 2, 3), Lane);
-}
-WOBBLE_TET_INLINE Lane high_half(SingleLane v) {
-  return __builtin_convertvector(__builtin_shufflevector(v, v, 4, 5, 6, 7), Lane);
-}
-
 // The local-global iterations' case, 8 tetrahedra in single precision: one update and the pull
-// alone, into the double packs' outputs `low` and `high` (the edges are taken in double, then
-// rounded).
+// alone (the edges are taken in double, then rounded).
 WOBBLE_TET_INLINE void update_single_pack(TetRotations::SinglePack& pack, const int* corner,
-                                          const double* p, long rows, TetRotations::Out& low,
-                                          TetRotations::Out& high) {
+                                          const double* p, long rows,
+                                          TetRotations::SingleOut& out) {
   Lane d_low[9], d_high[9];
   edges_of(corner, p, rows, d_low);
   edges_of(corner + 16, p, rows, d_high);
@@ -238,12 +230,7 @@ WOBBLE_TET_INLINE void update_single_pack(TetRotations::SinglePack& pack, const 
     d[e] = to_single(d_low[e], d_high[e]);
   deformation_of(d, pack.inverse_rest, F);
   turn_toward(F, pack.q, pack.R, 1, 0.0);
-  SingleLane pull[12];
-  pull_of(pack.inverse_rest, pack.weight, pack.R, pull);
-  for (int e = 0; e < 12; ++e) {
-    low.pull[e] = low_half(pull[e]);
-    high.pull[e] = high_half(pull[e]);
-  }
+  pull_of(pack.inverse_rest, pack.weight, pack.R, out.pull);
 }
 
 }  // namespace
@@ -260,9 +247,9 @@ WOBBLE_TET_CLONES void update_tet_packs(TetRotations::Pack* packs, const int* co
 
 WOBBLE_TET_CLONES void update_single_packs(TetRotations::SinglePack* packs, const int* corners,
                                            const double* p, long rows, long begin, long end,
-                                           TetRotations::Out* out) {
+                                           TetRotations::SingleOut* out) {
   for (long k = begin; k < end; ++k)
-    update_single_pack(packs[k], corners + 32 * k, p, rows, out[2 * k], out[2 * k + 1]);
+    update_single_pack(packs[k], corners + 32 * k, p, rows, out[k]);
 }
 
 TetRotations::TetRotations(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T,
@@ -270,6 +257,7 @@ TetRotations::TetRotations(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T,
     : packs_((T.rows() + 3) / 4),
       single_packs_((packs_.size() + 1) / 2),
       out_(2 * single_packs_.size()),
+      single_out_(single_packs_.size()),
       corners_(32 * single_packs_.size()),
       tets_(T.rows()) {
   for (std::size_t k = 0; k < out_.size(); ++k) {
@@ -325,7 +313,7 @@ void TetRotations::update(const Eigen::MatrixXd& p, long begin, long end, int mo
   const long rows = static_cast<long>(p.rows());
   if (single_current_) {
     update_single_packs(single_packs_.data(), corners_.data(), p.data(), rows, begin, end,
-                        out_.data());
+                        single_out_.data());
   } else {
     update_tet_packs(packs_.data(), corners_.data(), p.data(), rows, begin, end, most, tolerance,
                      gradient, out_.data(), energy);

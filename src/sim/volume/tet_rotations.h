@@ -48,14 +48,22 @@ class TetRotations {
   // Packs [begin, end) of the precision prepare() chose, at the positions p (#V by 3): each
   // rotation turned `most` times toward its Fₜ (fewer once the next Newton update would turn by
   // less than `tolerance` rad: see nearest_rotation), then for each tetrahedron t and corner c the
-  // pull, or with `gradient` the gradient, at out()[at(t, c) + 4i] for coordinate i (N), and with
-  // `energy` its energy for energy().
+  // pull, or with `gradient` the gradient (N; see out() and single_out()), and with `energy` its
+  // energy for energy().
   void update(const Eigen::MatrixXd& p, long begin, long end, int most, double tolerance,
               bool gradient, bool energy);
+  // After a double update: the outputs, corner c of tetrahedron t's coordinate i at
+  // out()[at(t, c) + 4i]. After a single one (single_current()): the pulls in float, at
+  // single_out()[single_at(t, c) + 8i].
   const double* out() const { return reinterpret_cast<const double*>(out_.data()); }
   static long at(long t, int c) {
     return static_cast<long>(sizeof(Out) / sizeof(double)) * (t / 4) + 12 * c + t % 4;
   }
+  const float* single_out() const { return reinterpret_cast<const float*>(single_out_.data()); }
+  static long single_at(long t, int c) {
+    return static_cast<long>(sizeof(SingleOut) / sizeof(float)) * (t / 8) + 24 * c + t % 8;
+  }
+  bool single_current() const { return single_current_; }
   // Σₜ of the energies of the last update that asked for them, in the order of t (J).
   double energy() const;
   // Every rotation back to the identity (the rest shape's).
@@ -79,17 +87,22 @@ class TetRotations {
     SingleLane q[4];
     SingleLane R[9];
   };
-  // What the last update gave for a pack of 4, in double whichever precision made it.
+  // What the last double update gave for a pack of 4.
   struct Out {
     Lane pull[12];  // corner c's coordinate i at 3c + i (N)
     Lane energy;    // J
+  };
+  // What the last single update gave for a pack of 8: the pulls, as Out's.
+  struct SingleOut {
+    SingleLane pull[12];
   };
 
  private:
   std::vector<Pack> packs_;
   std::vector<SinglePack> single_packs_;
-  std::vector<Out> out_;      // 2 a single pack
-  std::vector<int> corners_;  // 16 a pack of 4: corner c of lane l at 16·pack + 4c + l
+  std::vector<Out> out_;               // 2 a single pack
+  std::vector<SingleOut> single_out_;  // 1 a single pack
+  std::vector<int> corners_;           // 16 a pack of 4: corner c of lane l at 16·pack + 4c + l
   long tets_;
   bool single_current_ = false;  // whether single_packs_ hold the last rotations
 };

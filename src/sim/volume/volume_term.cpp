@@ -86,10 +86,13 @@ VolumeTerm::VolumeTerm(const Eigen::MatrixXd& V, const Eigen::MatrixXi& T, doubl
   for (Eigen::Index i = 0; i < n; ++i)
     incident_start_[i + 1] += incident_start_[i];
   incident_.resize(4 * tets);
+  incident_single_.resize(4 * tets);
   std::vector<int> next(incident_start_.begin(), incident_start_.end() - 1);
   for (Eigen::Index t = 0; t < tets; ++t) {
-    for (int c = 0; c < 4; ++c)
+    for (int c = 0; c < 4; ++c) {
+      incident_single_[next[T(t, c)]] = static_cast<int>(TetRotations::single_at(t, c));
       incident_[next[T(t, c)]++] = static_cast<int>(TetRotations::at(t, c));
+    }
   }
 }
 
@@ -131,20 +134,39 @@ void VolumeTerm::local_step(const Eigen::MatrixXd& p, int most, double tolerance
   pool_->run(pieces, piece, &tet_payoff_);
 }
 
+namespace {
+
+// out (#V by 3) += for each vertex in [begin, end) the sum of its pulls, in the order of its
+// slots: pulls[incident[s] + stride·i] for coordinate i.
+template <typename Pull>
+void sum_pulls(const Pull* pulls, long stride, const int* incident_start, const int* incident,
+               Eigen::Index begin, Eigen::Index end, Eigen::MatrixXd& out) {
+  for (Eigen::Index i = begin; i < end; ++i) {
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (int s = incident_start[i]; s < incident_start[i + 1]; ++s) {
+      const Pull* pull = pulls + incident[s];
+      x += static_cast<double>(pull[0]);
+      y += static_cast<double>(pull[stride]);
+      z += static_cast<double>(pull[2 * stride]);
+    }
+    out(i, 0) += x;
+    out(i, 1) += y;
+    out(i, 2) += z;
+  }
+}
+
+}  // namespace
+
 void VolumeTerm::gather(Eigen::MatrixXd& out) const {
-  const double* pulls = rotations_.out();
+  // After a single-precision update the pulls are floats, half the bytes to read; each is
+  // exactly the double it would have been rounded to before.
+  const bool single = rotations_.single_current();
   const auto vertices = [&](Eigen::Index begin, Eigen::Index end) {
-    for (Eigen::Index i = begin; i < end; ++i) {
-      double x = 0.0, y = 0.0, z = 0.0;
-      for (int s = incident_start_[i]; s < incident_start_[i + 1]; ++s) {
-        const double* pull = pulls + incident_[s];
-        x += pull[0];
-        y += pull[4];
-        z += pull[8];
-      }
-      out(i, 0) += x;
-      out(i, 1) += y;
-      out(i, 2) += z;
+    if (single) {
+      sum_pulls(rotations_.single_out(), 8, incident_start_.data(), incident_single_.data(), begin,
+                end, out);
+    } else {
+      sum_pulls(rotations_.out(), 4, incident_start_.data(), incident_.data(), begin, end, out);
     }
   };
   const Eigen::Index n = out.rows();

@@ -60,9 +60,10 @@ class VolumeTerm : public StepTerm {
   Eigen::MatrixXi T_;
   std::vector<Eigen::Matrix<double, 4, 3>> G_;  // #T: F = Pᵀ G
   Eigen::VectorXd weight_;                      // #T: w vₜ (N·m)
-  // vertex → where its (tetrahedron, corner) pulls are in rotations_.out(), in the order of
-  // (t, c), so each vertex sums its pulls in one fixed order whatever the threads.
-  std::vector<int> incident_start_, incident_;
+  // vertex → where its (tetrahedron, corner) pulls are in rotations_.out() (incident_) and in
+  // rotations_.single_out() (incident_single_), in the order of (t, c), so each vertex sums its
+  // pulls in one fixed order whatever the threads.
+  std::vector<int> incident_start_, incident_, incident_single_;
   mutable TetRotations rotations_;  // the last Rₜ (warm start), the pulls, the energies
   WorkerPool* pool_;
   mutable SharingPayoff tet_payoff_, vertex_payoff_;
