@@ -293,8 +293,6 @@ const SettingControl* SideSliders::control(const std::string& name) const {
 
 bool draw_simulation_section(SimulationSettings& settings, bool course_scene) {
   draw_setting_controls(settings.controls, "", course_scene);
-  ImGui::DragFloat("gravity (m/s^2)", &settings.gravity, 0.05f, 0.0f,
-                   SimulationSettings::max_gravity, "%.2f", ImGuiSliderFlags_AlwaysClamp);
   const bool restore_defaults = ImGui::Button("Restore defaults");
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("The scene as it opened: its settings, pins, colliders and start");

@@ -76,18 +76,19 @@ struct SettingControl {
   // y (`heading`, "LABEL heading", degrees: 0 +x, 90 +z).
   enum class Kind { number, integer, toggle, choice, heading };
   Kind kind = Kind::number;
-  std::string name;                  // the setting's: "k", "tether-stiffness"
-  std::string label;                 // "k", "tether k"
-  std::string unit;                  // "N/m", or "" for a plain factor
-  std::string help;                  // a choice's or a switch's tooltip
-  float low = 0.0f, high = 1.0f;     // a number's or an integer's range in the panel
-  bool log_scale = false;            // a number moves by a factor a pixel (low > 0)
-  std::string format = "%.4g";       // a number's
-  float value = 0.0f;                // a number's, a heading's speed
-  float heading = 0.0f;              // a heading's, degrees
-  int whole = 0;                     // an integer's; a choice's index into `choices`
-  bool on = false;                   // a switch's
-  std::vector<std::string> choices;  // a choice's labels
+  std::string name;                       // the setting's: "k", "tether-stiffness"
+  std::string label;                      // "k", "tether k"
+  std::string unit;                       // "N/m", or "" for a plain factor
+  std::string help;                       // a choice's or a switch's tooltip
+  float low = 0.0f, high = 1.0f;          // a number's or an integer's range in the panel
+  bool log_scale = false;                 // a number moves by a factor a pixel (low > 0)
+  std::string format = "%.4g";            // a number's
+  float value = 0.0f;                     // a number's, a heading's speed, a strength
+  double direction[3] = {0.0, 0.0, 0.0};  // a strength's: the unit vector it scales
+  float heading = 0.0f;                   // a heading's, degrees
+  int whole = 0;                          // an integer's; a choice's index into `choices`
+  bool on = false;                        // a switch's
+  std::vector<std::string> choices;       // a choice's labels
   // A switch that applies only with some choices of another control of the side (Chebyshev with
   // the local-global solver): that control's name, and for each of its choices whether it
   // applies; greyed out, with `why_not` as its tooltip, when it does not.
@@ -110,14 +111,10 @@ struct SideSliders {
 };
 
 // "simulation": a control for each setting of the side (k, dt, iterations, the solver,
-// Chebyshev, the added settings), gravity and Restore defaults (returns whether it was
-// pressed). A course scene (`course_scene`) keeps the course's plain local-global iterations:
-// the controls `course_locked` are greyed out.
-struct SimulationSettings : SideSliders {
-  float gravity = 9.81f;  // m/s², its strength along the scene's own direction
-
-  static constexpr float max_gravity = 30.0f;
-};
+// Chebyshev, the added settings) and Restore defaults (returns whether it was pressed). A course
+// scene (`course_scene`) keeps the course's plain local-global iterations: the controls
+// `course_locked` are greyed out.
+struct SimulationSettings : SideSliders {};
 bool draw_simulation_section(SimulationSettings& settings, bool course_scene);
 
 // "environment": a control for each setting the two sides share (damping, friction, the wind's

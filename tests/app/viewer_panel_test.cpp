@@ -89,6 +89,32 @@ TEST(ViewerPanel, ACourseSceneKeepsSelfCollisionAndDampingOff) {
   EXPECT_EQ(f.viewer.session().simulation().params().damping, 0.0);
 }
 
+// Gravity's control is its strength, declared with the other settings: dragged in the panel, it
+// changes the strength and keeps the scene's own direction, sideways part included; dragged to
+// zero and back, the direction is still the scene's; and the split view's right side follows.
+TEST(ViewerPanel, TheGravityDragKeepsTheScenesDirection) {
+  wobble::Scene scene = wobble::make_builtin_scene("cloth");
+  scene.params.gravity = Eigen::Vector3d(3.0, -4.0, 0.0);  // 5 m/s², tilted
+  wobble::ViewerSettings settings;
+  settings.compare = wobble::parse_compare_settings("iterations=5");
+  PanelFixture f(scene, settings);
+  const auto gravity = [&] { return f.viewer.session().simulation().params().gravity; };
+  std::optional<ImVec2> control = f.scroll_to("gravity (m/s^2)");
+  ASSERT_TRUE(control);
+  f.drag(*control, 40.0f);
+  const Eigen::Vector3d dragged = gravity();
+  EXPECT_GT(dragged.norm(), 5.5) << "dragged right: stronger";
+  EXPECT_NEAR(dragged.normalized().dot(Eigen::Vector3d(0.6, -0.8, 0.0)), 1.0, 1e-12);
+  f.viewer.advance();
+  EXPECT_EQ(f.viewer.session().right_side()->params().gravity, dragged);
+  // To zero (the drag stops there), then back up.
+  f.drag(*f.scroll_to("gravity (m/s^2)"), -400.0f);
+  EXPECT_EQ(gravity().norm(), 0.0);
+  f.drag(*f.scroll_to("gravity (m/s^2)"), 40.0f);
+  ASSERT_GT(gravity().norm(), 0.0);
+  EXPECT_NEAR(gravity().normalized().dot(Eigen::Vector3d(0.6, -0.8, 0.0)), 1.0, 1e-12);
+}
+
 // The same clicks and drags on the cloth turn self-collision on and damp it.
 TEST(ViewerPanel, TheClothTakesSelfCollisionAndDamping) {
   PanelFixture f(wobble::make_builtin_scene("cloth"));

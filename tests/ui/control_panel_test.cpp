@@ -331,7 +331,8 @@ TEST(ControlPanel, AClickLeavesANumberAndADragMovesIt) {
   const Case cases[] = {
       {"iterations",
        [](const PanelSettings& s) { return static_cast<float>(s.control("iterations")->whole); }},
-      {"gravity (m/s^2)", [](const PanelSettings& s) { return s.gravity; }},
+      {"gravity (m/s^2)",
+       [](const PanelSettings& s) { return s.environment.control("gravity")->value; }},
       {"friction", [](const PanelSettings& s) { return s.environment.control("friction")->value; }},
       {"wind (m/s)",
        [](const PanelSettings& s) { return s.environment.control("wind-velocity")->value; }},

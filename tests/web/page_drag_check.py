@@ -179,7 +179,7 @@ def main():
             if held < 20:
                 failures.append(f'{what}: the corner was not held at the pointer ({held} px)')
             if not finger:
-                box = (27, 391)  # the "wind (W)" box, in the panel as it opens at 1280x720
+                box = (27, 368)  # the "wind (W)" box, in the panel as it opens at 1280x720
                 unticked = pixel(before, *box)
                 page.browser.call('Input.dispatchKeyEvent',
                                   {'type': 'keyDown', 'key': 'w', 'code': 'KeyW',

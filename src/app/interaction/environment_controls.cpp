@@ -26,11 +26,4 @@ Eigen::Vector3d with_speed_and_heading(const Eigen::Vector3d& v, double speed,
                                  std::cos(elevation) * std::sin(heading));
 }
 
-Eigen::Vector3d gravity_with_magnitude(const Eigen::Vector3d& scene_gravity, double magnitude) {
-  const double norm = scene_gravity.norm();
-  const Eigen::Vector3d direction =
-      norm > 0.0 ? Eigen::Vector3d(scene_gravity / norm) : Eigen::Vector3d(0.0, -1.0, 0.0);
-  return magnitude * direction;
-}
-
 }  // namespace wobble

@@ -13,11 +13,6 @@ double heading_degrees(const Eigen::Vector3d& v);
 Eigen::Vector3d with_speed_and_heading(const Eigen::Vector3d& v, double speed,
                                        double heading_degrees);
 
-// Gravity of the given magnitude (m/s², or N for the course's model) along the scene's own
-// direction: the gravity slider changes only the strength. A scene without gravity gets it
-// straight down.
-Eigen::Vector3d gravity_with_magnitude(const Eigen::Vector3d& scene_gravity, double magnitude);
-
 }  // namespace wobble
 
 #endif

@@ -62,6 +62,13 @@ void show_settings(const SimulationParams& params, SideSliders& sliders, bool so
       control.value = static_cast<float>(v.norm());
       control.heading = static_cast<float>(heading_degrees(v));
     }
+    if (spec.panel_view == PanelView::strength) {
+      const Eigen::Vector3d& v = std::get<Eigen::Vector3d>(value);
+      control.value = static_cast<float>(v.norm());
+      const Eigen::Vector3d along = v.norm() > 0.0 ? v : spec.number_along;
+      for (int i = 0; i < 3; ++i)
+        control.direction[i] = along.norm() > 0.0 ? along(i) / along.norm() : 0.0;
+    }
     if (spec.type == SettingType::integer) control.whole = static_cast<int>(setting_number(value));
     if (spec.type == SettingType::toggle) control.on = std::get<bool>(value);
     if (spec.type == SettingType::choice) {
@@ -133,8 +140,16 @@ SimulationParams settings_from_sliders(const SimulationParams& params, SideSlide
         break;
       }
       case SettingType::vector: {
-        if (control.kind != SettingControl::Kind::heading) break;
         const Eigen::Vector3d& v = std::get<Eigen::Vector3d>(value);
+        if (spec->panel_view == PanelView::strength) {
+          if (static_cast<float>(v.norm()) != control.value) {
+            const Eigen::Vector3d direction(control.direction[0], control.direction[1],
+                                            control.direction[2]);
+            set(static_cast<double>(control.value) * direction);
+          }
+          break;
+        }
+        if (control.kind != SettingControl::Kind::heading) break;
         if (static_cast<float>(v.norm()) != control.value ||
             static_cast<float>(heading_degrees(v)) != control.heading) {
           set(with_speed_and_heading(v, control.value, control.heading));

@@ -129,7 +129,6 @@ void Viewer::load(Scene scene) {
   }
   panel_.scene = session_.scene_index();
   show_settings(scene_.params, panel_, scene_.network.T.rows() > 0);
-  panel_.gravity = static_cast<float>(scene_.params.gravity.norm());
   show_environment_in_panel();
   panel_state_.show_shape(scene_.network.F.rows() > 0);
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/interaction/environment_controls.h"
 #include "app/viewer/side_settings.h"
 #include "app/viewer/viewer.h"
 
@@ -105,10 +104,6 @@ void Viewer::apply_panel_settings() {
   const SimulationParams& params = simulation.params();
   SimulationParams wanted =
       settings_from_sliders(params, panel_, simulation.max_iterations_for_mesh());
-  // The slider is gravity's strength: the scene's direction stays, sideways part included.
-  if (static_cast<float>(params.gravity.norm()) != panel_.gravity) {
-    wanted.gravity = gravity_with_magnitude(scene_.params.gravity, panel_.gravity);
-  }
   // The environment's controls, then shown again where the change did more than the control
   // (the wind turned on over a calm scene blows the breeze, whose speed the panel then shows).
   wanted = settings_from_sliders(wanted, panel_.environment, simulation.max_iterations_for_mesh());

@@ -182,6 +182,10 @@ SettingSpec as_speed_and_heading(SettingSpec spec) {
   spec.panel_view = PanelView::speed_and_heading;
   return spec;
 }
+SettingSpec as_strength(SettingSpec spec) {
+  spec.panel_view = PanelView::strength;
+  return spec;
+}
 bool has_colliders(const SimulationParams& params) {
   return !params.contact.colliders.empty();
 }
@@ -286,11 +290,12 @@ std::vector<SettingSpec> declare_built_in_settings() {
           limits::air_density, d.wind.air_density, Cost::terms, applied_only, shared, allowed),
           SettingType::number, [](auto& p) -> auto& { return p.wind.air_density; }),
           "simulation.wind.air_density"),
-      pointing(in_files_at(vector_field(setting("gravity", "gravity",
-          "Gravity in m/s² (a force in N, see gravity-model)",
-          limits::acceleration, 0.0, Cost::gravity, applied_only, shared, allowed),
+      // The panel drags its strength; the scene's direction stays, sideways part included.
+      shown_as(as_strength(in_the_panel(pointing(in_files_at(vector_field(setting("gravity",
+          "gravity", "Gravity in m/s² (a force in N, see gravity-model)",
+          limits::acceleration, 0.0, Cost::gravity, in_panel, shared, allowed),
           [](auto& p) -> auto& { return p.gravity; }), "simulation.gravity"),
-          Eigen::Vector3d(0.0, -1.0, 0.0)),
+          Eigen::Vector3d(0.0, -1.0, 0.0)), {0.0, 30.0, ""}, "%.2f")), "gravity", "m/s^2"),
       enum_field(setting("gravity-model", "gravity model",
           "acceleration (f = m g) or force_per_vertex (f = g, the course's)",
           no_range, 0.0, Cost::gravity, in_scene, shared, allowed),

@@ -73,9 +73,11 @@ enum SettingPlace : unsigned {
   everywhere = on_command_line | in_address | in_panel | in_stats | in_scene,
 };
 
-// How the panel shows a setting: its value in a control of its type, or a vector as a speed and
-// a heading around y (the wind's velocity: "wind (m/s)" and "wind heading").
-enum class PanelView { value, speed_and_heading };
+// How the panel shows a setting: its value in a control of its type, a vector as a speed and a
+// heading around y (the wind's velocity: "wind (m/s)" and "wind heading"), or a vector as its
+// strength along its own direction, which stays (gravity: "gravity (m/s^2)"; a zero vector
+// points along number_along).
+enum class PanelView { value, speed_and_heading, strength };
 
 // One setting, declared once.
 struct SettingSpec {

@@ -55,12 +55,4 @@ TEST(EnvironmentControls, SpeedAndHeadingRoundTripAndKeepElevation) {
                   .isApprox(Eigen::Vector3d(2.0, 0.0, 0.0)));
 }
 
-TEST(EnvironmentControls, GravityKeepsTheScenesDirection) {
-  const Eigen::Vector3d sideways(3.0, -4.0, 0.0);  // |g| = 5
-  EXPECT_TRUE(wobble::gravity_with_magnitude(sideways, 10.0).isApprox(Eigen::Vector3d(6, -8, 0)));
-  EXPECT_TRUE(wobble::gravity_with_magnitude(sideways, 5.0).isApprox(sideways));
-  EXPECT_TRUE(wobble::gravity_with_magnitude(Eigen::Vector3d::Zero(), 2.0)
-                  .isApprox(Eigen::Vector3d(0, -2, 0)));
-}
-
 }  // namespace
