@@ -93,8 +93,8 @@ WOBBLE_TET_INLINE L reciprocal_root_power_of_two(L v) {
 
 // Turns q (and R, its matrix) toward the rotation nearest F, `most` times or until every lane's
 // last Newton update turned by θ with θ² at most `tolerance` (rad): Newton's updates converge
-// quadratically, so the next would turn by about Kθ², less than `tolerance` (K measured at most
-// 4e-3 over random deformations, det F down to 0.002); a lane that stopped keeps its q.
+// quadratically, so the next would turn by about Kθ² with K well below 1 (docs/performance.md),
+// less than `tolerance`; a lane that stopped keeps its q.
 // Turning R by θ (R ← exp([θ])R) changes tr(RᵀF) by θ·τ − ½θᵀHθ to second order, with M = FRᵀ,
 // the torque τ = Σ rᵢ × fᵢ (columns of R and F) = (M₂₁ − M₁₂, M₀₂ − M₂₀, M₁₀ − M₀₁) and
 // H = tr(M)·I − sym(M): Newton's update is θ = H⁻¹τ, quadratic near the maximum, where H is
