@@ -49,6 +49,19 @@ PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, 
   place.shown = ImGui::Begin("Wobble", nullptr,
                              ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoScrollWithMouse);
+  // A panel left at its margin keeps it in screen points when the scale changes (the page's
+  // pixel ratio, the browser's zoom, the UI scale): the margin is 10 points, so it moves with
+  // the scale. One the user has dragged elsewhere stays where it was put. (ImGui keeps a
+  // window's position in whole pixels, rounded down.)
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  const ImGuiID scale_key = ImGui::GetID("scale of the margin");
+  const float last_scale = storage->GetFloat(scale_key, ui_scale);
+  const float last_margin = std::floor(10.0f * last_scale);
+  if (last_scale != ui_scale && ImGui::GetWindowPos().x == last_margin &&
+      ImGui::GetWindowPos().y == last_margin) {
+    ImGui::SetWindowPos(ImVec2(10.0f * ui_scale, 10.0f * ui_scale));
+  }
+  storage->SetFloat(scale_key, ui_scale);
   const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   place.x = position.x;
   place.y = position.y;
@@ -72,7 +85,6 @@ PanelPlace draw_control_panel(const PanelParts& parts, const PanelStats& stats, 
       static_cast<float>(panel_stats_lines(stats)) * ImGui::GetTextLineHeightWithSpacing();
   const float list_room = tallest - ImGui::GetCursorPosY() - style.WindowPadding.y -
                           2.0f * style.ItemSpacing.y - stats_height - 1.0f;
-  ImGuiStorage* storage = ImGui::GetStateStorage();
   const ImGuiID list_height_id = ImGui::GetID("##sections height");
   const float contents_height = storage->GetFloat(list_height_id, list_room);
   float list_height = std::min(contents_height, list_room);

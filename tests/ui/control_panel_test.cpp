@@ -135,6 +135,43 @@ TEST(ControlPanel, OnATallDisplayThePanelFitsItsContents) {
   EXPECT_GE(list->Size.y + 1.0f, list->ContentSize.y);
 }
 
+// The panel's margin is 10 points: at its margin when the scale changes (the page's pixel ratio
+// or the browser's zoom changing live, the UI scale), it keeps 10 points from the corner; moved
+// by the user, it stays where it was put.
+TEST(ControlPanel, ThePanelAtItsMarginKeepsItWhenTheScaleChanges) {
+  PanelDriver panel(2560.0f, 1440.0f, 1.0f);
+  panel.settle();
+  ImGuiWindow* window = PanelDriver::panel();
+  ASSERT_EQ(window->Pos.x, 10.0f);
+  ASSERT_EQ(window->Pos.y, 10.0f);
+  panel.set_scale(2.0f);
+  panel.settle();
+  EXPECT_EQ(window->Pos.x, 20.0f);
+  EXPECT_EQ(window->Pos.y, 20.0f);
+  // ImGui keeps a window's position in whole pixels.
+  panel.set_scale(1.25f);
+  panel.settle();
+  EXPECT_EQ(window->Pos.x, 12.0f);
+  EXPECT_EQ(window->Pos.y, 12.0f);
+  panel.set_scale(2.0f);
+  panel.settle();
+  EXPECT_EQ(window->Pos.x, 20.0f);
+  EXPECT_EQ(window->Pos.y, 20.0f);
+  // Dragged by its title bar, then the scale changes: it stays.
+  const ImVec2 title(window->Pos.x + 100.0f, window->Pos.y + 5.0f);
+  panel.frame(title);
+  panel.frame(title, true);
+  panel.frame(ImVec2(title.x + 200.0f, title.y + 50.0f), true);
+  panel.frame(ImVec2(title.x + 200.0f, title.y + 50.0f), false);
+  panel.settle();
+  const ImVec2 put = window->Pos;
+  ASSERT_NE(put.x, 20.0f);
+  panel.set_scale(1.0f);
+  panel.settle();
+  EXPECT_EQ(window->Pos.x, put.x);
+  EXPECT_EQ(window->Pos.y, put.y);
+}
+
 // Scrolled to the bottom at 1280 × 720, a section closed and opened again stays under the mouse,
 // and so does every row above it.
 TEST(ControlPanel, ASectionOpenedOrClosedLeavesTheListWhereItWas) {

@@ -51,6 +51,11 @@ class PanelDriver {
     draw_control_panel(settings, stats, scenes, scale_);
     ImGui::EndFrame();
   }
+  // A new scale (a new pixel ratio or UI scale), as the viewer and the page pass it.
+  void set_scale(float scale) {
+    scale_ = scale;
+    ImGui::GetIO().FontGlobalScale = scale;
+  }
   // The panel settles its size over its first frames.
   void settle() {
     for (int i = 0; i < 4; ++i)

@@ -230,6 +230,18 @@ def steep_edges(image, box):
     return steep / strong if strong else 0.0
 
 
+def panel_left(image, y):
+    """The first column of row `y` (device pixels) whose colour differs from the row's first
+    pixel, the scene's background, by more than 60 over the three channels: the panel's left
+    edge on a row through its title bar."""
+    width, _, pixels = image
+    row = pixels[y]
+    for x in range(1, width):
+        if sum(abs(row[4 * x + c] - row[c]) for c in range(3)) > 60:
+            return x
+    return None
+
+
 def sharp(site_url, failures):
     browser = Chromium(shutil.which('chromium') or 'chromium')
     try:
@@ -261,6 +273,14 @@ def sharp(site_url, failures):
             if steep < 0.97:
                 failures.append(f'ratio {ratio}: {steep:.1%} of the panel\'s edges in one '
                                 f'pixel (at least 97%): blurred')
+            # The panel keeps its margin of 10 points from the corner as the ratio changes
+            # (ImGui keeps its position in whole pixels): it stayed at 10 device pixels.
+            margin = math.floor(10 * ratio)
+            left = panel_left(page.screenshot(), margin + round(6 * ratio))
+            print(f'page_files_in_check: ratio {ratio}: the panel\'s left edge at {left} px')
+            if left is None or abs(left - margin) > 1:
+                failures.append(f'ratio {ratio}: the panel\'s left edge at {left} px, expected '
+                                f'{margin} (10 points)')
             if ratio == 1.5:
                 pointer_at_ratio(browser, page, ratio, failures)
     finally:
