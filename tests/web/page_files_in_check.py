@@ -274,7 +274,7 @@ def sharp(site_url, failures):
                 failures.append(f'ratio {ratio}: {steep:.1%} of the panel\'s edges in one '
                                 f'pixel (at least 97%): blurred')
             # The panel keeps its margin of 10 points from the corner as the ratio changes
-            # (ImGui keeps its position in whole pixels): it stayed at 10 device pixels.
+            # (ImGui keeps its position in whole pixels); before, it stayed at 10 device pixels.
             margin = math.floor(10 * ratio)
             left = panel_left(page.screenshot(), margin + round(6 * ratio))
             print(f'page_files_in_check: ratio {ratio}: the panel\'s left edge at {left} px')
