@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "panel_driver.h"
 #include "ui/log_drag.h"
@@ -144,19 +145,16 @@ TEST(ControlPanel, ThePanelAtItsMarginKeepsItWhenTheScaleChanges) {
   ImGuiWindow* window = PanelDriver::panel();
   ASSERT_EQ(window->Pos.x, 10.0f);
   ASSERT_EQ(window->Pos.y, 10.0f);
-  panel.set_scale(2.0f);
-  panel.settle();
-  EXPECT_EQ(window->Pos.x, 20.0f);
-  EXPECT_EQ(window->Pos.y, 20.0f);
+  // The panel's corner once drawn at `scale`.
+  const auto corner_at = [&](float scale) {
+    panel.set_scale(scale);
+    panel.settle();
+    return std::make_pair(window->Pos.x, window->Pos.y);
+  };
+  EXPECT_EQ(corner_at(2.0f), std::make_pair(20.0f, 20.0f));
   // ImGui keeps a window's position in whole pixels.
-  panel.set_scale(1.25f);
-  panel.settle();
-  EXPECT_EQ(window->Pos.x, 12.0f);
-  EXPECT_EQ(window->Pos.y, 12.0f);
-  panel.set_scale(2.0f);
-  panel.settle();
-  EXPECT_EQ(window->Pos.x, 20.0f);
-  EXPECT_EQ(window->Pos.y, 20.0f);
+  EXPECT_EQ(corner_at(1.25f), std::make_pair(12.0f, 12.0f));
+  EXPECT_EQ(corner_at(2.0f), std::make_pair(20.0f, 20.0f));
   // Dragged by its title bar, then the scale changes: it stays.
   const ImVec2 title(window->Pos.x + 100.0f, window->Pos.y + 5.0f);
   panel.frame(title);
@@ -166,10 +164,7 @@ TEST(ControlPanel, ThePanelAtItsMarginKeepsItWhenTheScaleChanges) {
   panel.settle();
   const ImVec2 put = window->Pos;
   ASSERT_NE(put.x, 20.0f);
-  panel.set_scale(1.0f);
-  panel.settle();
-  EXPECT_EQ(window->Pos.x, put.x);
-  EXPECT_EQ(window->Pos.y, put.y);
+  EXPECT_EQ(corner_at(1.0f), std::make_pair(put.x, put.y));
 }
 
 // Scrolled to the bottom at 1280 × 720, a section closed and opened again stays under the mouse,

@@ -191,6 +191,18 @@ void ImGuiSession::new_glfw_frame() {
   ImGui_ImplGlfw_NewFrame();
 }
 
+void GlfwFrameHost::begin_frame() {
+  ImGuiSession::new_glfw_frame();
+}
+
+void GlfwFrameHost::bind_target() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void GlfwFrameHost::read_picture(RgbaImage& image) {
+  read_shown_frame(width_, height_, image);
+}
+
 ImGuiSession::~ImGuiSession() {
   renderer_.reset();
   if (platform_) ImGui_ImplGlfw_Shutdown();

@@ -63,6 +63,19 @@ class FrameHost {
   virtual void present(const std::string& title) = 0;
 };
 
+// A host that draws into the default framebuffer of a GLFW window (the window, the page): GLFW's
+// part of ImGui's new frame, and the picture read back before it is shown, width_ by height_
+// pixels of the drawing buffer as the host's sizes() last found them.
+class GlfwFrameHost : public FrameHost {
+ public:
+  void begin_frame() override;
+  void bind_target() override;
+  void read_picture(RgbaImage& image) override;
+
+ protected:
+  int width_ = 0, height_ = 0;
+};
+
 // What a run keeps of its pictures (--record, --screenshot, the headless images), handed to the
 // loop by the run. The viewer's own files (F12, the panel's PNG and record toggle) the loop
 // writes itself.

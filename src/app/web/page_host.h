@@ -34,7 +34,7 @@ void follow_page_size(GlfwWindow& window, float ratio);
 
 // The page as draw_frame's host: emscripten's GLFW for input, the browser's clock, and the canvas
 // the browser shows once the frame returns (after the page's figures for its tests are set).
-class PageHost : public FrameHost {
+class PageHost : public GlfwFrameHost {
  public:
   PageHost(GlfwWindow& window, ImGuiSession& ui) : window_(window), ui_(ui) {}
   PolledInput poll(const Viewer& /*viewer*/, const FrameMeters& /*meters*/) override {
@@ -116,11 +116,8 @@ class PageHost : public FrameHost {
     sizes.mark_scale = ui_.scale();
     return sizes;
   }
-  void begin_frame() override { ImGuiSession::new_glfw_frame(); }
-  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
-  // The PNG button (and F12) read the canvas before the browser shows it, as the window reads
-  // its back buffer; the file is then offered as a download (offer_download).
-  void read_picture(RgbaImage& image) override { read_shown_frame(width_, height_, image); }
+  // The PNG button (and F12) read the canvas before the browser shows it (GlfwFrameHost), as
+  // the window reads its back buffer; the file is then offered as a download (offer_download).
   void present(const std::string& title) override {
     if (title != title_) window_.set_title(title_ = title);
   }
@@ -186,7 +183,6 @@ class PageHost : public FrameHost {
   double pinch_notches_ = 0.0;
   float panel_swipe_ = 0.0f;  // window units
   std::string title_;
-  int width_ = 0, height_ = 0;
   long frames_drawn_ = 0;
   std::vector<double> wheel_;  // notches since the last poll
 };

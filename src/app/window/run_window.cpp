@@ -23,7 +23,7 @@ namespace wobble {
 namespace {
 
 // The window as draw_frame's host: GLFW's input, sizes and swaps, and a clock from the start.
-class WindowHost : public FrameHost {
+class WindowHost : public GlfwFrameHost {
  public:
   WindowHost(GlfwWindow& window, std::string title)
       : window_(window), start_(std::chrono::steady_clock::now()), title_(std::move(title)) {}
@@ -61,9 +61,6 @@ class WindowHost : public FrameHost {
         Eigen::Vector2f(static_cast<float>(window_width), static_cast<float>(window_height));
     return sizes;
   }
-  void begin_frame() override { ImGuiSession::new_glfw_frame(); }
-  void bind_target() override { glBindFramebuffer(GL_FRAMEBUFFER, 0); }
-  void read_picture(RgbaImage& image) override { read_shown_frame(width_, height_, image); }
   void present(const std::string& title) override {
     // The title names the scene on show, also after the picker changed it.
     if (title != title_) window_.set_title(title_ = title);
@@ -78,7 +75,7 @@ class WindowHost : public FrameHost {
   GlfwWindow& window_;
   const std::chrono::steady_clock::time_point start_;
   std::string title_;
-  int quiet_frames_ = 0, width_ = 0, height_ = 0;
+  int quiet_frames_ = 0;
 };
 
 // --record and --screenshot from the window: each step's state once, numbered by the step;
